@@ -1,0 +1,63 @@
+#pragma once
+// What glTF has no place for; saved in the project file <basename>.glint.json.
+#include "ids.h"
+
+#include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <string>
+
+namespace glint {
+
+enum class LightUnits { Blender, Raw };
+enum class Tonemapper { None, AcesFitted, PbrNeutral };
+
+struct Environment {
+    std::string file;       // relative to the project folder; empty = uniform colour
+    glm::vec3 color{0.0f};  // radiance when no file is set (black by default: CONTRACTS.md)
+    float intensity = 1.0f; // plain multiplier
+    float rotationDegrees = 0.0f; // about +Y
+    friend bool operator==(const Environment&, const Environment&) = default;
+};
+
+struct RenderSettings {
+    std::string configuration = "accumulate"; // baseline, realistic, full, heavy, accumulate, reference
+    int width = 640;
+    int height = 360;
+    int spp = 64;
+    int bounces = 4;
+    std::uint32_t seed = 0;
+    float exposure = 0.0f;  // EV added to the camera's
+    Tonemapper tonemapper = Tonemapper::AcesFitted;
+    float clamp = 0.0f;     // radiance clamp for fireflies; 0 = off (unbiased)
+    friend bool operator==(const RenderSettings&, const RenderSettings&) = default;
+};
+
+struct Timeline {
+    double start = 0.0; // seconds
+    double end = 0.0;   // 0 = the animation's own span
+    int fpsNumerator = 24;
+    int fpsDenominator = 1;
+    friend bool operator==(const Timeline&, const Timeline&) = default;
+};
+
+struct OutputSettings {
+    std::string path;   // e.g. "frames/shot_####.exr"
+    std::string aovs = "all";
+    std::string codec = "h264";
+    friend bool operator==(const OutputSettings&, const OutputSettings&) = default;
+};
+
+struct ProjectSettings {
+    RenderSettings render;
+    Environment environment;
+    NodeId activeCamera{};
+    Timeline timeline;
+    OutputSettings output;
+    LightUnits lightUnits = LightUnits::Blender;
+    nlohmann::json unknown; // keys of the project file Glint does not understand, kept on save
+    friend bool operator==(const ProjectSettings&, const ProjectSettings&) = default;
+};
+
+} // namespace glint
