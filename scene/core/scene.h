@@ -5,6 +5,7 @@
 // Not thread-safe: hand worker threads a copy.
 #include "animation.h"
 #include "asset_table.h"
+#include "diagnostics.h"
 #include "image.h"
 #include "material.h"
 #include "mesh.h"
@@ -68,6 +69,9 @@ public:
     std::string name;         // glTF scene name
     ProjectSettings settings; // the project file
     nlohmann::json unknown;   // glTF asset info, top-level extensions/extras Glint does not interpret
+    // What the loaded file held that Glint cannot keep (skins, morph targets, ...): the next save
+    // names each of these in its report. Bookkeeping, not content: not compared by operator==.
+    Warnings unsupported;
 
     friend bool operator==(const Scene& a, const Scene& b);
 
