@@ -1,0 +1,18 @@
+#pragma once
+// An equirectangular environment image read through OpenImageIO as linear float RGB, row 0 at the
+// top of the image (CONTRACTS.md "Environment").
+#include <filesystem>
+#include <vector>
+
+namespace glint::renderer {
+
+struct EnvironmentImage {
+    int width = 0;
+    int height = 0;
+    std::vector<float> rgb; // width * height * 3
+};
+
+// Throws glint::FileError naming the file when it cannot be read.
+EnvironmentImage loadEnvironmentImage(const std::filesystem::path& file);
+
+} // namespace glint::renderer

@@ -1,0 +1,39 @@
+#pragma once
+// A scene snapshot compiled into GPU data: texture buffers of shapes, materials and lights, and
+// the environment. Built on the GL thread; binds itself to a path-trace program.
+#include "renderer/gl/shader_program.h"
+#include "renderer/gl/texture_buffer.h"
+#include "renderer/gpu_scene/packed_scene.h"
+
+#include <filesystem>
+#include <optional>
+
+namespace glint::renderer {
+
+// What the scene uses; selects shader variants so a scene pays only for its features.
+struct SceneFeatures {
+    bool meshes = false;
+    bool environmentMap = false;
+    gl::Defines defines() const;
+};
+
+class GpuScene {
+public:
+    // `environmentFile`: an equirectangular image, or empty for the project's uniform colour.
+    GpuScene(const Scene& scene, const std::filesystem::path& environmentFile);
+
+    const SceneFeatures& features() const { return features_; }
+    // Binds the buffers to texture units 0..3 and sets the scene uniforms of `program`.
+    void bind(const gl::ShaderProgram& program) const;
+
+private:
+    SceneFeatures features_;
+    PackedScene packed_;
+    Environment environment_;
+    gl::TextureBuffer shapes_;
+    gl::TextureBuffer materials_;
+    gl::TextureBuffer lights_;
+    gl::Texture environmentMap_;
+};
+
+} // namespace glint::renderer

@@ -1,0 +1,82 @@
+#include "renderer/gpu_scene/packed_scene.h"
+
+#include "renderer/gpu_scene/light_units.h"
+
+#include <cmath>
+
+namespace glint::renderer {
+namespace {
+
+constexpr float thinWalledFlag = 1.0f;
+
+// A node is drawn only if it and every ancestor are visible.
+bool visibleInWorld(const Scene& scene, const Node& node) {
+    for (const Node* n = &node; n; n = n->parent ? scene.node(n->parent) : nullptr)
+        if (!n->visible) return false;
+    return true;
+}
+
+// Beer-Lambert coefficient: colour c is what remains after attenuationDistance.
+glm::vec3 attenuationCoefficient(const Material& m) {
+    if (!std::isfinite(m.attenuationDistance) || m.attenuationDistance <= 0.0f) return glm::vec3(0.0f);
+    const glm::vec3 colour = glm::max(m.attenuationColor, glm::vec3(1e-6f));
+    return -glm::log(colour) / m.attenuationDistance;
+}
+
+void packShape(PackedScene& out, const Shape& shape, const glm::mat4& worldFromLocal, float objectId, int material) {
+    const glm::mat4 localFromWorld = glm::inverse(worldFromLocal);
+    const glm::mat4 rows = glm::transpose(localFromWorld);
+    out.shapes.push_back({static_cast<float>(shape.kind), static_cast<float>(material), objectId, shape.height});
+    out.shapes.push_back(rows[0]);
+    out.shapes.push_back(rows[1]);
+    out.shapes.push_back(rows[2]);
+    out.shapes.push_back({shape.radius, shape.size.x, shape.size.y, shape.size.z});
+    ++out.shapeCount;
+}
+
+void packLight(PackedScene& out, const Light& light, const glm::mat4& worldFromLight, LightUnits units) {
+    const glm::vec3 position(worldFromLight[3]);
+    const glm::vec3 shine = glm::normalize(glm::vec3(worldFromLight * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f)));
+    const float cosSunRadius = light.angularDiameter > 0.0f ? std::cos(0.5f * light.angularDiameter) : 1.0f;
+    out.lights.push_back({static_cast<float>(light.type), 0.0f, 0.0f, 0.0f});
+    out.lights.push_back(glm::vec4(radiometricIntensity(light, units), cosSunRadius));
+    out.lights.push_back(glm::vec4(position, std::cos(light.outerConeAngle)));
+    out.lights.push_back(glm::vec4(shine, std::cos(light.innerConeAngle)));
+    ++out.lightCount;
+}
+
+} // namespace
+
+std::vector<glm::vec4> packMaterial(const Material& m) {
+    const bool thinWalled = m.thicknessFactor <= 0.0f;
+    return {m.baseColorFactor,
+            glm::vec4(m.emissiveFactor * m.emissiveStrength, glm::clamp(m.roughnessFactor, 0.0f, 1.0f)),
+            {glm::clamp(m.metallicFactor, 0.0f, 1.0f), std::max(m.specularFactor, 0.0f),
+             glm::clamp(m.transmissionFactor, 0.0f, 1.0f), std::max(m.ior, 1.0f)},
+            glm::vec4(m.specularColorFactor, thinWalled ? thinWalledFlag : 0.0f),
+            glm::vec4(attenuationCoefficient(m), 0.0f)};
+}
+
+PackedScene packScene(const Scene& scene) {
+    PackedScene out;
+    out.materials = packMaterial(Material{});
+    for (const auto& [id, material] : scene.materials) {
+        out.materialIndex[id] = static_cast<int>(out.materials.size() / materialTexels);
+        const auto texels = packMaterial(material);
+        out.materials.insert(out.materials.end(), texels.begin(), texels.end());
+    }
+    for (const NodeId id : scene.depthFirst()) {
+        const Node& node = scene.at(id);
+        if (!visibleInWorld(scene, node)) continue;
+        if (const auto* shape = node.get<Shape>()) {
+            const auto it = out.materialIndex.find(shape->material);
+            packShape(out, *shape, scene.worldFromNode(id), static_cast<float>(id.value),
+                      it == out.materialIndex.end() ? 0 : it->second);
+        } else if (const auto* light = node.get<Light>()) {
+            packLight(out, *light, scene.worldFromNode(id), scene.settings.lightUnits);
+        }
+    }
+    return out;
+}
+
+} // namespace glint::renderer

@@ -1,0 +1,32 @@
+#pragma once
+// The scene flattened into the arrays the path-trace shader reads (layouts in
+// shaders/pathtrace/scene_buffers.glsl, lights.glsl, material.glsl). CPU only: no GL here, so the
+// packing is tested without a context.
+#include "scene/core/scene.h"
+
+#include <glm/glm.hpp>
+
+#include <map>
+#include <vector>
+
+namespace glint::renderer {
+
+inline constexpr int shapeTexels = 5;
+inline constexpr int materialTexels = 5;
+inline constexpr int lightTexels = 4;
+
+struct PackedScene {
+    std::vector<glm::vec4> shapes;    // shapeTexels per shape
+    std::vector<glm::vec4> materials; // materialTexels per material; index 0 is glTF's default material
+    std::vector<glm::vec4> lights;    // lightTexels per light
+    int shapeCount = 0;
+    int lightCount = 0;
+    std::map<MaterialId, int> materialIndex;
+};
+
+// Visible shapes and lights of `scene` (world transforms resolved), and every material.
+PackedScene packScene(const Scene& scene);
+
+std::vector<glm::vec4> packMaterial(const Material& material);
+
+} // namespace glint::renderer

@@ -1,0 +1,29 @@
+#include "renderer/passes/accumulate_pass.h"
+
+#include "renderer/passes/path_trace_pass.h"
+
+namespace glint::renderer {
+
+AccumulatePass::AccumulatePass(gl::ProgramCache& programs, int width, int height)
+    : programs_(programs), targets_{makeGBuffer(width, height), makeGBuffer(width, height)} {}
+
+void AccumulatePass::add(const gl::RenderTarget& sample) {
+    const gl::ShaderProgram& program = programs_.get({"fullscreen.vert.glsl", "passes/accumulate.frag.glsl", {},
+                                                      {"outRadiance", "outAlbedo", "outNormalDepth", "outObjectId"}});
+    const int previous = current_;
+    const int next = 1 - current_;
+    ++count_;
+    program.use();
+    glUniform1f(program.uniform("uSampleCount"), static_cast<float>(count_));
+    const char* previousNames[] = {"uPreviousRadiance", "uPreviousAlbedo", "uPreviousNormalDepth", "uPreviousObjectId"};
+    const char* sampleNames[] = {"uSampleRadiance", "uSampleAlbedo", "uSampleNormalDepth", "uSampleObjectId"};
+    for (int i = 0; i < 4; ++i) {
+        targets_[previous].bindTexture(i, static_cast<GLuint>(i), program.uniform(previousNames[i]));
+        sample.bindTexture(i, static_cast<GLuint>(4 + i), program.uniform(sampleNames[i]));
+    }
+    targets_[next].bindForDrawing();
+    triangle_.draw();
+    current_ = next;
+}
+
+} // namespace glint::renderer

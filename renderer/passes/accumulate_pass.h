@@ -1,0 +1,27 @@
+#pragma once
+// The exact running mean of path-traced samples in RGBA32F, ping-ponged between two G-buffers.
+// Depth and object id are kept from the first sample (a mean of ids or of hit/miss depths means
+// nothing); radiance, albedo and normal are averaged.
+#include "renderer/gl/fullscreen_triangle.h"
+#include "renderer/gl/program_cache.h"
+#include "renderer/gl/render_target.h"
+
+namespace glint::renderer {
+
+class AccumulatePass {
+public:
+    AccumulatePass(gl::ProgramCache& programs, int width, int height);
+    void add(const gl::RenderTarget& sample);
+    void reset() { count_ = 0; }
+    int sampleCount() const { return count_; }
+    const gl::RenderTarget& mean() const { return targets_[current_]; }
+
+private:
+    gl::ProgramCache& programs_;
+    gl::FullscreenTriangle triangle_;
+    gl::RenderTarget targets_[2];
+    int current_ = 0;
+    int count_ = 0;
+};
+
+} // namespace glint::renderer

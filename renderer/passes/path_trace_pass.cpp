@@ -1,0 +1,46 @@
+#include "renderer/passes/path_trace_pass.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+namespace glint::renderer {
+namespace {
+
+void setCameraUniforms(const gl::ShaderProgram& program, const CameraSetup& camera, const gl::RenderTarget& target) {
+    glUniformMatrix4fv(program.uniform("uWorldFromCamera"), 1, GL_FALSE, glm::value_ptr(camera.worldFromCamera));
+    glUniform1i(program.uniform("uOrthographic"), camera.orthographic ? 1 : 0);
+    glUniform2f(program.uniform("uHalfExtent"), camera.halfExtent.x, camera.halfExtent.y);
+    glUniform1f(program.uniform("uLensRadius"), camera.lensRadius);
+    glUniform1f(program.uniform("uFocusDistance"), camera.focusDistance);
+    glUniform2f(program.uniform("uResolution"), static_cast<float>(target.width()), static_cast<float>(target.height()));
+}
+
+void setIntegratorUniforms(const gl::ShaderProgram& program, const PathTraceSettings& settings, std::uint32_t sampleIndex) {
+    glUniform1ui(program.uniform("uSampleIndex"), sampleIndex);
+    glUniform1ui(program.uniform("uSeed"), settings.seed);
+    glUniform1i(program.uniform("uMaxBounces"), std::max(settings.bounces, 0));
+    glUniform1f(program.uniform("uClamp"), settings.clamp);
+    glUniform1i(program.uniform("uIndependentSampler"), settings.independentSampler ? 1 : 0);
+    glUniform1i(program.uniform("uDebugView"), settings.view == DebugView::AmbientOcclusion ? 1 : 0);
+    glUniform1f(program.uniform("uAoDistance"), settings.aoDistance);
+}
+
+} // namespace
+
+gl::RenderTarget makeGBuffer(int width, int height) {
+    return gl::RenderTarget(width, height, {GL_RGBA32F, GL_RGBA32F, GL_RGBA32F, GL_RGBA32F});
+}
+
+void PathTracePass::render(const GpuScene& scene, const CameraSetup& camera, const PathTraceSettings& settings,
+                           std::uint32_t sampleIndex, const gl::RenderTarget& target) {
+    const gl::ShaderProgram& program = programs_.get({"fullscreen.vert.glsl", "pathtrace/main.frag.glsl",
+                                                      scene.features().defines(),
+                                                      {"outRadiance", "outAlbedo", "outNormalDepth", "outObjectId"}});
+    program.use();
+    scene.bind(program);
+    setCameraUniforms(program, camera, target);
+    setIntegratorUniforms(program, settings, sampleIndex);
+    target.bindForDrawing();
+    triangle_.draw();
+}
+
+} // namespace glint::renderer

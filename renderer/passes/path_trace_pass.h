@@ -1,0 +1,40 @@
+#pragma once
+// One path-traced sample per pixel into a four-target G-buffer: radiance, albedo, normal + depth,
+// object id (PathTraceTarget::Attachment).
+#include "renderer/gl/fullscreen_triangle.h"
+#include "renderer/gl/program_cache.h"
+#include "renderer/gl/render_target.h"
+#include "renderer/gpu_scene/camera_setup.h"
+#include "renderer/gpu_scene/gpu_scene.h"
+
+#include <cstdint>
+
+namespace glint::renderer {
+
+enum class DebugView { None, AmbientOcclusion };
+
+struct PathTraceSettings {
+    std::uint32_t seed = 0;
+    int bounces = 4;        // CONTRACTS.md: 0 = emitters and direct light only
+    float clamp = 0.0f;     // radiance clamp per sample; 0 = off
+    bool independentSampler = false; // hashed uniforms instead of R2 for the pixel jitter
+    DebugView view = DebugView::None;
+    float aoDistance = 1.0f;
+};
+
+enum GBufferAttachment { radianceAttachment = 0, albedoAttachment = 1, normalDepthAttachment = 2, objectIdAttachment = 3 };
+
+gl::RenderTarget makeGBuffer(int width, int height);
+
+class PathTracePass {
+public:
+    explicit PathTracePass(gl::ProgramCache& programs) : programs_(programs) {}
+    void render(const GpuScene& scene, const CameraSetup& camera, const PathTraceSettings& settings,
+                std::uint32_t sampleIndex, const gl::RenderTarget& target);
+
+private:
+    gl::ProgramCache& programs_;
+    gl::FullscreenTriangle triangle_;
+};
+
+} // namespace glint::renderer

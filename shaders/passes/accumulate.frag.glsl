@@ -1,0 +1,35 @@
+// Exact running mean, mean_n = mean_(n-1) + (x_n - mean_(n-1)) / n, read from the previous target
+// and written to the other one (ping-pong: never read and write one texture). Depth (normalDepth.w)
+// and object id come from the first sample: their means would mix surfaces.
+uniform sampler2D uPreviousRadiance;
+uniform sampler2D uPreviousAlbedo;
+uniform sampler2D uPreviousNormalDepth;
+uniform sampler2D uPreviousObjectId;
+uniform sampler2D uSampleRadiance;
+uniform sampler2D uSampleAlbedo;
+uniform sampler2D uSampleNormalDepth;
+uniform sampler2D uSampleObjectId;
+uniform float uSampleCount; // n, counting this sample
+
+out vec4 outRadiance;
+out vec4 outAlbedo;
+out vec4 outNormalDepth;
+out vec4 outObjectId;
+
+vec4 runningMean(sampler2D previous, sampler2D current, ivec2 pixel) {
+    vec4 mean = texelFetch(previous, pixel, 0);
+    return uSampleCount <= 1.0 ? texelFetch(current, pixel, 0) : mean + (texelFetch(current, pixel, 0) - mean) / uSampleCount;
+}
+
+vec4 firstSample(sampler2D previous, sampler2D current, ivec2 pixel) {
+    return uSampleCount <= 1.0 ? texelFetch(current, pixel, 0) : texelFetch(previous, pixel, 0);
+}
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    outRadiance = runningMean(uPreviousRadiance, uSampleRadiance, pixel);
+    outAlbedo = runningMean(uPreviousAlbedo, uSampleAlbedo, pixel);
+    vec3 normal = runningMean(uPreviousNormalDepth, uSampleNormalDepth, pixel).xyz;
+    outNormalDepth = vec4(normal, firstSample(uPreviousNormalDepth, uSampleNormalDepth, pixel).w);
+    outObjectId = firstSample(uPreviousObjectId, uSampleObjectId, pixel);
+}

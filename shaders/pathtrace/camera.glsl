@@ -1,0 +1,49 @@
+// Primary rays: one sub-pixel jitter per sample from the R2 low-discrepancy sequence, rotated per
+// pixel (Cranley-Patterson) so neighbouring pixels do not share a pattern; a box pixel filter; a thin
+// lens for depth of field. The independent sampler mode replaces R2 by plain hashed uniforms.
+uniform mat4 uWorldFromCamera;
+uniform int uOrthographic;   // 0: perspective, 1: orthographic
+uniform vec2 uHalfExtent;    // tan(fov/2) per axis (perspective) or half extents in metres (orthographic)
+uniform float uLensRadius;   // metres; 0: pinhole
+uniform float uFocusDistance;
+uniform vec2 uResolution;
+uniform int uIndependentSampler;
+
+// R2 in 0.32 fixed point: exact for any sample index (floats would lose the fraction).
+vec2 r2Jitter(uint sampleIndex, uint rotation0, uint rotation1) {
+    uvec2 point = uvec2(3242174889u, 2447445413u) * sampleIndex + uvec2(rotation0, rotation1);
+    return vec2(uintToUnit(point.x), uintToUnit(point.y));
+}
+
+vec2 pixelJitter(uvec2 pixel, uint sampleIndex, uint seed, INOUT(PathRandom) rng) {
+    if (uIndependentSampler != 0) return next2D(rng);
+    uint pixelKey = pathKey(pixel, 0xffffffffu, seed);
+    return r2Jitter(sampleIndex, hashDimension(pixelKey, 0u), hashDimension(pixelKey, 1u));
+}
+
+vec2 concentricDisk(vec2 u) {
+    vec2 o = 2.0 * u - 1.0;
+    if (o.x == 0.0 && o.y == 0.0) return vec2(0.0);
+    float r = abs(o.x) > abs(o.y) ? o.x : o.y;
+    float phi = abs(o.x) > abs(o.y) ? (PI / 4.0) * (o.y / o.x) : (PI / 2.0) - (PI / 4.0) * (o.x / o.y);
+    return r * vec2(cos(phi), sin(phi));
+}
+
+Ray cameraRay(uvec2 pixel, uint sampleIndex, uint seed, INOUT(PathRandom) rng) {
+    vec2 film = (vec2(pixel) + pixelJitter(pixel, sampleIndex, seed, rng)) / uResolution * 2.0 - 1.0;
+    vec3 origin = vec3(0.0);
+    vec3 direction = vec3(film * uHalfExtent, -1.0);
+    if (uOrthographic != 0) {
+        origin = vec3(film * uHalfExtent, 0.0);
+        direction = vec3(0.0, 0.0, -1.0);
+    }
+    vec2 lens = next2D(rng);
+    if (uLensRadius > 0.0) {
+        vec3 focus = origin + direction * (uFocusDistance / -direction.z);
+        origin += vec3(uLensRadius * concentricDisk(lens), 0.0);
+        direction = focus - origin;
+    }
+    return Ray((uWorldFromCamera * vec4(origin, 1.0)).xyz, normalize(mat3(uWorldFromCamera) * direction));
+}
+
+vec3 cameraForward() { return normalize(-uWorldFromCamera[2].xyz); }

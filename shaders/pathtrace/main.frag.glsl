@@ -1,0 +1,37 @@
+// Path tracing pass: one sample per pixel into four targets (radiance, albedo, normal + depth, id).
+#include "constants.glsl"
+#include "path_random.glsl"
+#include "ray.glsl"
+#include "frame.glsl"
+#include "scene_buffers.glsl"
+#include "shapes.glsl"
+#include "meshes.glsl"
+#include "scene_trace.glsl"
+#include "material.glsl"
+#include "microfacet.glsl"
+#include "surface_bsdf.glsl"
+#include "environment.glsl"
+#include "lights.glsl"
+#include "camera.glsl"
+#include "integrator.glsl"
+#include "output_guard.glsl"
+
+uniform uint uSampleIndex;
+uniform uint uSeed;
+uniform int uDebugView; // 0: path tracing, 1: ambient occlusion
+
+out vec4 outRadiance;
+out vec4 outAlbedo;
+out vec4 outNormalDepth;
+out vec4 outObjectId;
+
+void main() {
+    uvec2 pixel = uvec2(gl_FragCoord.xy);
+    PathRandom rng = pathRandom(pixel, uSampleIndex, uSeed);
+    Ray ray = cameraRay(pixel, uSampleIndex, uSeed, rng);
+    PathResult path = uDebugView == 1 ? ambientOcclusion(ray, cameraForward(), rng) : tracePath(ray, cameraForward(), rng);
+    outRadiance = vec4(finiteNonNegative(path.radiance), 1.0);
+    outAlbedo = vec4(finiteNonNegative(path.albedo), 1.0);
+    outNormalDepth = vec4(finiteOrZero(path.normal), path.depth);
+    outObjectId = vec4(path.objectId, 0.0, 0.0, 1.0);
+}
