@@ -1,0 +1,292 @@
+// The project file <basename>.glint.json (docs/FILE_FORMAT.md): parsed strictly (a wrong type is an
+// error naming the key), unknown keys kept with a warning, older schemas migrated step by step.
+#include "project_file.h"
+
+#include "json_numbers.h"
+
+#include <array>
+#include <exception>
+#include <fstream>
+#include <limits>
+#include <set>
+#include <sstream>
+
+namespace glint {
+
+namespace {
+
+using nlohmann::json;
+
+constexpr int kMaxJsonDepth = 64;
+
+// kMigrations[v - 1] turns schema v into schema v + 1. Schema 1 is the first: none yet. A new schema
+// adds its step here, so every older file still opens.
+using Migration = void (*)(json&);
+constexpr std::array<Migration, kProjectSchemaVersion - 1> kMigrations{};
+
+// Reads the members of one JSON object; what it was never asked for is unknown.
+class ObjectReader {
+public:
+    ObjectReader(const json& object, std::string prefix, const std::string& file, Warnings& warnings, json& unknown)
+        : object_(object), prefix_(std::move(prefix)), file_(file), warnings_(warnings), unknown_(unknown) {}
+
+    ~ObjectReader()
+    {
+        if (std::uncaught_exceptions() > 0) return;
+        for (const auto& [key, value] : object_.items()) {
+            if (asked_.count(key)) continue;
+            unknown_[key] = value;
+            warnings_.push_back({file_, "unknown-key", "unknown key '" + prefix_ + key + "' kept as it is"});
+        }
+    }
+
+    const json* find(const std::string& key)
+    {
+        asked_.insert(key);
+        auto it = object_.find(key);
+        return it == object_.end() ? nullptr : &*it;
+    }
+
+    [[noreturn]] void wrongType(const std::string& key, const std::string& expected) const
+    {
+        throw FileError(file_, "wrong-type", "key '" + prefix_ + key + "' must be " + expected);
+    }
+
+    void read(const std::string& key, std::string& out)
+    {
+        if (const json* v = find(key)) out = v->is_string() ? v->get<std::string>() : (wrongType(key, "a string"), "");
+    }
+    void read(const std::string& key, int& out)
+    {
+        const json* v = find(key);
+        if (!v) return;
+        if (!v->is_number_integer() || *v < std::numeric_limits<int>::min() || *v > std::numeric_limits<int>::max())
+            wrongType(key, "an integer");
+        out = v->get<int>();
+    }
+    void read(const std::string& key, std::uint32_t& out)
+    {
+        const json* v = find(key);
+        if (!v) return;
+        if (!v->is_number_integer() || *v < 0 || *v > std::numeric_limits<std::uint32_t>::max())
+            wrongType(key, "an integer from 0 to 4294967295");
+        out = v->get<std::uint32_t>();
+    }
+    void read(const std::string& key, float& out)
+    {
+        if (const json* v = find(key)) out = v->is_number() ? v->get<float>() : (wrongType(key, "a number"), 0.0f);
+    }
+    void read(const std::string& key, double& out)
+    {
+        if (const json* v = find(key)) out = v->is_number() ? v->get<double>() : (wrongType(key, "a number"), 0.0);
+    }
+    void read(const std::string& key, glm::vec3& out)
+    {
+        const json* v = find(key);
+        if (!v) return;
+        if (!v->is_array() || v->size() != 3 || !(*v)[0].is_number() || !(*v)[1].is_number() || !(*v)[2].is_number())
+            wrongType(key, "an array of 3 numbers");
+        out = {(*v)[0].get<float>(), (*v)[1].get<float>(), (*v)[2].get<float>()};
+    }
+
+    // A nested object: its reader collects its own unknown keys under unknown[key].
+    template <class Fn>
+    void object(const std::string& key, Fn&& readMembers)
+    {
+        const json* v = find(key);
+        if (!v) return;
+        if (!v->is_object()) wrongType(key, "an object");
+        json nestedUnknown = json::object();
+        {
+            ObjectReader nested(*v, prefix_ + key + ".", file_, warnings_, nestedUnknown);
+            readMembers(nested);
+        }
+        if (!nestedUnknown.empty()) unknown_[key] = std::move(nestedUnknown);
+    }
+
+    template <class Enum, std::size_t N>
+    void readEnum(const std::string& key, Enum& out, const std::array<std::pair<const char*, Enum>, N>& names)
+    {
+        std::string text;
+        read(key, text);
+        if (!find(key)) return;
+        std::string allowed;
+        for (const auto& [name, value] : names) {
+            if (text == name) {
+                out = value;
+                return;
+            }
+            allowed += (allowed.empty() ? "" : ", ") + std::string(name);
+        }
+        throw FileError(file_, "bad-value", "key '" + prefix_ + key + "' must be one of " + allowed + ", not '" + text + "'");
+    }
+
+    const std::string& file() const { return file_; }
+
+private:
+    const json& object_;
+    std::string prefix_;
+    const std::string& file_;
+    Warnings& warnings_;
+    json& unknown_;
+    std::set<std::string> asked_;
+};
+
+constexpr std::array<std::pair<const char*, LightUnits>, 2> kLightUnitNames{{{"blender", LightUnits::Blender}, {"raw", LightUnits::Raw}}};
+constexpr std::array<std::pair<const char*, Tonemapper>, 3> kTonemapperNames{
+    {{"none", Tonemapper::None}, {"aces", Tonemapper::AcesFitted}, {"pbrNeutral", Tonemapper::PbrNeutral}}};
+
+template <class Enum, std::size_t N>
+const char* enumName(Enum value, const std::array<std::pair<const char*, Enum>, N>& names)
+{
+    for (const auto& [name, v] : names)
+        if (v == value) return name;
+    return names.front().first;
+}
+
+void readRender(ObjectReader& r, RenderSettings& s)
+{
+    r.read("configuration", s.configuration);
+    r.read("width", s.width);
+    r.read("height", s.height);
+    r.read("spp", s.spp);
+    r.read("bounces", s.bounces);
+    r.read("seed", s.seed);
+    r.read("exposure", s.exposure);
+    r.readEnum("tonemapper", s.tonemapper, kTonemapperNames);
+    r.read("clamp", s.clamp);
+}
+
+void readEnvironment(ObjectReader& r, Environment& e)
+{
+    r.read("file", e.file);
+    r.read("color", e.color);
+    r.read("intensity", e.intensity);
+    r.read("rotation", e.rotationDegrees);
+}
+
+void readTimeline(ObjectReader& r, Timeline& t)
+{
+    r.read("start", t.start);
+    r.read("end", t.end);
+    const json* fps = r.find("fps");
+    if (!fps) return;
+    const bool valid = fps->is_array() && fps->size() == 2 && (*fps)[0].is_number_integer() &&
+                       (*fps)[1].is_number_integer() && (*fps)[0] > 0 && (*fps)[1] > 0 &&
+                       (*fps)[0] <= std::numeric_limits<int>::max() && (*fps)[1] <= std::numeric_limits<int>::max();
+    if (!valid) r.wrongType("fps", "[numerator, denominator] with positive integers");
+    t.fpsNumerator = (*fps)[0].get<int>();
+    t.fpsDenominator = (*fps)[1].get<int>();
+}
+
+void readOutput(ObjectReader& r, OutputSettings& o)
+{
+    r.read("path", o.path);
+    r.read("aovs", o.aovs);
+    r.read("codec", o.codec);
+}
+
+void readProject(ObjectReader& r, ProjectFile& project)
+{
+    ProjectSettings& s = project.settings;
+    r.find("glint"); // checked by migrate()
+    r.read("scene", project.sceneFile);
+    std::uint32_t camera = 0;
+    r.read("activeCamera", camera);
+    s.activeCamera = NodeId{camera};
+    r.readEnum("lightUnits", s.lightUnits, kLightUnitNames);
+    r.object("render", [&](ObjectReader& nested) { readRender(nested, s.render); });
+    r.object("environment", [&](ObjectReader& nested) { readEnvironment(nested, s.environment); });
+    r.object("timeline", [&](ObjectReader& nested) { readTimeline(nested, s.timeline); });
+    r.object("output", [&](ObjectReader& nested) { readOutput(nested, s.output); });
+}
+
+void migrate(json& root, const std::string& file)
+{
+    auto version = root.find("glint");
+    if (version == root.end())
+        throw FileError(file, "not-a-project", "not a Glint project file: the schema version 'glint' is missing");
+    if (!version->is_number_integer()) throw FileError(file, "wrong-type", "key 'glint' must be an integer");
+    const auto from = version->get<std::int64_t>();
+    if (from > kProjectSchemaVersion)
+        throw FileError(file, "newer-version", "written by a newer Glint (project schema " + std::to_string(from) +
+                                                   "; this Glint reads up to " + std::to_string(kProjectSchemaVersion) + ")");
+    if (from < 1) throw FileError(file, "bad-version", "project schema " + std::to_string(from) + " does not exist");
+    for (auto v = from; v < kProjectSchemaVersion; ++v) kMigrations[static_cast<std::size_t>(v - 1)](root);
+    root["glint"] = kProjectSchemaVersion;
+}
+
+json parseJson(const std::string& text, const std::string& file)
+{
+    try {
+        return json::parse(text, [&](int depth, json::parse_event_t, json&) {
+            if (depth > kMaxJsonDepth) throw FileError(file, "too-deep", "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+            return true;
+        });
+    } catch (const json::exception& e) {
+        throw FileError(file, "invalid-json", std::string("invalid JSON: ") + e.what());
+    }
+}
+
+} // namespace
+
+std::filesystem::path projectPathFor(const std::filesystem::path& sceneFile)
+{
+    std::filesystem::path project = sceneFile;
+    project.replace_extension(".glint.json");
+    return project;
+}
+
+bool isProjectPath(const std::filesystem::path& file)
+{
+    const std::string name = file.filename().string();
+    const std::string suffix = ".glint.json";
+    return name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+ProjectFile parseProjectFile(const std::string& text, const std::string& displayName, Warnings& warnings)
+{
+    json root = parseJson(text, displayName);
+    if (!root.is_object()) throw FileError(displayName, "wrong-type", "a project file must be a JSON object");
+    migrate(root, displayName);
+    ProjectFile project;
+    project.settings.unknown = json::object();
+    {
+        ObjectReader reader(root, "", displayName, warnings, project.settings.unknown);
+        readProject(reader, project);
+    }
+    if (project.settings.unknown.empty()) project.settings.unknown = nullptr;
+    return project;
+}
+
+ProjectFile readProjectFile(const std::filesystem::path& file, Warnings& warnings)
+{
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw FileError(file.string(), "cannot-open", "cannot open the project file");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parseProjectFile(text.str(), file.string(), warnings);
+}
+
+std::string writeProjectFileText(const ProjectFile& project)
+{
+    const ProjectSettings& s = project.settings;
+    json root{{"glint", kProjectSchemaVersion}, {"lightUnits", enumName(s.lightUnits, kLightUnitNames)}};
+    if (!project.sceneFile.empty()) root["scene"] = project.sceneFile;
+    if (s.activeCamera.valid()) root["activeCamera"] = s.activeCamera.value;
+    const RenderSettings& r = s.render;
+    root["render"] = {{"configuration", r.configuration}, {"width", r.width}, {"height", r.height}, {"spp", r.spp},
+                      {"bounces", r.bounces}, {"seed", r.seed}, {"exposure", jsonFloat(r.exposure)},
+                      {"tonemapper", enumName(r.tonemapper, kTonemapperNames)}, {"clamp", jsonFloat(r.clamp)}};
+    const Environment& e = s.environment;
+    root["environment"] = {{"color", {jsonFloat(e.color.x), jsonFloat(e.color.y), jsonFloat(e.color.z)}},
+                           {"intensity", jsonFloat(e.intensity)}, {"rotation", jsonFloat(e.rotationDegrees)}};
+    if (!e.file.empty()) root["environment"]["file"] = e.file;
+    const Timeline& t = s.timeline;
+    root["timeline"] = {{"start", t.start}, {"end", t.end}, {"fps", {t.fpsNumerator, t.fpsDenominator}}};
+    root["output"] = {{"path", s.output.path}, {"aovs", s.output.aovs}, {"codec", s.output.codec}};
+    mergeUnknown(root, s.unknown);
+    return deterministicJsonText(root, 2) + "\n";
+}
+
+} // namespace glint

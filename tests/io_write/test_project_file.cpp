@@ -1,0 +1,155 @@
+// The project file and the number formatting under it: shortest floats, any locale, unknown keys
+// kept, wrong types and newer schemas refused with errors that name the key.
+#include "scene/io/json_numbers.h"
+#include "scene/io/project_file.h"
+
+#include <QtTest>
+
+#include <clocale>
+
+using namespace glint;
+using nlohmann::json;
+
+namespace {
+
+ProjectFile sampleProject()
+{
+    ProjectFile p;
+    p.sceneFile = "shot.gltf";
+    p.settings.activeCamera = NodeId{7};
+    p.settings.render.exposure = 0.1f;
+    p.settings.render.seed = 4000000000u;
+    p.settings.render.tonemapper = Tonemapper::PbrNeutral;
+    p.settings.environment = {.file = "studio.hdr", .color = {0.1f, 0.2f, 0.3f}, .intensity = 1.5f, .rotationDegrees = 33.3f};
+    p.settings.timeline = {.start = 0.5, .end = 10.1, .fpsNumerator = 24000, .fpsDenominator = 1001};
+    p.settings.output = {.path = "frames/shot_####.exr", .aovs = "none", .codec = "prores"};
+    p.settings.lightUnits = LightUnits::Raw;
+    return p;
+}
+
+std::string expectError(const std::string& text)
+{
+    Warnings warnings;
+    try {
+        parseProjectFile(text, "p.glint.json", warnings);
+    } catch (const FileError& e) {
+        return e.code() + ": " + e.message();
+    }
+    return "no error";
+}
+
+} // namespace
+
+class TestProjectFile : public QObject {
+    Q_OBJECT
+
+private slots:
+    void floatsPrintAsShortestDecimals()
+    {
+        QCOMPARE(deterministicJsonText(jsonFloat(0.1f), -1), std::string("0.1"));
+        QCOMPARE(deterministicJsonText(jsonFloat(1.0f / 3.0f), -1), std::string("0.33333334"));
+        QCOMPARE(deterministicJsonText(jsonFloat(16777216.0f), -1), std::string("16777216"));
+        QCOMPARE(deterministicJsonText(jsonFloat(1e-7f), -1), std::string("1e-07"));
+        QCOMPARE(deterministicJsonText(jsonFloat(-2.5f), -1), std::string("-2.5"));
+        QCOMPARE(deterministicJsonText(jsonFloat(3.4028235e38f), -1), std::string("3.4028235e+38"));
+        QCOMPARE(deterministicJsonText(jsonFloat(std::numeric_limits<float>::infinity()), -1), std::string("null"));
+        QCOMPARE(deterministicJsonText(json(0.1), -1), std::string("0.1"));
+        QCOMPARE(deterministicJsonText(json(0.1f), -1), std::string("0.10000000149011612")); // why jsonFloat exists
+    }
+
+    void everyFloatReadsBack()
+    {
+        // A spread of bit patterns: the printed decimal parses back to the very same float.
+        for (std::uint32_t bits = 0x00800000u; bits < 0x7f800000u; bits += 0x00f0f0f1u) {
+            float f = 0.0f;
+            std::memcpy(&f, &bits, sizeof f);
+            const std::string text = deterministicJsonText(jsonFloat(f), -1);
+            QCOMPARE(json::parse(text).get<float>(), f);
+        }
+    }
+
+    void textIsSortedAndLocaleIndependent()
+    {
+        const std::string before = writeProjectFileText(sampleProject());
+        QVERIFY2(std::setlocale(LC_ALL, "de_DE.UTF-8") != nullptr,
+                 "the locale de_DE.UTF-8 is missing: generate it (localedef -i de_DE -f UTF-8 de_DE.UTF-8)");
+        const std::string german = writeProjectFileText(sampleProject());
+        std::setlocale(LC_ALL, "C");
+        QCOMPARE(german, before);
+        QVERIFY(before.find("\"exposure\": 0.1,") != std::string::npos);
+        QVERIFY(before.find("\"rotation\": 33.3") != std::string::npos);
+        QVERIFY(before.find("\"fps\": [24000, 1001]") != std::string::npos);
+        QVERIFY(before.find("\"activeCamera\": 7") < before.find("\"environment\"")); // sorted keys
+        QVERIFY(before.ends_with("}\n"));
+    }
+
+    void roundTripsExactly()
+    {
+        const ProjectFile original = sampleProject();
+        Warnings warnings;
+        const ProjectFile parsed = parseProjectFile(writeProjectFileText(original), "p.glint.json", warnings);
+        QVERIFY(warnings.empty());
+        QCOMPARE(parsed.sceneFile, original.sceneFile);
+        QVERIFY(parsed.settings == original.settings);
+        QCOMPARE(writeProjectFileText(parsed), writeProjectFileText(original));
+    }
+
+    void defaultsFromAMinimalFile()
+    {
+        Warnings warnings;
+        const ProjectFile parsed = parseProjectFile(R"({"glint": 1})", "p.glint.json", warnings);
+        QVERIFY(parsed.settings == ProjectSettings{});
+        QVERIFY(parsed.sceneFile.empty());
+    }
+
+    void unknownKeysAreKeptWithWarnings()
+    {
+        Warnings warnings;
+        const std::string text = R"({"glint": 1, "future": {"a": [1, 2]}, "render": {"spp": 8, "denoiser": "oidn"}})";
+        const ProjectFile parsed = parseProjectFile(text, "p.glint.json", warnings);
+        QCOMPARE(parsed.settings.render.spp, 8);
+        QCOMPARE(warnings.size(), std::size_t{2});
+        QCOMPARE(warnings[0].code, std::string("unknown-key"));
+        QCOMPARE(warnings[0].file, std::string("p.glint.json"));
+        QVERIFY(warnings[1].message.find("'render.denoiser'") != std::string::npos || warnings[0].message.find("'render.denoiser'") != std::string::npos);
+        QVERIFY(parsed.settings.unknown == json::parse(R"({"future": {"a": [1, 2]}, "render": {"denoiser": "oidn"}})"));
+        const json written = json::parse(writeProjectFileText(parsed));
+        QCOMPARE(written["render"]["denoiser"].get<std::string>(), std::string("oidn"));
+        QCOMPARE(written["render"]["spp"].get<int>(), 8);
+        QVERIFY(written["future"] == json::parse(R"({"a": [1, 2]})"));
+    }
+
+    void wrongTypesNameTheKey()
+    {
+        QCOMPARE(expectError(R"({"glint": 1, "render": {"width": "wide"}})"), std::string("wrong-type: key 'render.width' must be an integer"));
+        QCOMPARE(expectError(R"({"glint": 1, "render": {"spp": 1.5}})"), std::string("wrong-type: key 'render.spp' must be an integer"));
+        QCOMPARE(expectError(R"({"glint": 1, "environment": {"color": [1, 2]}})"), std::string("wrong-type: key 'environment.color' must be an array of 3 numbers"));
+        QCOMPARE(expectError(R"({"glint": 1, "timeline": {"fps": [24, 0]}})"), std::string("wrong-type: key 'timeline.fps' must be [numerator, denominator] with positive integers"));
+        QCOMPARE(expectError(R"({"glint": 1, "output": []})"), std::string("wrong-type: key 'output' must be an object"));
+        QCOMPARE(expectError(R"({"glint": 1, "activeCamera": -1})"), std::string("wrong-type: key 'activeCamera' must be an integer from 0 to 4294967295"));
+        QCOMPARE(expectError(R"({"glint": 1, "lightUnits": "photometric"})"), std::string("bad-value: key 'lightUnits' must be one of blender, raw, not 'photometric'"));
+        QCOMPARE(expectError(R"([1])"), std::string("wrong-type: a project file must be a JSON object"));
+        QVERIFY(expectError(R"({"glint": 1,)").starts_with("invalid-json: invalid JSON: "));
+        QVERIFY(expectError(std::string(200, '[') + std::string(200, ']')).starts_with("too-deep: "));
+    }
+
+    void schemaVersions()
+    {
+        QCOMPARE(expectError(R"({"glint": 2})"), std::string("newer-version: written by a newer Glint (project schema 2; this Glint reads up to 1)"));
+        QCOMPARE(expectError(R"({"render": {}})"), std::string("not-a-project: not a Glint project file: the schema version 'glint' is missing"));
+        QCOMPARE(expectError(R"({"glint": "1"})"), std::string("wrong-type: key 'glint' must be an integer"));
+        QCOMPARE(expectError(R"({"glint": 0})"), std::string("bad-version: project schema 0 does not exist"));
+    }
+
+    void pathsBesideTheScene()
+    {
+        QCOMPARE(projectPathFor("a/b.gltf"), std::filesystem::path("a/b.glint.json"));
+        QCOMPARE(projectPathFor("b.glb"), std::filesystem::path("b.glint.json"));
+        QVERIFY(isProjectPath("dir/x.glint.json"));
+        QVERIFY(!isProjectPath("dir/x.json"));
+        QVERIFY(!isProjectPath(".glint.json"));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestProjectFile)
+#include "test_project_file.moc"
