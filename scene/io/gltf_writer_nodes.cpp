@@ -63,6 +63,8 @@ void writeShape(GltfWriteContext& ctx, nlohmann::json& node, const Node& source,
     Mesh fallback;
     fallback.name = source.name.empty() ? "shape" : source.name + ".shape";
     fallback.primitives.push_back(tessellateShape(shape));
+    // No tangents: tools that need them generate MikkTSpace ones, and a sphere's poles have none.
+    fallback.primitives.back().tangents.clear();
     fallback.primitives.back().material = shape.material;
     fallback.unknown = {{"extensions", {{"GLINT_shape_fallback", nlohmann::json::object()}}}};
     node["mesh"] = ctx.root["meshes"].size();

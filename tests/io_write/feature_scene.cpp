@@ -68,7 +68,6 @@ Material everyExtension(const TextureIds& t)
     m.attenuationColor = {0.9f, 0.95f, 1.0f};
     m.alphaMode = AlphaMode::Mask;
     m.alphaCutoff = 0.3f;
-    m.doubleSided = true;
     m.unknown = {{"extensions", {{"EXT_glint_test_unknown", {{"kept", true}, {"value", 1.5}}}}}, {"extras", {{"note", "verbatim"}}}};
     return m;
 }
@@ -174,7 +173,7 @@ Scene featureScene()
     scene.name = "features";
     const TextureIds textures = addTextures(scene);
     const MaterialId rich = scene.materials.add(everyExtension(textures));
-    const MaterialId plain = scene.materials.add({.name = "glass", .baseColorFactor = {1, 1, 1, 0.4f}, .alphaMode = AlphaMode::Blend});
+    const MaterialId plain = scene.materials.add({.name = "glass", .baseColorFactor = {1, 1, 1, 0.4f}, .alphaMode = AlphaMode::Blend, .doubleSided = true});
     const MeshId quad = scene.meshes.add(quadMesh(rich));
 
     const NodeId root = scene.addNode(node("root", std::monostate{}, {.scale = {2.0f, 2.0f, 2.0f}}));
