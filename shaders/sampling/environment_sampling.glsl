@@ -1,0 +1,40 @@
+// Importance sampling of an equirectangular environment by its luminance (tables built on the CPU by
+// renderer/cpu_twin/env_sampling.h). Orientation as CONTRACTS.md "Environment": for a unit direction
+// d, u = 0.5 + atan2(d.z, d.x) / 2pi from the left edge, v = acos(d.y) / pi from the top row. The
+// caller rotates directions into the map's frame; a rotation does not change the pdf.
+#ifdef __cplusplus
+#pragma once
+#endif
+#include "common/math.glsl"
+#include "sampling/distribution.glsl"
+
+vec2 equirectFromDirection(vec3 d) {
+    return vec2(0.5f + atan(d.z, d.x) * INV_TWO_PI, acos(clamp(d.y, -1.0f, 1.0f)) * INV_PI);
+}
+
+vec3 directionFromEquirect(vec2 uv) {
+    float phi = (uv.x - 0.5f) * TWO_PI;
+    float theta = uv.y * PI;
+    float sinTheta = sin(theta);
+    return vec3(sinTheta * cos(phi), cos(theta), sinTheta * sin(phi));
+}
+
+// The (u, v) square maps onto the sphere with dw = 2 pi^2 sin(theta) du dv.
+float solidAngleFromEquirectPdf(float pdfUv, float sinTheta) {
+    return sinTheta > 0.0f ? pdfUv / (2.0f * PI * PI * sinTheta) : 0.0f;
+}
+
+// `size` is the environment image's width and height (the table is one texel wider and taller).
+vec3 sampleEnvironmentDirection(sampler2D cdfTable, ivec2 size, vec2 u, OUT(float) pdf) {
+    float pdfUv;
+    vec2 uv = samplePiecewiseConstant2D(cdfTable, size, u, pdfUv);
+    vec3 d = directionFromEquirect(uv);
+    pdf = solidAngleFromEquirectPdf(pdfUv, sin(uv.y * PI));
+    return d;
+}
+
+float environmentDirectionPdf(sampler2D cdfTable, ivec2 size, vec3 d) {
+    vec2 uv = equirectFromDirection(d);
+    float sinTheta = safeSqrt(1.0f - d.y * d.y);
+    return solidAngleFromEquirectPdf(piecewiseConstant2DPdf(cdfTable, size, uv), sinTheta);
+}
