@@ -5,6 +5,7 @@
 #include "renderer/passes/accumulate_pass.h"
 #include "renderer/passes/tonemap_pass.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -44,7 +45,19 @@ std::vector<T> topDown(const std::vector<T>& rgba, int width, int height, int ch
     return out;
 }
 
-void readOutputs(const gl::RenderTarget& mean, const gl::RenderTarget& tonemapped, RenderOutput& out) {
+// Per-pixel sample variance n/(n-1) (E[x^2] - E[x]^2), clamped at 0 against rounding.
+std::vector<float> sampleVariance(const std::vector<float>& mean, const std::vector<float>& meanSquared, int samples) {
+    std::vector<float> variance;
+    variance.reserve(mean.size() / 4 * 3);
+    const double correction = samples > 1 ? static_cast<double>(samples) / (samples - 1) : 0.0;
+    for (std::size_t i = 0; i < mean.size(); i += 4)
+        for (std::size_t c = 0; c < 3; ++c)
+            variance.push_back(static_cast<float>(
+                std::max(0.0, correction * (static_cast<double>(meanSquared[i + c]) - static_cast<double>(mean[i + c]) * mean[i + c]))));
+    return variance;
+}
+
+void readOutputs(const gl::RenderTarget& mean, const gl::RenderTarget& tonemapped, int samples, RenderOutput& out) {
     const int w = out.width;
     const int h = out.height;
     out.radiance = topDown(mean.readRgba(radianceAttachment), w, h, 4);
@@ -57,6 +70,7 @@ void readOutputs(const gl::RenderTarget& mean, const gl::RenderTarget& tonemappe
     }
     out.objectId = topDown(mean.readRgba(objectIdAttachment), w, h, 1);
     out.tonemapped = topDown(tonemapped.readRgba8(0), w, h, 4);
+    out.variance = sampleVariance(out.radiance, topDown(mean.readRgba(radianceSquaredAttachment), w, h, 4), samples);
 }
 
 void validate(const RenderRequest& request) {
@@ -106,7 +120,7 @@ RenderOutput OfflineRenderer::render(const Scene& scene, const RenderRequest& re
     out.timings.msPerSample = out.timings.renderMs / request.spp;
     tonemap.render(accumulate.mean(), camera.exposure + request.exposure,
                    request.tonemapper.value_or(scene.settings.render.tonemapper), display);
-    readOutputs(accumulate.mean(), display, out);
+    readOutputs(accumulate.mean(), display, request.spp, out);
     return out;
 }
 

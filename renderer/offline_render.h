@@ -46,6 +46,7 @@ struct RenderOutput {
     std::vector<float> normal;    // XYZ, world space
     std::vector<float> depth;     // along the view axis in metres, +inf where nothing is hit
     std::vector<float> objectId;  // node id, 0 where nothing is hit
+    std::vector<float> variance;  // RGB: unbiased sample variance of one sample's radiance (divide by spp for the mean's)
     std::vector<std::uint8_t> tonemapped; // RGBA8, sRGB
     std::string glRenderer;
     RenderTimings timings;

@@ -5,11 +5,15 @@
 namespace glint::renderer {
 
 AccumulatePass::AccumulatePass(gl::ProgramCache& programs, int width, int height)
-    : programs_(programs), targets_{makeGBuffer(width, height), makeGBuffer(width, height)} {}
+    : programs_(programs), targets_{makeAccumulationBuffer(width, height), makeAccumulationBuffer(width, height)} {}
+
+gl::RenderTarget makeAccumulationBuffer(int width, int height) {
+    return gl::RenderTarget(width, height, {GL_RGBA32F, GL_RGBA32F, GL_RGBA32F, GL_RGBA32F, GL_RGBA32F});
+}
 
 void AccumulatePass::add(const gl::RenderTarget& sample) {
     const gl::ShaderProgram& program = programs_.get({"fullscreen.vert.glsl", "passes/accumulate.frag.glsl", {},
-                                                      {"outRadiance", "outAlbedo", "outNormalDepth", "outObjectId"}});
+                                                      {"outRadiance", "outAlbedo", "outNormalDepth", "outObjectId", "outRadianceSquared"}});
     const int previous = current_;
     const int next = 1 - current_;
     ++count_;
@@ -21,6 +25,7 @@ void AccumulatePass::add(const gl::RenderTarget& sample) {
         targets_[previous].bindTexture(i, static_cast<GLuint>(i), program.uniform(previousNames[i]));
         sample.bindTexture(i, static_cast<GLuint>(4 + i), program.uniform(sampleNames[i]));
     }
+    targets_[previous].bindTexture(radianceSquaredAttachment, 8, program.uniform("uPreviousRadianceSquared"));
     targets_[next].bindForDrawing();
     triangle_.draw();
     current_ = next;

@@ -1,12 +1,16 @@
 #pragma once
 // The exact running mean of path-traced samples in RGBA32F, ping-ponged between two G-buffers.
 // Depth and object id are kept from the first sample (a mean of ids or of hit/miss depths means
-// nothing); radiance, albedo and normal are averaged.
+// nothing); radiance, albedo and normal are averaged. A fifth target holds the mean squared radiance.
 #include "renderer/gl/fullscreen_triangle.h"
 #include "renderer/gl/program_cache.h"
 #include "renderer/gl/render_target.h"
 
 namespace glint::renderer {
+
+inline constexpr int radianceSquaredAttachment = 4;
+
+gl::RenderTarget makeAccumulationBuffer(int width, int height);
 
 class AccumulatePass {
 public:

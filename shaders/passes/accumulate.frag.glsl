@@ -1,10 +1,12 @@
 // Exact running mean, mean_n = mean_(n-1) + (x_n - mean_(n-1)) / n, read from the previous target
 // and written to the other one (ping-pong: never read and write one texture). Depth (normalDepth.w)
-// and object id come from the first sample: their means would mix surfaces.
+// and object id come from the first sample: their means would mix surfaces. The mean of the squared
+// radiance gives each pixel's sample variance (statistical tests, the variance AOV).
 uniform sampler2D uPreviousRadiance;
 uniform sampler2D uPreviousAlbedo;
 uniform sampler2D uPreviousNormalDepth;
 uniform sampler2D uPreviousObjectId;
+uniform sampler2D uPreviousRadianceSquared;
 uniform sampler2D uSampleRadiance;
 uniform sampler2D uSampleAlbedo;
 uniform sampler2D uSampleNormalDepth;
@@ -15,10 +17,14 @@ out vec4 outRadiance;
 out vec4 outAlbedo;
 out vec4 outNormalDepth;
 out vec4 outObjectId;
+out vec4 outRadianceSquared;
+
+vec4 runningMean(vec4 mean, vec4 value) {
+    return uSampleCount <= 1.0 ? value : mean + (value - mean) / uSampleCount;
+}
 
 vec4 runningMean(sampler2D previous, sampler2D current, ivec2 pixel) {
-    vec4 mean = texelFetch(previous, pixel, 0);
-    return uSampleCount <= 1.0 ? texelFetch(current, pixel, 0) : mean + (texelFetch(current, pixel, 0) - mean) / uSampleCount;
+    return runningMean(texelFetch(previous, pixel, 0), texelFetch(current, pixel, 0));
 }
 
 vec4 firstSample(sampler2D previous, sampler2D current, ivec2 pixel) {
@@ -32,4 +38,6 @@ void main() {
     vec3 normal = runningMean(uPreviousNormalDepth, uSampleNormalDepth, pixel).xyz;
     outNormalDepth = vec4(normal, firstSample(uPreviousNormalDepth, uSampleNormalDepth, pixel).w);
     outObjectId = firstSample(uPreviousObjectId, uSampleObjectId, pixel);
+    vec4 radiance = texelFetch(uSampleRadiance, pixel, 0);
+    outRadianceSquared = runningMean(texelFetch(uPreviousRadianceSquared, pixel, 0), radiance * radiance);
 }

@@ -10,15 +10,16 @@ uniform vec2 uResolution;
 uniform int uIndependentSampler;
 
 // R2 in 0.32 fixed point: exact for any sample index (floats would lose the fraction).
-vec2 r2Jitter(uint sampleIndex, uint rotation0, uint rotation1) {
-    uvec2 point = uvec2(3242174889u, 2447445413u) * sampleIndex + uvec2(rotation0, rotation1);
-    return vec2(uintToUnit(point.x), uintToUnit(point.y));
+vec2 r2Jitter(uint sampleIndex, uvec2 rotation) {
+    uvec2 point = uvec2(3242174889u, 2447445413u) * sampleIndex + rotation;
+    return vec2(unitFloatFromBits(point.x), unitFloatFromBits(point.y));
 }
 
-vec2 pixelJitter(uvec2 pixel, uint sampleIndex, uint seed, INOUT(PathRandom) rng) {
-    if (uIndependentSampler != 0) return next2D(rng);
-    uint pixelKey = pathKey(pixel, 0xffffffffu, seed);
-    return r2Jitter(sampleIndex, hashDimension(pixelKey, 0u), hashDimension(pixelKey, 1u));
+// The rotation is keyed on the pixel and seed only (sample index 0xffffffff is never rendered).
+vec2 pixelJitter(uvec2 pixel, uint sampleIndex, uint seed, INOUT(Rng) rng) {
+    if (uIndependentSampler != 0) return rand2(rng);
+    Rng pixelStream = rngStart(pixel, 0xffffffffu, seed);
+    return r2Jitter(sampleIndex, rngBits(pixelStream.key, 0u).xy);
 }
 
 vec2 concentricDisk(vec2 u) {
@@ -29,7 +30,7 @@ vec2 concentricDisk(vec2 u) {
     return r * vec2(cos(phi), sin(phi));
 }
 
-Ray cameraRay(uvec2 pixel, uint sampleIndex, uint seed, INOUT(PathRandom) rng) {
+Ray cameraRay(uvec2 pixel, uint sampleIndex, uint seed, INOUT(Rng) rng) {
     vec2 film = (vec2(pixel) + pixelJitter(pixel, sampleIndex, seed, rng)) / uResolution * 2.0 - 1.0;
     vec3 origin = vec3(0.0);
     vec3 direction = vec3(film * uHalfExtent, -1.0);
@@ -37,7 +38,7 @@ Ray cameraRay(uvec2 pixel, uint sampleIndex, uint seed, INOUT(PathRandom) rng) {
         origin = vec3(film * uHalfExtent, 0.0);
         direction = vec3(0.0, 0.0, -1.0);
     }
-    vec2 lens = next2D(rng);
+    vec2 lens = rand2(rng);
     if (uLensRadius > 0.0) {
         vec3 focus = origin + direction * (uFocusDistance / -direction.z);
         origin += vec3(uLensRadius * concentricDisk(lens), 0.0);

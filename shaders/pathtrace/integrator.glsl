@@ -16,11 +16,11 @@ struct PathResult {
 };
 
 // Direct light from every punctual light, unoccluded, times the BSDF.
-vec3 directLight(vec3 p, vec3 faceNormal, Frame frame, Surface s, vec3 wo, INOUT(PathRandom) rng) {
+vec3 directLight(vec3 p, vec3 faceNormal, Frame frame, Surface s, vec3 wo, INOUT(Rng) rng) {
     vec3 sum = vec3(0.0);
     for (int light = 0; light < uLightCount; ++light) {
-        LightSample ls = sampleLight(light, p, next2D(rng));
-        vec3 wi = toLocal(frame, ls.direction);
+        LightSample ls = sampleLight(light, p, rand2(rng));
+        vec3 wi = localFromWorld(frame, ls.direction);
         float pdf;
         vec3 f = evalBsdf(s, wo, wi, pdf);
         if (maxComponent(f) <= 0.0) continue;
@@ -29,7 +29,7 @@ vec3 directLight(vec3 p, vec3 faceNormal, Frame frame, Surface s, vec3 wo, INOUT
     return sum;
 }
 
-PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(PathRandom) rng) {
+PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng) {
     PathResult result = PathResult(vec3(0.0), vec3(0.0), vec3(0.0), -1.0, 0.0);
     vec3 throughput = vec3(1.0);
     vec3 attenuation = vec3(0.0); // Beer-Lambert sigma of the medium the ray travels in
@@ -56,20 +56,22 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(PathRandom) rng) {
         result.radiance += throughput * s.emission;
         if (vertex > maxBounces) break;
 
-        Frame frame = frameAround(n);
-        vec3 wo = toLocal(frame, -ray.direction);
+        Frame frame = frameFromNormal(n);
+        vec3 wo = localFromWorld(frame, -ray.direction);
         result.radiance += throughput * directLight(p, hit.geometricNormal, frame, s, wo, rng);
 
-        BsdfSample bs = sampleBsdf(s, wo, entering, vec3(next1D(rng), next2D(rng)));
+        BsdfSample bs = sampleBsdf(s, wo, entering, rand3(rng));
         if (maxComponent(bs.weight) <= 0.0) break;
-        throughput *= bs.weight;
-        vec3 wi = toWorld(frame, bs.wi);
-        if (bs.wi.z < 0.0 && !s.thinWalled) attenuation = entering ? s.attenuationCoefficient : vec3(0.0);
+        // Russian roulette on this bounce's weight (its albedo), not on the whole throughput: a
+        // surviving path keeps its throughput, which keeps the estimator's tail short.
         if (vertex >= ROULETTE_START) {
-            float survive = min(maxComponent(throughput), 0.95);
-            if (next1D(rng) >= survive) break;
-            throughput /= survive;
+            float survive = min(maxComponent(bs.weight), 0.95);
+            if (rand1(rng) >= survive) break;
+            bs.weight /= survive;
         }
+        throughput *= bs.weight;
+        vec3 wi = worldFromLocal(frame, bs.wi);
+        if (bs.wi.z < 0.0 && !s.thinWalled) attenuation = entering ? s.attenuationCoefficient : vec3(0.0);
         ray = spawnRay(p, hit.geometricNormal, wi);
     }
     if (uClamp > 0.0) result.radiance = min(result.radiance, vec3(uClamp));
@@ -79,13 +81,13 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(PathRandom) rng) {
 // Debug view: the fraction of a cosine-weighted hemisphere unoccluded within uAoDistance.
 uniform float uAoDistance;
 
-PathResult ambientOcclusion(Ray ray, vec3 viewAxis, INOUT(PathRandom) rng) {
+PathResult ambientOcclusion(Ray ray, vec3 viewAxis, INOUT(Rng) rng) {
     PathResult result = PathResult(vec3(1.0), vec3(1.0), vec3(0.0), -1.0, 0.0);
     Hit hit = traceClosest(ray);
     if (hit.material < 0) return result;
     vec3 p = ray.origin + hit.t * ray.direction;
     vec3 n = dot(ray.direction, hit.shadingNormal) < 0.0 ? hit.shadingNormal : -hit.shadingNormal;
-    vec3 wi = toWorld(frameAround(n), cosineHemisphere(next2D(rng)));
+    vec3 wi = worldFromLocal(frameFromNormal(n), cosineHemisphere(rand2(rng)));
     float visible = occluded(spawnRay(p, hit.geometricNormal, wi), uAoDistance) ? 0.0 : 1.0;
     return PathResult(vec3(visible), vec3(1.0), n, hit.t * dot(ray.direction, viewAxis), hit.objectId);
 }

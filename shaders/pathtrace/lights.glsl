@@ -32,7 +32,7 @@ LightSample sampleLight(int light, vec3 p, vec2 u) {
     vec4 position = lightTexel(light, 2);
     vec4 shine = lightTexel(light, 3);
     if (type == LIGHT_SUN) {
-        vec3 towardsSun = intensity.w < 1.0 ? toWorld(frameAround(-shine.xyz), sampleCone(intensity.w, u)) : -shine.xyz;
+        vec3 towardsSun = intensity.w < 1.0 ? worldFromLocal(frameFromNormal(-shine.xyz), sampleCone(intensity.w, u)) : -shine.xyz;
         return LightSample(towardsSun, RAY_MAX, intensity.rgb);
     }
     vec3 offset = position.xyz - p;

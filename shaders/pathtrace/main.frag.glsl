@@ -1,8 +1,8 @@
 // Path tracing pass: one sample per pixel into four targets (radiance, albedo, normal + depth, id).
 #include "constants.glsl"
-#include "path_random.glsl"
+#include "common/rng.glsl"
 #include "ray.glsl"
-#include "frame.glsl"
+#include "common/frame.glsl"
 #include "scene_buffers.glsl"
 #include "shapes.glsl"
 #include "meshes.glsl"
@@ -27,7 +27,7 @@ out vec4 outObjectId;
 
 void main() {
     uvec2 pixel = uvec2(gl_FragCoord.xy);
-    PathRandom rng = pathRandom(pixel, uSampleIndex, uSeed);
+    Rng rng = rngStart(pixel, uSampleIndex, uSeed);
     Ray ray = cameraRay(pixel, uSampleIndex, uSeed, rng);
     PathResult path = uDebugView == 1 ? ambientOcclusion(ray, cameraForward(), rng) : tracePath(ray, cameraForward(), rng);
     outRadiance = vec4(finiteNonNegative(path.radiance), 1.0);

@@ -11,7 +11,6 @@ struct BsdfSample {
     bool isDelta;
 };
 
-float maxComponent(vec3 v) { return max(v.x, max(v.y, v.z)); }
 
 float ggxAlpha(Surface s) { return s.roughness * s.roughness; }
 float glassProbability(Surface s) { return (1.0 - s.metallic) * s.transmission; }
