@@ -206,6 +206,32 @@ private slots:
         QVERIFY(near(world[2], {0, 1, 0}));  // file +Z (up) -> +Y
     }
 
+    void fbxFileInCentimetresZUpBecomesMetresYUp() {
+        const auto file = kData / "import/tetra_zup_cm.fbx";
+        LoadResult r = readWithAssimp(file, {file});
+        QCOMPARE(totalTriangles(r.scene), std::size_t(4));
+        const auto world = worldPositions(r.scene);
+        QCOMPARE(world.size(), std::size_t(12));
+        // File corners (1,0,0), (0,1,0), (0,0,1) in cm, +Z up and -Y front.
+        auto count = [&](glm::vec3 p) { return std::count_if(world.begin(), world.end(), [&](glm::vec3 v) { return near(v, p); }); };
+        QCOMPARE(count({0.01f, 0, 0}), 3);
+        QCOMPARE(count({0, 0, -0.01f}), 3);
+        QCOMPARE(count({0, 0.01f, 0}), 3);
+        QCOMPARE(count({0, 0, 0}), 3);
+    }
+
+    void threeDsZUpBecomesYUp() {
+        const auto file = kData / "import/tetra.3ds";
+        LoadResult r = readWithAssimp(file, {file});
+        QCOMPARE(totalTriangles(r.scene), std::size_t(4));
+        const auto world = worldPositions(r.scene);
+        auto count = [&](glm::vec3 p) { return std::count_if(world.begin(), world.end(), [&](glm::vec3 v) { return near(v, p); }); };
+        QVERIFY(count({1, 0, 0}) > 0);
+        QVERIFY(count({0, 0, -1}) > 0); // file +Y
+        QVERIFY(count({0, 1, 0}) > 0);  // file +Z (up)
+        QCOMPARE(count({0, 0, 1}), 0);
+    }
+
     void pbrMaterialIsTakenAsItIs() {
         auto ai = zUpCentimetreTriangle();
         aiMaterial& m = *ai->mMaterials[0];
