@@ -1,5 +1,5 @@
 #pragma once
-// Assimp materials -> glTF metallic-roughness (docs/IMPORT.md explains the mapping).
+// Assimp materials -> glTF metallic-roughness (scene/import/README.md explains the choices).
 // Phong/Blinn/Lambert (OBJ, FBX, DAE, 3DS, PLY, STL):
 //   baseColor = diffuse colour (x diffuse texture), metallic = 0,
 //   roughness = sqrt(2 / (shininess + 2)) (the Blinn-Phong exponent <-> Beckmann/GGX width relation;
