@@ -1,5 +1,6 @@
 #include "renderer/gpu_scene/gpu_scene.h"
 
+#include "renderer/cpu_twin/env_sampling.h"
 #include "renderer/gpu_scene/environment_image.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -7,23 +8,30 @@
 namespace glint::renderer {
 namespace {
 
-enum TextureUnit : GLuint { shapeUnit = 0, materialUnit = 1, lightUnit = 2, environmentUnit = 3 };
+enum TextureUnit : GLuint { shapeUnit = 0, materialUnit = 1, lightUnit = 2, environmentUnit = 3, environmentCdfUnit = 4 };
 
 gl::TextureBuffer vec4Buffer(const std::string& what, const std::vector<glm::vec4>& texels) {
     return gl::TextureBuffer(what, GL_RGBA32F, texels.data(), texels.size(), sizeof(glm::vec4));
 }
 
-gl::Texture uploadEnvironment(const EnvironmentImage& image) {
+// Rows go up in image order: row 0 (the top of the image) is t = 0, as equirectFromDirection expects.
+gl::Texture uploadFloatTexture(GLenum internalFormat, GLenum format, int width, int height, const float* data, GLint filter) {
     gl::Texture texture = gl::makeTexture();
     glBindTexture(GL_TEXTURE_2D, texture.get());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, image.width, image.height, 0, GL_RGB, GL_FLOAT, image.rgb.data());
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(internalFormat), width, height, 0, format, GL_FLOAT, data);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT); // longitude wraps around
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     glBindTexture(GL_TEXTURE_2D, 0);
     return texture;
+}
+
+void bindTexture2D(const gl::Texture& texture, GLuint unit, GLint location) {
+    glActiveTexture(GL_TEXTURE0 + unit);
+    glBindTexture(GL_TEXTURE_2D, texture.get());
+    glUniform1i(location, static_cast<GLint>(unit));
 }
 
 } // namespace
@@ -42,7 +50,11 @@ GpuScene::GpuScene(const Scene& scene, const std::filesystem::path& environmentF
       materials_(vec4Buffer("the material buffer", packed_.materials)),
       lights_(vec4Buffer("the light buffer", packed_.lights)) {
     if (!environmentFile.empty()) {
-        environmentMap_ = uploadEnvironment(loadEnvironmentImage(environmentFile));
+        const EnvironmentImage image = loadEnvironmentImage(environmentFile);
+        const auto table = twin::buildEnvironmentSamplingTable(image.width, image.height, image.rgb);
+        environmentMap_ = uploadFloatTexture(GL_RGB32F, GL_RGB, image.width, image.height, image.rgb.data(), GL_LINEAR);
+        environmentCdf_ = uploadFloatTexture(GL_R32F, GL_RED, table.tableWidth, table.tableHeight, table.cdf.data(), GL_NEAREST);
+        environmentSize_ = {image.width, image.height};
         features_.environmentMap = true;
     }
 }
@@ -56,9 +68,9 @@ void GpuScene::bind(const gl::ShaderProgram& program) const {
     const glm::vec3 colour = environment_.color * environment_.intensity;
     glUniform3fv(program.uniform("uEnvironmentColor"), 1, glm::value_ptr(colour));
     if (features_.environmentMap) {
-        glActiveTexture(GL_TEXTURE0 + environmentUnit);
-        glBindTexture(GL_TEXTURE_2D, environmentMap_.get());
-        glUniform1i(program.uniform("uEnvironmentMap"), environmentUnit);
+        bindTexture2D(environmentMap_, environmentUnit, program.uniform("uEnvironmentMap"));
+        bindTexture2D(environmentCdf_, environmentCdfUnit, program.uniform("uEnvironmentCdf"));
+        glUniform2i(program.uniform("uEnvironmentSize"), environmentSize_.x, environmentSize_.y);
         glUniform1f(program.uniform("uEnvironmentIntensity"), environment_.intensity);
         glUniform1f(program.uniform("uEnvironmentRotation"), glm::radians(environment_.rotationDegrees));
     }

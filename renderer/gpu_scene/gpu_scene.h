@@ -23,7 +23,7 @@ public:
     GpuScene(const Scene& scene, const std::filesystem::path& environmentFile);
 
     const SceneFeatures& features() const { return features_; }
-    // Binds the buffers to texture units 0..3 and sets the scene uniforms of `program`.
+    // Binds the buffers to texture units 0..4 and sets the scene uniforms of `program`.
     void bind(const gl::ShaderProgram& program) const;
 
 private:
@@ -34,6 +34,8 @@ private:
     gl::TextureBuffer materials_;
     gl::TextureBuffer lights_;
     gl::Texture environmentMap_;
+    gl::Texture environmentCdf_; // renderer/cpu_twin/env_sampling.h layout
+    glm::ivec2 environmentSize_{0};
 };
 
 } // namespace glint::renderer

@@ -7,20 +7,11 @@
 namespace glint::renderer {
 namespace {
 
-constexpr float thinWalledFlag = 1.0f;
-
 // A node is drawn only if it and every ancestor are visible.
 bool visibleInWorld(const Scene& scene, const Node& node) {
     for (const Node* n = &node; n; n = n->parent ? scene.node(n->parent) : nullptr)
         if (!n->visible) return false;
     return true;
-}
-
-// Beer-Lambert coefficient: colour c is what remains after attenuationDistance.
-glm::vec3 attenuationCoefficient(const Material& m) {
-    if (!std::isfinite(m.attenuationDistance) || m.attenuationDistance <= 0.0f) return glm::vec3(0.0f);
-    const glm::vec3 colour = glm::max(m.attenuationColor, glm::vec3(1e-6f));
-    return -glm::log(colour) / m.attenuationDistance;
 }
 
 void packShape(PackedScene& out, const Shape& shape, const glm::mat4& worldFromLocal, float objectId, int material) {
@@ -47,14 +38,16 @@ void packLight(PackedScene& out, const Light& light, const glm::mat4& worldFromL
 
 } // namespace
 
+// Texels: base colour; emission, roughness; metallic, specular, transmission, IOR; specular colour,
+// thickness (0: thin-walled); attenuation colour, attenuation distance (0: no absorption).
 std::vector<glm::vec4> packMaterial(const Material& m) {
-    const bool thinWalled = m.thicknessFactor <= 0.0f;
+    const bool absorbs = std::isfinite(m.attenuationDistance) && m.attenuationDistance > 0.0f;
     return {m.baseColorFactor,
             glm::vec4(m.emissiveFactor * m.emissiveStrength, glm::clamp(m.roughnessFactor, 0.0f, 1.0f)),
             {glm::clamp(m.metallicFactor, 0.0f, 1.0f), std::max(m.specularFactor, 0.0f),
              glm::clamp(m.transmissionFactor, 0.0f, 1.0f), std::max(m.ior, 1.0f)},
-            glm::vec4(m.specularColorFactor, thinWalled ? thinWalledFlag : 0.0f),
-            glm::vec4(attenuationCoefficient(m), 0.0f)};
+            glm::vec4(m.specularColorFactor, std::max(m.thicknessFactor, 0.0f)),
+            glm::vec4(m.attenuationColor, absorbs ? m.attenuationDistance : 0.0f)};
 }
 
 PackedScene packScene(const Scene& scene) {

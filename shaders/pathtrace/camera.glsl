@@ -1,6 +1,6 @@
 // Primary rays: one sub-pixel jitter per sample from the R2 low-discrepancy sequence, rotated per
 // pixel (Cranley-Patterson) so neighbouring pixels do not share a pattern; a box pixel filter; a thin
-// lens for depth of field. The independent sampler mode replaces R2 by plain hashed uniforms.
+// lens for depth of field (sampling/warp.glsl). The independent sampler mode replaces R2 by plain hashed uniforms.
 uniform mat4 uWorldFromCamera;
 uniform int uOrthographic;   // 0: perspective, 1: orthographic
 uniform vec2 uHalfExtent;    // tan(fov/2) per axis (perspective) or half extents in metres (orthographic)
@@ -20,14 +20,6 @@ vec2 pixelJitter(uvec2 pixel, uint sampleIndex, uint seed, INOUT(Rng) rng) {
     if (uIndependentSampler != 0) return rand2(rng);
     Rng pixelStream = rngStart(pixel, 0xffffffffu, seed);
     return r2Jitter(sampleIndex, rngBits(pixelStream.key, 0u).xy);
-}
-
-vec2 concentricDisk(vec2 u) {
-    vec2 o = 2.0 * u - 1.0;
-    if (o.x == 0.0 && o.y == 0.0) return vec2(0.0);
-    float r = abs(o.x) > abs(o.y) ? o.x : o.y;
-    float phi = abs(o.x) > abs(o.y) ? (PI / 4.0) * (o.y / o.x) : (PI / 2.0) - (PI / 4.0) * (o.x / o.y);
-    return r * vec2(cos(phi), sin(phi));
 }
 
 Ray cameraRay(uvec2 pixel, uint sampleIndex, uint seed, INOUT(Rng) rng) {

@@ -1,6 +1,8 @@
-// The path integrator: next-event estimation at every vertex, BSDF sampling to continue, Russian
-// roulette, and a bounce limit with CONTRACTS.md semantics: bounces = 0 renders emitters and
-// direct light only; each further bounce adds one indirect vertex.
+// The path integrator: next-event estimation at every vertex (punctual lights, and the environment
+// map with multiple importance sampling), BSDF sampling to continue, Russian roulette, and a bounce
+// limit with CONTRACTS.md semantics: bounces = 0 renders emitters and direct light only; each
+// further bounce adds one indirect vertex. Shading frames use the surface's outward normal: the
+// shared BSDF reads the side of wo (wo.z < 0: inside).
 uniform int uMaxBounces;
 uniform float uClamp; // 0: off (unbiased)
 
@@ -10,69 +12,97 @@ const int HARD_PATH_LIMIT = 64; // a guard, not a setting: uMaxBounces is clampe
 struct PathResult {
     vec3 radiance;
     vec3 albedo;    // first hit's base colour (or the environment's radiance)
-    vec3 normal;    // first hit's shading normal, world space
+    vec3 normal;    // first hit's shading normal facing the camera, world space
     float depth;    // along the camera's view axis; -1: nothing hit
     float objectId; // node id of the first hit; 0: nothing
 };
 
-// Direct light from every punctual light, unoccluded, times the BSDF.
-vec3 directLight(vec3 p, vec3 faceNormal, Frame frame, Surface s, vec3 wo, INOUT(Rng) rng) {
+struct Vertex {
+    vec3 position;
+    vec3 faceNormal; // geometric, outward
+    Frame frame;     // around the outward shading normal
+    vec3 wo;         // towards where the ray came from, local
+    SurfaceMaterial material;
+};
+
+vec3 punctualLight(Vertex v, INOUT(Rng) rng) {
     vec3 sum = vec3(0.0);
     for (int light = 0; light < uLightCount; ++light) {
-        LightSample ls = sampleLight(light, p, rand2(rng));
-        vec3 wi = localFromWorld(frame, ls.direction);
+        LightSample ls = sampleLight(light, v.position, rand2(rng));
         float pdf;
-        vec3 f = evalBsdf(s, wo, wi, pdf);
+        vec3 f = bsdfEval(v.material, v.wo, localFromWorld(v.frame, ls.direction), pdf);
         if (maxComponent(f) <= 0.0) continue;
-        if (!occluded(spawnRay(p, faceNormal, ls.direction), ls.distance)) sum += f * ls.irradiance;
+        if (!occluded(spawnRay(v.position, v.faceNormal, ls.direction), ls.distance)) sum += f * ls.irradiance;
     }
     return sum;
+}
+
+// One environment sample, weighted against BSDF sampling by the power heuristic.
+vec3 environmentLight(Vertex v, INOUT(Rng) rng) {
+    vec2 u = rand2(rng);
+    if (!environmentIsSampled()) return vec3(0.0);
+    float lightPdf;
+    vec3 direction = sampleEnvironment(u, lightPdf);
+    if (lightPdf <= 0.0) return vec3(0.0);
+    float bsdfPdf;
+    vec3 f = bsdfEval(v.material, v.wo, localFromWorld(v.frame, direction), bsdfPdf);
+    if (maxComponent(f) <= 0.0 || occluded(spawnRay(v.position, v.faceNormal, direction), RAY_MAX)) return vec3(0.0);
+    return f * environmentRadiance(direction) * (powerHeuristic(lightPdf, bsdfPdf) / lightPdf);
+}
+
+// Weight of an environment contribution found by BSDF sampling (pdf 0: a delta lobe, weight 1).
+float environmentMisWeight(vec3 direction, float bsdfPdf) {
+    if (!environmentIsSampled() || bsdfPdf <= 0.0) return 1.0;
+    return powerHeuristic(bsdfPdf, environmentPdf(direction));
 }
 
 PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng) {
     PathResult result = PathResult(vec3(0.0), vec3(0.0), vec3(0.0), -1.0, 0.0);
     vec3 throughput = vec3(1.0);
     vec3 attenuation = vec3(0.0); // Beer-Lambert sigma of the medium the ray travels in
+    float lastBsdfPdf = 0.0;       // of the sampled direction; 0 for camera rays and delta lobes
     int maxBounces = min(uMaxBounces, HARD_PATH_LIMIT - 1);
-    for (int vertex = 0; vertex <= maxBounces + 1; ++vertex) {
+    for (int depth = 0; depth <= maxBounces + 1; ++depth) {
         Hit hit = traceClosest(ray);
         if (hit.material < 0) {
             vec3 environment = environmentRadiance(ray.direction);
-            result.radiance += throughput * environment;
-            if (vertex == 0) result.albedo = environment;
+            result.radiance += throughput * environment * environmentMisWeight(ray.direction, lastBsdfPdf);
+            if (depth == 0) result.albedo = environment;
             break;
         }
         throughput *= exp(-attenuation * hit.t);
-        Surface s = fetchSurface(hit.material);
-        vec3 p = ray.origin + hit.t * ray.direction;
-        bool entering = dot(ray.direction, hit.geometricNormal) < 0.0;
-        vec3 n = entering ? hit.shadingNormal : -hit.shadingNormal;
-        if (vertex == 0) {
-            result.albedo = s.baseColor;
-            result.normal = n;
+        Vertex v;
+        v.position = ray.origin + hit.t * ray.direction;
+        v.faceNormal = hit.geometricNormal;
+        v.frame = frameFromNormal(hit.shadingNormal);
+        v.wo = localFromWorld(v.frame, -ray.direction);
+        v.material = fetchSurfaceMaterial(hit.material);
+        if (depth == 0) {
+            result.albedo = v.material.baseColor;
+            result.normal = v.wo.z >= 0.0 ? hit.shadingNormal : -hit.shadingNormal;
             result.depth = hit.t * dot(ray.direction, viewAxis);
             result.objectId = hit.objectId;
         }
-        result.radiance += throughput * s.emission;
-        if (vertex > maxBounces) break;
+        result.radiance += throughput * fetchEmission(hit.material);
+        if (depth > maxBounces) break;
 
-        Frame frame = frameFromNormal(n);
-        vec3 wo = localFromWorld(frame, -ray.direction);
-        result.radiance += throughput * directLight(p, hit.geometricNormal, frame, s, wo, rng);
+        result.radiance += throughput * (punctualLight(v, rng) + environmentLight(v, rng));
 
-        BsdfSample bs = sampleBsdf(s, wo, entering, rand3(rng));
-        if (maxComponent(bs.weight) <= 0.0) break;
+        BsdfSample bs;
+        if (!bsdfSample(v.material, v.wo, rand3(rng), bs) || maxComponent(bs.weight) <= 0.0) break;
         // Russian roulette on this bounce's weight (its albedo), not on the whole throughput: a
         // surviving path keeps its throughput, which keeps the estimator's tail short.
-        if (vertex >= ROULETTE_START) {
+        if (depth >= ROULETTE_START) {
             float survive = min(maxComponent(bs.weight), 0.95);
             if (rand1(rng) >= survive) break;
             bs.weight /= survive;
         }
         throughput *= bs.weight;
-        vec3 wi = worldFromLocal(frame, bs.wi);
-        if (bs.wi.z < 0.0 && !s.thinWalled) attenuation = entering ? s.attenuationCoefficient : vec3(0.0);
-        ray = spawnRay(p, hit.geometricNormal, wi);
+        lastBsdfPdf = (bs.lobe & LOBE_SPECULAR) != 0u ? 0.0 : bs.pdf;
+        bool crosses = (bs.wi.z > 0.0) != (v.wo.z > 0.0);
+        if (crosses && !v.material.thinWalled) attenuation = v.wo.z > 0.0 ? attenuationCoefficient(v.material) : vec3(0.0);
+        vec3 wi = worldFromLocal(v.frame, bs.wi);
+        ray = spawnRay(v.position, v.faceNormal, wi);
     }
     if (uClamp > 0.0) result.radiance = min(result.radiance, vec3(uClamp));
     return result;

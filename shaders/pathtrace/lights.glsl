@@ -11,14 +11,6 @@ struct LightSample {
     vec3 irradiance; // at a surface facing the light (before cos)
 };
 
-// Uniform direction in the cone of half angle acos(cosMax) around +Z.
-vec3 sampleCone(float cosMax, vec2 u) {
-    float cosTheta = 1.0 - u.x * (1.0 - cosMax);
-    float sinTheta = sqrt(max(1.0 - cosTheta * cosTheta, 0.0));
-    float phi = TWO_PI * u.y;
-    return vec3(sinTheta * cos(phi), sinTheta * sin(phi), cosTheta);
-}
-
 // KHR_lights_punctual's recommended smooth spot falloff.
 float spotFalloff(vec3 shineDirection, vec3 toSurface, float cosOuter, float cosInner) {
     float scale = 1.0 / max(0.001, cosInner - cosOuter);
@@ -32,7 +24,7 @@ LightSample sampleLight(int light, vec3 p, vec2 u) {
     vec4 position = lightTexel(light, 2);
     vec4 shine = lightTexel(light, 3);
     if (type == LIGHT_SUN) {
-        vec3 towardsSun = intensity.w < 1.0 ? worldFromLocal(frameFromNormal(-shine.xyz), sampleCone(intensity.w, u)) : -shine.xyz;
+        vec3 towardsSun = intensity.w < 1.0 ? worldFromLocal(frameFromNormal(-shine.xyz), uniformCone(u, intensity.w)) : -shine.xyz;
         return LightSample(towardsSun, RAY_MAX, intensity.rgb);
     }
     vec3 offset = position.xyz - p;

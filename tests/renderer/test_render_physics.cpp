@@ -160,8 +160,8 @@ private slots:
 
     // 16x16, 16 spp, seed 6, 16 bounces. A camera inside a glass block (IOR 1.5) looks up at its top
     // face, above which an emitter of radiance 1 hangs. At 30 degrees from the normal (below the
-    // critical angle, 41.8) the emitter shows through with 1 - F; at 60 degrees total internal
-    // reflection traps every path inside the block: exactly 0.
+    // critical angle, 41.8) the emitter shows through with (1 - F) n^2 (radiance grows by n^2 inside a
+    // denser medium); at 60 degrees total internal reflection traps every path inside: exactly 0.
     void totalInternalReflection() {
         const auto renderAt = [&](float degrees) {
             Scene scene;
@@ -176,7 +176,7 @@ private slots:
         const double cosI = std::cos(glm::radians(30.0)), eta = 1.0 / 1.5;
         const double cosT = std::sqrt(1.0 - (1.0 - cosI * cosI) / (eta * eta));
         const double rs = (cosI - eta * cosT) / (cosI + eta * cosT), rp = (eta * cosI - cosT) / (eta * cosI + cosT);
-        const double expected = 1.0 - 0.5 * (rs * rs + rp * rp);
+        const double expected = (1.0 - 0.5 * (rs * rs + rp * rp)) * 1.5 * 1.5;
         const ChannelStats below = channelStats(renderAt(30.0f).radiance, 0);
         QVERIFY2(std::abs(below.mean - expected) < 0.03 * expected, qPrintable(QString("%1 vs %2").arg(below.mean).arg(expected)));
         QCOMPARE(channelStats(renderAt(60.0f).radiance, 0).maximum, 0.0);
