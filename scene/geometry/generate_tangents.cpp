@@ -35,7 +35,8 @@ void storePerVertex(Primitive& p, const std::vector<glm::vec4>& cornerTangents) 
     const std::size_t originalCount = p.positions.size();
     std::vector<bool> taken(originalCount, false);
     std::vector<std::vector<std::uint32_t>> copies(originalCount); // extra vertices made for a vertex
-    p.tangents.assign(originalCount, glm::vec4(0.0f));
+    p.tangents.resize(originalCount);
+    for (std::size_t v = 0; v < originalCount; ++v) p.tangents[v] = mikktspace::fallbackTangent(p.normals[v]); // unused ones
     for (std::size_t c = 0; c < p.indices.size(); ++c) {
         const std::uint32_t v = p.indices[c];
         const glm::vec4& t = cornerTangents[c];
@@ -69,7 +70,11 @@ bool generateTangents(Primitive& p) {
         p.tangents.clear();
         return false;
     }
-    const std::vector<glm::vec4> corners = mikktspace::generate({p.positions, p.normals, p.uv0, p.indices});
+    std::vector<glm::vec4> corners = mikktspace::generate({p.positions, p.normals, p.uv0, p.indices});
+    // glTF's uv origin is the image's top-left, so v runs opposite to the uv space MikkTSpace
+    // assumes; glTF's bitangent = cross(normal, tangent) * w must point along -dP/dv, which is the
+    // MikkTSpace sign negated (as three.js's negateSign and Blender's exporter do).
+    for (glm::vec4& t : corners) t.w = -t.w;
     storePerVertex(p, corners);
     return true;
 }

@@ -43,6 +43,9 @@ void findNeighbours(const std::vector<std::uint32_t>& welded, std::vector<Triang
 std::vector<glm::vec4> cornerTangents(const Input& input, const std::vector<std::uint32_t>& welded,
                                       std::vector<TriangleFrame>& frames);
 
+// Any unit vector orthogonal to the normal, w = +1: for corners whose uvs define no direction.
+glm::vec4 fallbackTangent(const glm::vec3& normal);
+
 // All stages.
 std::vector<glm::vec4> generate(const Input& input);
 

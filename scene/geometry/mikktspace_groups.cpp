@@ -94,13 +94,6 @@ std::optional<glm::vec4> groupTangent(const Input& in, const Group& group, const
     return glm::vec4(tangent, group.orientationPreserving ? 1.0f : -1.0f);
 }
 
-// Any unit vector orthogonal to the normal, for corners whose uvs define no direction.
-glm::vec4 fallbackTangent(const glm::vec3& normal) {
-    const glm::vec3 axis = std::abs(normal.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
-    const glm::vec3 tangent = projectedUnit(axis, unitOrZero(normal));
-    return glm::vec4(tangent, 1.0f);
-}
-
 } // namespace
 
 std::vector<glm::vec4> cornerTangents(const Input& in, const std::vector<std::uint32_t>& welded,
@@ -122,6 +115,12 @@ std::vector<glm::vec4> cornerTangents(const Input& in, const std::vector<std::ui
     for (std::size_t c = 0; c < welded.size(); ++c)
         result[c] = perCorner[c].value_or(anyForVertex[welded[c]].value_or(fallbackTangent(in.normals[welded[c]])));
     return result;
+}
+
+glm::vec4 fallbackTangent(const glm::vec3& normal) {
+    const glm::vec3 axis = std::abs(normal.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+    const glm::vec3 tangent = projectedUnit(axis, unitOrZero(normal));
+    return glm::vec4(tangent, 1.0f);
 }
 
 } // namespace glint::mikktspace

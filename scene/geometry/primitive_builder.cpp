@@ -15,18 +15,25 @@ void addRectangle(PrimitiveBuilder& b, const glm::vec3& centre, const glm::vec3&
     b.quad(lowLow, highLow, highHigh, lowHigh);
 }
 
-void addDisk(PrimitiveBuilder& b, const glm::vec3& centre, const glm::vec3& u, const glm::vec3& v, float radius,
-             int segments) {
-    const glm::vec3 normal = glm::cross(u, v);
+glm::vec3 aroundY(int j, int segments) {
+    const float angle = 2.0f * glm::pi<float>() * float(j % segments) / float(segments);
+    return {std::cos(angle), 0.0f, -std::sin(angle)};
+}
+
+// Seen from below the rim runs the other way round, and uv is mirrored so the texture is not.
+void addDiskXZ(PrimitiveBuilder& b, const glm::vec3& centre, float radius, int segments, bool facingUp) {
+    const glm::vec3 normal(0.0f, facingUp ? 1.0f : -1.0f, 0.0f);
     const std::uint32_t middle = b.vertex(centre, normal, {0.5f, 0.5f});
     const std::uint32_t first = std::uint32_t(b.primitive.positions.size());
     for (int j = 0; j < segments; ++j) {
-        const float angle = 2.0f * glm::pi<float>() * float(j) / float(segments);
-        const float c = std::cos(angle), s = std::sin(angle);
-        b.vertex(centre + radius * (c * u + s * v), normal, {0.5f + 0.5f * c, 0.5f - 0.5f * s});
+        const glm::vec3 unit = aroundY(j, segments);
+        b.vertex(centre + radius * unit, normal, {0.5f + 0.5f * unit.x, 0.5f + (facingUp ? 0.5f : -0.5f) * unit.z});
     }
-    for (int j = 0; j < segments; ++j)
-        b.triangle(middle, first + std::uint32_t(j), first + std::uint32_t((j + 1) % segments));
+    for (int j = 0; j < segments; ++j) {
+        const auto here = first + std::uint32_t(j), next = first + std::uint32_t((j + 1) % segments);
+        if (facingUp) b.triangle(middle, here, next);
+        else b.triangle(middle, next, here);
+    }
 }
 
 } // namespace glint

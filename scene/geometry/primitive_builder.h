@@ -27,9 +27,12 @@ struct PrimitiveBuilder {
 // cross(u, v). uv (0, 0) at the -u, +v corner (glTF's top left when v points up).
 void addRectangle(PrimitiveBuilder& b, const glm::vec3& centre, const glm::vec3& u, const glm::vec3& v);
 
-// A disc of `segments` triangles around `centre` in the plane orthogonal to `normal`, with
-// `radius`; u and v are unit axes of that plane with cross(u, v) = normal.
-void addDisk(PrimitiveBuilder& b, const glm::vec3& centre, const glm::vec3& u, const glm::vec3& v, float radius,
-             int segments);
+// The unit circle in the XZ plane, counter-clockwise seen from +Y, starting at +X. Step j and
+// j + segments give the same bits, so seams and shared rims match exactly (watertight meshes).
+glm::vec3 aroundY(int j, int segments);
+
+// A disc of `segments` triangles in the plane y = centre.y with `radius`, facing +Y or -Y.
+// Its rim vertices are bit-identical to centre + radius * aroundY(j, segments).
+void addDiskXZ(PrimitiveBuilder& b, const glm::vec3& centre, float radius, int segments, bool facingUp);
 
 } // namespace glint

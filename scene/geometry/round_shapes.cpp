@@ -9,10 +9,13 @@ namespace glint {
 
 namespace {
 
-// Around +Y counter-clockwise seen from above, starting at +X.
-glm::vec3 around(float turn) {
-    const float angle = 2.0f * glm::pi<float>() * turn;
-    return {std::cos(angle), 0.0f, -std::sin(angle)};
+// A point of the unit sphere: ring i of `rings` from the north pole, step j around Y. The poles
+// are exact, so the triangles meeting there share their corner bit for bit.
+glm::vec3 onSphere(int i, int rings, int j, int segments) {
+    if (i == 0) return {0.0f, 1.0f, 0.0f};
+    if (i == rings) return {0.0f, -1.0f, 0.0f};
+    const float polar = glm::pi<float>() * float(i) / float(rings);
+    return std::sin(polar) * aroundY(j, segments) + glm::vec3(0.0f, std::cos(polar), 0.0f);
 }
 
 } // namespace
@@ -22,11 +25,9 @@ void addSphere(PrimitiveBuilder& b, float radius, int segments) {
     const auto rowStart = [&](int ring) { return std::uint32_t(ring * (segments + 1)); };
     const std::uint32_t base = std::uint32_t(b.primitive.positions.size());
     for (int i = 0; i <= rings; ++i) {
-        const float polar = glm::pi<float>() * float(i) / float(rings);
         for (int j = 0; j <= segments; ++j) {
-            const float turn = float(j) / float(segments);
-            const glm::vec3 direction = std::sin(polar) * around(turn) + glm::vec3(0.0f, std::cos(polar), 0.0f);
-            b.vertex(radius * direction, direction, {turn, float(i) / float(rings)});
+            const glm::vec3 direction = onSphere(i, rings, j, segments);
+            b.vertex(radius * direction, direction, {float(j) / float(segments), float(i) / float(rings)});
         }
     }
     for (int i = 0; i < rings; ++i)
@@ -43,16 +44,16 @@ void addCylinder(PrimitiveBuilder& b, float radius, float height, int segments) 
     const std::uint32_t base = std::uint32_t(b.primitive.positions.size());
     for (int j = 0; j <= segments; ++j) {
         const float turn = float(j) / float(segments);
-        const glm::vec3 out = around(turn);
-        b.vertex(radius * out + glm::vec3(0.0f, -half, 0.0f), out, {turn, 1.0f});
-        b.vertex(radius * out + glm::vec3(0.0f, half, 0.0f), out, {turn, 0.0f});
+        const glm::vec3 out = aroundY(j, segments);
+        b.vertex(glm::vec3(0.0f, -half, 0.0f) + radius * out, out, {turn, 1.0f});
+        b.vertex(glm::vec3(0.0f, half, 0.0f) + radius * out, out, {turn, 0.0f});
     }
     for (int j = 0; j < segments; ++j) {
         const std::uint32_t bottom = base + 2 * std::uint32_t(j), top = bottom + 1;
         b.quad(bottom, bottom + 2, top + 2, top);
     }
-    addDisk(b, {0.0f, half, 0.0f}, {1, 0, 0}, {0, 0, -1}, radius, segments);
-    addDisk(b, {0.0f, -half, 0.0f}, {1, 0, 0}, {0, 0, 1}, radius, segments);
+    addDiskXZ(b, {0.0f, half, 0.0f}, radius, segments, true);
+    addDiskXZ(b, {0.0f, -half, 0.0f}, radius, segments, false);
 }
 
 } // namespace glint

@@ -35,7 +35,7 @@ Primitive tessellateShape(const Shape& shape, int segments, float groundExtent) 
     switch (shape.kind) {
     case ShapeKind::Sphere: addSphere(b, shape.radius, segments); break;
     case ShapeKind::Quad: addUpFacingRectangle(b, shape.size.x, shape.size.z); break;
-    case ShapeKind::Disk: addDisk(b, glm::vec3(0.0f), kX, -kZ, shape.radius, segments); break;
+    case ShapeKind::Disk: addDiskXZ(b, glm::vec3(0.0f), shape.radius, segments, true); break;
     case ShapeKind::Box: addBox(b, shape.size); break;
     case ShapeKind::Cylinder: addCylinder(b, shape.radius, shape.height, segments); break;
     case ShapeKind::GroundPlane: addUpFacingRectangle(b, groundExtent, groundExtent); break;
