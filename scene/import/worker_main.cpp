@@ -100,6 +100,13 @@ void limitAddressSpace(std::uint64_t bytes) {
     ::setrlimit(RLIMIT_AS, &limit);
 }
 
+// Some importers print to stdout; the reply gets a descriptor of its own so nothing else lands in it.
+int takeStdoutForReply() {
+    const int replyFd = ::dup(1);
+    ::dup2(2, 1);
+    return replyFd;
+}
+
 glint::WorkerReply importToReply(const WorkerArguments& args) {
     glint::WorkerReply reply;
     try {
@@ -133,8 +140,10 @@ int main(int argc, char** argv) {
         std::cerr << "usage: glint-import-worker [--max-memory BYTES] [--max-triangles N] FILE\n";
         return 2;
     }
+    const int replyFd = takeStdoutForReply();
+    if (replyFd < 0) return 4;
     limitAddressSpace(args->maxMemoryBytes);
     const glint::WorkerReply reply = importToReply(*args);
-    if (!writeAll(1, glint::encodeWorkerReply(reply))) return 4;
+    if (!writeAll(replyFd, glint::encodeWorkerReply(reply))) return 4;
     return reply.errorCode.empty() ? 0 : 1;
 }
