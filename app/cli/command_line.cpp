@@ -22,6 +22,7 @@ CLI::App makeParser(Action& action) {
     app.fallthrough(false);
     addInfoCommand(app, action);
     addConvertCommand(app, action);
+    addRenderCommand(app, action);
     return app;
 }
 

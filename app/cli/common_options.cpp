@@ -1,0 +1,53 @@
+#include "common_options.h"
+
+#include <charconv>
+
+namespace glint::cli {
+
+namespace {
+
+constexpr int kMaxDimension = 16384;
+
+int parseDimension(std::string_view text, const std::string& whole) {
+    int value = 0;
+    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (ec != std::errc() || end != text.data() + text.size() || value < 1 || value > kMaxDimension)
+        throw CLI::ValidationError("--size", "expected WxH with 1 <= W, H <= 16384, got '" + whole + "'");
+    return value;
+}
+
+const char* kTonemappers = "aces, neutral, none";
+const char* kConfigs = "baseline, realistic, full, heavy, accumulate, reference";
+
+} // namespace
+
+Size parseSize(const std::string& text) {
+    auto x = text.find_first_of("xX");
+    if (x == std::string::npos) throw CLI::ValidationError("--size", "expected WxH, got '" + text + "'");
+    return {parseDimension(std::string_view(text).substr(0, x), text),
+            parseDimension(std::string_view(text).substr(x + 1), text)};
+}
+
+void addCommonRenderOptions(CLI::App& cmd, CommonRenderOptions& o) {
+    cmd.add_option_function<std::string>("--size", [&o](const std::string& s) { o.size = parseSize(s); },
+                                         "Image size WxH in pixels (default: the project's render size)");
+    cmd.add_option("--spp", o.spp, "Samples per pixel (per frame with --config; default: the project's)")
+        ->check(CLI::Range(1, 1 << 20));
+    cmd.add_option("--seed", o.seed, "Random seed (default: 0)");
+    cmd.add_option("--bounces", o.bounces, "Maximum path length in bounces; 0 = emitters and direct light only "
+                                          "(default: the project's)")
+        ->check(CLI::Range(0, 1024));
+    cmd.add_option("--config", o.config, std::string("Configuration, case-insensitive: ") + kConfigs +
+                                            " (default: the project's)")
+        ->transform(CLI::IsMember({"baseline", "realistic", "full", "heavy", "accumulate", "reference"},
+                                  CLI::ignore_case));
+    cmd.add_option("--camera", o.camera, "Camera by glTF node name, else camera name (default: the active camera)");
+    cmd.add_option("--exposure", o.exposure, "Exposure in stops, + brighter, added to the camera's (default: 0)");
+    cmd.add_option("--tonemap", o.tonemap, std::string("Tonemapper: ") + kTonemappers + " (default: the project's)")
+        ->transform(CLI::IsMember({"aces", "neutral", "none"}, CLI::ignore_case));
+    cmd.add_option("--env", o.env, "Environment map (.hdr, .exr), anywhere on disk (default: the project's)");
+    cmd.add_flag("--require-gpu", o.requireGpu, "Fail instead of falling back to software rendering (default: off)");
+    cmd.add_flag("--strict", o.strict, "Treat warnings as failures (default: off)");
+}
+
+} // namespace glint::cli

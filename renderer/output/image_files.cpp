@@ -1,0 +1,138 @@
+#include "renderer/output/image_files.h"
+
+#include "scene/core/diagnostics.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <stdexcept>
+#include <system_error>
+
+namespace glint::renderer {
+
+namespace {
+
+std::string lower(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return s;
+}
+
+// Interleaves the beauty pass and the requested AOVs into one float buffer with EXR channel names.
+struct Planes {
+    std::vector<std::string> names;
+    std::vector<float> pixels;
+};
+
+Planes exrPlanes(const RenderOutput& img, const ExrLayers& layers) {
+    Planes p;
+    p.names = {"R", "G", "B", "A"};
+    if (layers.albedo) p.names.insert(p.names.end(), {"albedo.R", "albedo.G", "albedo.B"});
+    if (layers.normal) p.names.insert(p.names.end(), {"N.X", "N.Y", "N.Z"});
+    if (layers.depth) p.names.push_back("Z");
+    if (layers.objectId) p.names.push_back("id");
+    const std::size_t count = std::size_t(img.width) * std::size_t(img.height);
+    p.pixels.reserve(count * p.names.size());
+    for (std::size_t i = 0; i < count; ++i) {
+        p.pixels.insert(p.pixels.end(), img.radiance.begin() + std::ptrdiff_t(i * 4), img.radiance.begin() + std::ptrdiff_t(i * 4 + 4));
+        if (layers.albedo) p.pixels.insert(p.pixels.end(), img.albedo.begin() + std::ptrdiff_t(i * 3), img.albedo.begin() + std::ptrdiff_t(i * 3 + 3));
+        if (layers.normal) p.pixels.insert(p.pixels.end(), img.normal.begin() + std::ptrdiff_t(i * 3), img.normal.begin() + std::ptrdiff_t(i * 3 + 3));
+        if (layers.depth) p.pixels.push_back(img.depth[i]);
+        if (layers.objectId) p.pixels.push_back(img.objectId[i]);
+    }
+    return p;
+}
+
+void writeWithOiio(const std::filesystem::path& target, const std::filesystem::path& temp, const OIIO::ImageSpec& spec,
+                   const void* pixels) {
+    // OIIO picks the format from the name, so the temporary keeps the extension.
+    auto out = OIIO::ImageOutput::create(target.extension().string());
+    if (!out) throw FileError(target.string(), "image-format", "no writer for this format: " + OIIO::geterror());
+    if (!out->open(temp.string(), spec) || !out->write_image(spec.format, pixels) || !out->close())
+        throw FileError(target.string(), "write-failed", "cannot write image: " + out->geterror());
+}
+
+std::filesystem::path temporaryNameFor(const std::filesystem::path& file) {
+    // A leading dot and a ".partial" infix: never matches a frame pattern or the final name.
+    std::string name = file.stem().string();
+    name.insert(0, 1, '.');
+    name.append(".partial").append(file.extension().string());
+    return file.parent_path() / name;
+}
+
+void publish(const std::filesystem::path& temp, const std::filesystem::path& file) {
+    std::error_code ec;
+    std::filesystem::rename(temp, file, ec);
+    if (ec) {
+        std::filesystem::remove(temp, ec);
+        throw FileError(file.string(), "write-failed", "cannot move the finished image into place");
+    }
+}
+
+OIIO::ImageSpec specFor(const RenderOutput& img, ImageFormat format, const Planes* planes) {
+    if (format == ImageFormat::Exr) {
+        OIIO::ImageSpec spec(img.width, img.height, int(planes->names.size()), OIIO::TypeDesc::FLOAT);
+        spec.channelnames = planes->names;
+        spec.alpha_channel = 3;
+        spec.z_channel = -1;
+        spec.attribute("compression", "zip");
+        return spec;
+    }
+    OIIO::ImageSpec spec(img.width, img.height, 4, OIIO::TypeDesc::UINT8);
+    spec.alpha_channel = 3;
+    if (format == ImageFormat::Jpeg) spec.attribute("Compression", "jpeg:95");
+    spec.attribute("oiio:ColorSpace", "sRGB");
+    return spec;
+}
+
+} // namespace
+
+ImageFormat imageFormatFor(const std::filesystem::path& file) {
+    const std::string ext = lower(file.extension().string());
+    if (ext == ".exr") return ImageFormat::Exr;
+    if (ext == ".png") return ImageFormat::Png;
+    if (ext == ".jpg" || ext == ".jpeg") return ImageFormat::Jpeg;
+    if (ext == ".tif" || ext == ".tiff") return ImageFormat::Tiff;
+    throw std::invalid_argument("unsupported image format '" + ext + "' (use .exr, .png, .jpg or .tif)");
+}
+
+ExrLayers parseAovList(const std::string& list) {
+    const std::string l = lower(list);
+    if (l == "all") return {};
+    ExrLayers none{false, false, false, false};
+    if (l == "none") return none;
+    std::size_t start = 0;
+    while (start <= l.size()) {
+        std::size_t comma = std::min(l.find(',', start), l.size());
+        const std::string item = l.substr(start, comma - start);
+        if (item == "albedo") none.albedo = true;
+        else if (item == "normal") none.normal = true;
+        else if (item == "depth") none.depth = true;
+        else if (item == "id") none.objectId = true;
+        else throw std::invalid_argument("unknown AOV '" + item + "' (use all, none or a list of albedo, normal, depth, id)");
+        start = comma + 1;
+    }
+    return none;
+}
+
+void writeRenderImage(const std::filesystem::path& file, const RenderOutput& img, const ExrLayers& layers,
+                      const ImageMetadata& metadata) {
+    const ImageFormat format = imageFormatFor(file);
+    const std::filesystem::path temp = temporaryNameFor(file);
+    Planes planes;
+    if (format == ImageFormat::Exr) planes = exrPlanes(img, layers);
+    OIIO::ImageSpec spec = specFor(img, format, &planes);
+    for (const auto& [key, value] : metadata) spec.attribute("glint:" + key, value);
+    try {
+        writeWithOiio(file, temp, spec, format == ImageFormat::Exr ? static_cast<const void*>(planes.pixels.data())
+                                                                     : static_cast<const void*>(img.tonemapped.data()));
+    } catch (...) {
+        std::error_code ec;
+        std::filesystem::remove(temp, ec);
+        throw;
+    }
+    publish(temp, file);
+}
+
+} // namespace glint::renderer

@@ -1,0 +1,37 @@
+#pragma once
+// Writing rendered images (CONTRACTS.md "Images"):
+// - EXR: 32-bit float, ZIP, linear Rec.709; beauty R,G,B,A (A = coverage) and AOVs albedo.R/G/B,
+//   N.X/Y/Z, Z, id in the same file, with metadata.
+// - PNG/JPEG/TIFF: the tonemapped sRGB image, 8 bits.
+// Every file is written under a temporary name in the target folder and renamed into place, so a
+// crash or a full disk never leaves a partial file under the final name.
+#include "renderer/offline_render.h"
+
+#include <filesystem>
+#include <map>
+#include <string>
+
+namespace glint::renderer {
+
+enum class ImageFormat { Exr, Png, Jpeg, Tiff };
+
+// From the extension (case-insensitive); throws std::invalid_argument naming the accepted ones.
+ImageFormat imageFormatFor(const std::filesystem::path& file);
+
+struct ExrLayers {
+    bool albedo = true;
+    bool normal = true;
+    bool depth = true;
+    bool objectId = true;
+};
+
+// Parses --aovs: "all", "none" or a comma list of albedo, normal, depth, id.
+ExrLayers parseAovList(const std::string& list);
+
+using ImageMetadata = std::map<std::string, std::string>; // written as string attributes "glint:<key>"
+
+// Throws FileError(file, ...) when the file cannot be written.
+void writeRenderImage(const std::filesystem::path& file, const RenderOutput& image, const ExrLayers& layers,
+                      const ImageMetadata& metadata);
+
+} // namespace glint::renderer
