@@ -25,6 +25,18 @@ struct RenderOptions {
     CommonRenderOptions common;
 };
 
+// A CLI11 validator from a parser that throws std::invalid_argument: its message becomes the usage error.
+std::function<std::string(std::string&)> rejection(std::function<void(const std::string&)> parse) {
+    return [parse](std::string& value) -> std::string {
+        try {
+            parse(value);
+            return {};
+        } catch (const std::invalid_argument& e) {
+            return e.what();
+        }
+    };
+}
+
 // One line, rewritten in place, at most ~100 times per render.
 void printProgress(int done, int total) {
     if (total < 100 || done % (total / 100) == 0 || done == total)
@@ -36,7 +48,7 @@ int runRender(const RenderOptions& o) {
     LoadResult loaded = openSceneFile(o.scene);
     if (reportWarnings(loaded.warnings, o.common.strict)) return kFailure;
     const auto layers = renderer::parseAovList(o.aovs);
-    renderer::imageFormatFor(o.out); // refuse an unknown extension before rendering
+    renderer::checkOutputWritable(o.out); // before a long render, not after
     if (o.time) poseSceneAt(loaded.scene, *o.time);
     RenderPlan plan = planRender(loaded.scene, o.scene, o.common);
     if (o.time) plan.metadata["time"] = formatNumber(*o.time);
@@ -61,8 +73,11 @@ void addRenderCommand(CLI::App& app, Action& action) {
     CLI::App* cmd = app.add_subcommand("render", "Render a still headless: EXR (linear radiance + AOVs) or "
                                                  "PNG/JPEG/TIFF (tonemapped sRGB).");
     cmd->add_option("SCENE", options->scene, "Scene: .gltf, .glb or .glint.json")->required();
-    cmd->add_option("--out", options->out, "Output image: .exr, .png, .jpg or .tif")->required();
-    cmd->add_option("--aovs", options->aovs, "EXR layers: all, none, or a list of albedo,normal,depth,id (default: all)");
+    cmd->add_option("--out", options->out, "Output image: .exr, .png, .jpg or .tif")
+        ->required()
+        ->check(CLI::Validator(rejection([](const std::string& v) { renderer::imageFormatFor(v); }), "FILE", "image"));
+    cmd->add_option("--aovs", options->aovs, "EXR layers: all, none, or a list of albedo,normal,depth,id (default: all)")
+        ->check(CLI::Validator(rejection([](const std::string& v) { renderer::parseAovList(v); }), "LIST", "aovs"));
     cmd->add_option("--time", options->time, "Render the scene at this time in seconds: camera path and node "
                                              "animations (default: the scene as stored)");
     addCommonRenderOptions(*cmd, options->common);

@@ -10,6 +10,8 @@
 #include <stdexcept>
 #include <system_error>
 
+#include <unistd.h>
+
 namespace glint::renderer {
 
 namespace {
@@ -114,6 +116,15 @@ ExrLayers parseAovList(const std::string& list) {
         start = comma + 1;
     }
     return none;
+}
+
+void checkOutputWritable(const std::filesystem::path& file) {
+    const std::filesystem::path folder = file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
+    std::error_code ec;
+    if (!std::filesystem::is_directory(folder, ec))
+        throw FileError(file.string(), "no-folder", "the output folder does not exist");
+    if (::access(folder.c_str(), W_OK) != 0)
+        throw FileError(file.string(), "not-writable", "the output folder is not writable");
 }
 
 void writeRenderImage(const std::filesystem::path& file, const RenderOutput& img, const ExrLayers& layers,

@@ -30,6 +30,10 @@ ExrLayers parseAovList(const std::string& list);
 
 using ImageMetadata = std::map<std::string, std::string>; // written as string attributes "glint:<key>"
 
+// Fails early (FileError naming the file) when the folder of `file` does not exist or is not writable,
+// so a long render is not wasted on an output that cannot be saved.
+void checkOutputWritable(const std::filesystem::path& file);
+
 // Throws FileError(file, ...) when the file cannot be written.
 void writeRenderImage(const std::filesystem::path& file, const RenderOutput& image, const ExrLayers& layers,
                       const ImageMetadata& metadata);
