@@ -1,0 +1,95 @@
+#pragma once
+// JSON forms of the scene's value types, for command logs. Not a file format: glTF and the
+// project file are. Numbers keep every bit (nlohmann writes doubles as shortest round-trip
+// decimals); the one infinite default (Material::attenuationDistance) is written as a string.
+#include "scene/core/scene.h"
+
+#include <nlohmann/json.hpp>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+namespace nlohmann {
+
+template <glm::length_t L, class T, glm::qualifier Q>
+struct adl_serializer<glm::vec<L, T, Q>> {
+    static void to_json(json& j, const glm::vec<L, T, Q>& v) {
+        j = json::array();
+        for (glm::length_t i = 0; i < L; ++i) j.push_back(v[i]);
+    }
+    static void from_json(const json& j, glm::vec<L, T, Q>& v) {
+        if (!j.is_array() || j.size() != static_cast<std::size_t>(L)) throw std::invalid_argument("vector of wrong size");
+        for (glm::length_t i = 0; i < L; ++i) v[i] = j.at(static_cast<std::size_t>(i)).get<T>();
+    }
+};
+
+// Quaternions as glTF writes them: [x, y, z, w].
+template <class T, glm::qualifier Q>
+struct adl_serializer<glm::qua<T, Q>> {
+    static void to_json(json& j, const glm::qua<T, Q>& q) { j = json::array({q.x, q.y, q.z, q.w}); }
+    static void from_json(const json& j, glm::qua<T, Q>& q) {
+        if (!j.is_array() || j.size() != 4) throw std::invalid_argument("quaternion needs 4 numbers");
+        q = glm::qua<T, Q>(j[3].get<T>(), j[0].get<T>(), j[1].get<T>(), j[2].get<T>());
+    }
+};
+
+template <class Tag>
+struct adl_serializer<glint::Id<Tag>> {
+    static void to_json(json& j, glint::Id<Tag> id) { j = id.value; }
+    static void from_json(const json& j, glint::Id<Tag>& id) { id = glint::Id<Tag>{j.get<std::uint32_t>()}; }
+};
+
+} // namespace nlohmann
+
+namespace glint {
+
+NLOHMANN_JSON_SERIALIZE_ENUM(ShapeKind, {{ShapeKind::Sphere, "sphere"}, {ShapeKind::Quad, "quad"},
+                                         {ShapeKind::Disk, "disk"}, {ShapeKind::Box, "box"},
+                                         {ShapeKind::Cylinder, "cylinder"}, {ShapeKind::GroundPlane, "groundPlane"}})
+NLOHMANN_JSON_SERIALIZE_ENUM(LightType, {{LightType::Sun, "sun"}, {LightType::Point, "point"}, {LightType::Spot, "spot"}})
+NLOHMANN_JSON_SERIALIZE_ENUM(Projection, {{Projection::Perspective, "perspective"}, {Projection::Orthographic, "orthographic"}})
+NLOHMANN_JSON_SERIALIZE_ENUM(RotationInterpolation, {{RotationInterpolation::Slerp, "slerp"}, {RotationInterpolation::Squad, "squad"}})
+NLOHMANN_JSON_SERIALIZE_ENUM(AlphaMode, {{AlphaMode::Opaque, "opaque"}, {AlphaMode::Mask, "mask"}, {AlphaMode::Blend, "blend"}})
+NLOHMANN_JSON_SERIALIZE_ENUM(LightUnits, {{LightUnits::Blender, "blender"}, {LightUnits::Raw, "raw"}})
+NLOHMANN_JSON_SERIALIZE_ENUM(Tonemapper, {{Tonemapper::None, "none"}, {Tonemapper::AcesFitted, "acesFitted"},
+                                          {Tonemapper::PbrNeutral, "pbrNeutral"}})
+
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Transform, translation, rotation, scale)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(MeshInstance, mesh)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Shape, kind, radius, size, height, material)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Light, type, color, intensity, range, innerConeAngle, outerConeAngle,
+                                   angularDiameter, radius)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CameraKey, time, position, orientation, yfov, focusDistance, lensRadius)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CameraPath, keys, rotation, constantSpeed)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Camera, projection, yfov, aspectRatio, znear, zfar, xmag, ymag, lensRadius,
+                                   focusDistance, exposure, path)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(TextureTransform, offset, rotation, scale, texCoord)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(TextureRef, texture, texCoord, scale, transform, unknown)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Primitive, positions, normals, tangents, uv0, uv1, colors, indices, material,
+                                   unknown)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Mesh, name, primitives, unknown)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Image, name, uri, mimeType, encoded, width, height, missing, unknown)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Sampler, name, magFilter, minFilter, wrapS, wrapT, unknown)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Texture, name, image, sampler, unknown)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Environment, file, color, intensity, rotationDegrees)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(RenderSettings, configuration, width, height, spp, bounces, seed, exposure,
+                                   tonemapper, clamp)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Timeline, start, end, fpsNumerator, fpsDenominator)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(OutputSettings, path, aovs, codec)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(ProjectSettings, render, environment, activeCamera, timeline, output,
+                                   lightUnits, unknown)
+
+// Hand-written: attenuationDistance defaults to infinity, which JSON numbers cannot hold.
+void to_json(nlohmann::json& j, const Material& material);
+void from_json(const nlohmann::json& j, Material& material);
+
+// {"kind": "none" | "mesh" | "shape" | "light" | "camera", "value": ...}
+void to_json(nlohmann::json& j, const Component& component);
+void from_json(const nlohmann::json& j, Component& component);
+
+// A node's own content (id, name, transform, visibility, component, unknown); the hierarchy
+// (parent, children) belongs to the command that places the node.
+void to_json(nlohmann::json& j, const Node& node);
+void from_json(const nlohmann::json& j, Node& node);
+
+} // namespace glint
