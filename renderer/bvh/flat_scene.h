@@ -12,6 +12,7 @@ namespace glint::bvh {
 
 struct FlatMeshRange {
     std::uint32_t rootNode = 0;      // absolute node index of this mesh's BVH root
+    std::uint32_t nodeCount = 0;     // its nodes are rootNode .. rootNode + nodeCount - 1
     std::uint32_t firstSlot = 0;     // its first triangle slot
     std::uint32_t firstVertex = 0;   // its first vertex in the scene's vertex attribute arrays
     std::uint32_t triangleCount = 0;
@@ -32,6 +33,7 @@ struct FlatScene {
     std::vector<glm::uvec4> triangleVertices; // uBvhTriangleVertices
     std::vector<glm::uvec4> instances;        // uBvhInstances
     std::int32_t topLevelRoot = -1;           // uBvhTopLevelRoot; -1: no instances
+    std::uint32_t meshNodeCount = 0;          // nodes before the top level
     std::vector<FlatMeshRange> meshes;
     std::vector<std::uint32_t> slotTriangle;  // CPU only: slot -> triangle index within its mesh
     friend bool operator==(const FlatScene&, const FlatScene&) = default;

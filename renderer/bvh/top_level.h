@@ -19,6 +19,8 @@ struct Instance {
 };
 
 struct TopLevel {
+    // The instances there is something to hit in, in input order: those of empty meshes and those
+    // with singular or non-finite transforms are left out.
     std::vector<Instance> instances;
     std::vector<Aabb> worldBounds; // per instance
     Bvh bvh;                       // leaves hold one instance each
