@@ -59,7 +59,7 @@ double ArcLengthTable::timeAtDistance(double distance) const {
         (error > 0.0 ? high : low) = t;
         const double speed = speedAt(t);
         const double next = speed > 0.0 ? t - error / speed : 0.5 * (low + high);
-        t = (next > low && next < high) ? next : 0.5 * (low + high); // stay inside the bracket
+        t = (next >= low && next <= high) ? next : 0.5 * (low + high); // stay inside the bracket
     }
     return t;
 }
