@@ -1,0 +1,34 @@
+// The flattened two-level BVH: texture buffers and fetch helpers. Layout, texel by texel, in
+// renderer/bvh/bvh_layout.h (the contract with renderer/bvh/flatten.cpp).
+uniform samplerBuffer uBvhNodeBounds;         // RGBA32F, 2 texels per node: min, max
+uniform usamplerBuffer uBvhNodeLinks;         // RGBA32UI, 1 texel per node: (first, count, 0, 0)
+uniform samplerBuffer uBvhTrianglePositions;  // RGBA32F, 3 texels per triangle slot
+uniform usamplerBuffer uBvhTriangleVertices;  // RGBA32UI, 1 texel per slot: (v0, v1, v2, material)
+uniform usamplerBuffer uBvhInstances;         // RGBA32UI, 4 texels per instance
+uniform int uBvhTopLevelRoot;                 // -1: no instances
+
+const int BVH_STACK_SIZE = 64;      // kStackSize: per level; validation refuses deeper trees
+const int BVH_MAX_STEPS = 8192;     // kMaxTraversalSteps: over both levels, so a NaN ray ends
+const uint BVH_INSTANCE_MESH = 0u;
+const uint BVH_INSTANCE_SHAPE = 1u;
+const uint BVH_INSTANCE_MIRRORED = 1u;
+
+uvec4 bvhNodeLink(int node) { return texelFetch(uBvhNodeLinks, node); }
+
+vec3 bvhTrianglePosition(int slot, int k) { return texelFetch(uBvhTrianglePositions, 3 * slot + k).xyz; }
+
+// (v0, v1, v2, material): vertex indices into the scene's vertex attribute buffers.
+uvec4 bvhTriangleVertices(int slot) { return texelFetch(uBvhTriangleVertices, slot); }
+
+// (kind, target, objectId, flags)
+uvec4 bvhInstanceInfo(int instance) { return texelFetch(uBvhInstances, 4 * instance + 3); }
+
+// Row r of the instance's localFromWorld.
+vec4 bvhInstanceRow(int instance, int r) { return uintBitsToFloat(texelFetch(uBvhInstances, 4 * instance + r)); }
+
+// A mesh-local normal in world space: the transpose of localFromWorld, then normalised.
+vec3 bvhNormalToWorld(int instance, vec3 localNormal) {
+    vec3 world = localNormal.x * bvhInstanceRow(instance, 0).xyz + localNormal.y * bvhInstanceRow(instance, 1).xyz +
+                 localNormal.z * bvhInstanceRow(instance, 2).xyz;
+    return normalize(world);
+}
