@@ -39,5 +39,6 @@ void main() {
     outNormalDepth = vec4(normal, firstSample(uPreviousNormalDepth, uSampleNormalDepth, pixel).w);
     outObjectId = firstSample(uPreviousObjectId, uSampleObjectId, pixel);
     vec4 radiance = texelFetch(uSampleRadiance, pixel, 0);
-    outRadianceSquared = runningMean(texelFetch(uPreviousRadianceSquared, pixel, 0), radiance * radiance);
+    // Squares of huge (finite) radiance would overflow to Inf: saturate at the largest float.
+    outRadianceSquared = runningMean(texelFetch(uPreviousRadianceSquared, pixel, 0), min(radiance * radiance, vec4(3.0e38)));
 }
