@@ -2,7 +2,8 @@
 //   metallic                         GGX conductor, Schlick Fresnel tinted by baseColor
 //   (1 - metallic) transmission      dielectric interface (dielectric.glsl), transmission tinted
 //   (1 - metallic)(1 - transmission) KHR_materials_specular layer (GGX, F = specularFactor *
-//                                    Schlick(F0)) over Lambert, scaled by 1 - specularFactor max(F)
+//                                    Schlick(F0)) over Lambert, which is scaled by
+//                                    (1 - F(wo.z)) (1 - F(wi.z)) / (1 - average F)
 // Roughness below sqrt(GGX_DELTA_ALPHA) makes the specular lobes deltas. Opaque lobes are two-sided
 // (mirrored when wo.z < 0); the dielectric uses the side to pick eta. The GGX lobes are single-
 // scattering: see docs/MATERIALS.md for the energy they lose at high roughness.
@@ -42,19 +43,31 @@ BsdfLobes bsdfLobes(SurfaceMaterial m, float cosWo) {
                      pGlass * scale, pLayerSpecular * scale, pDiffuse * scale);
 }
 
+// Reflectance of the KHR_materials_specular layer seen from a direction at cos(theta) to the normal.
+float layerReflectance(SurfaceMaterial m, BsdfLobes l, float cosTheta) {
+    return m.specularFactor * maxComponent(fresnelSchlick(l.layerF0, cosTheta));
+}
+
+// Cosine-weighted hemispherical average of layerReflectance: Schlick integrates to F0 + (1 - F0) / 21.
+float layerAverageReflectance(SurfaceMaterial m, BsdfLobes l) {
+    return m.specularFactor * maxComponent(l.layerF0 + (vec3(1.0f) - l.layerF0) / 21.0f);
+}
+
 // Opaque (metal + layered) part for wo.z > 0: f * cos(wi) and the lobe-weighted pdf.
 vec3 opaqueEval(SurfaceMaterial m, BsdfLobes l, vec3 wo, vec3 wi, OUT(float) pdf) {
     pdf = 0.0f;
     if (wi.z <= 0.0f) return vec3(0.0f);
-    vec3 h = normalize(wo + wi);
-    float cosOH = max(dot(wo, h), 0.0f);
-    bool rough = l.alpha >= GGX_DELTA_ALPHA;
-    // A delta specular layer scales the diffuse by its Fresnel at wo; a rough one at each microfacet.
-    vec3 layerF = m.specularFactor * fresnelSchlick(l.layerF0, rough ? cosOH : wo.z);
-    vec3 f = l.layered * (1.0f - maxComponent(layerF)) * m.baseColor * lambertReflection(wo, wi);
+    // The diffuse under the specular layer keeps what the layer transmits on the way in and on the
+    // way out, normalised so that a white diffuse reflects exactly 1 - F(wo) (reciprocal; the glTF
+    // spec's 1 - F(wo.h) gains up to 6 % at grazing angles, see docs/MATERIALS.md).
+    float diffuseScale = (1.0f - layerReflectance(m, l, wo.z)) * (1.0f - layerReflectance(m, l, wi.z)) /
+                         max(1.0f - layerAverageReflectance(m, l), 1e-6f);
+    vec3 f = l.layered * diffuseScale * m.baseColor * lambertReflection(wo, wi);
     pdf = l.pDiffuse * lambertPdf(wo, wi);
-    if (rough) {
+    if (l.alpha >= GGX_DELTA_ALPHA) {
+        float cosOH = max(dot(wo, normalize(wo + wi)), 0.0f);
         float microfacet = ggxReflectionNoFresnel(wo, wi, l.alpha);
+        vec3 layerF = m.specularFactor * fresnelSchlick(l.layerF0, cosOH);
         vec3 specular = l.metal * fresnelSchlick(m.baseColor, cosOH) + l.layered * layerF;
         f += specular * microfacet;
         pdf += (l.pMetal + l.pLayerSpecular) * ggxReflectionPdf(wo, wi, l.alpha);
@@ -151,7 +164,7 @@ BsdfAlbedo bsdfAlbedo(SurfaceMaterial m, vec3 wo) {
     float cosWo = abs(wo.z);
     vec3 layerF = m.specularFactor * fresnelSchlick(l.layerF0, cosWo);
     float glassF = fresnelDielectric(cosWo, relativeEta(m.ior, m.thinWalled, wo.z));
-    vec3 diffuse = l.layered * (1.0f - maxComponent(layerF)) * m.baseColor;
+    vec3 diffuse = l.layered * (1.0f - layerReflectance(m, l, cosWo)) * m.baseColor;
     vec3 specular = l.metal * fresnelSchlick(m.baseColor, cosWo) + l.layered * layerF +
                     l.glass * (glassF + (1.0f - glassF) * m.baseColor);
     return BsdfAlbedo(diffuse, specular);

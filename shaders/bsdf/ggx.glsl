@@ -11,17 +11,19 @@ const float GGX_DELTA_ALPHA = 1e-3f;
 
 float ggxAlphaFromRoughness(float roughness) { return max(roughness * roughness, 0.0f); }
 
+// Written with sin^2 = x^2 + y^2 rather than 1 - z^2: near the peak of a low-roughness lobe the
+// difference 1 - z^2 loses most of its float digits.
 float ggxD(vec3 h, float alpha) {
     if (h.z <= 0.0f) return 0.0f;
     float a2 = alpha * alpha;
-    float d = h.z * h.z * (a2 - 1.0f) + 1.0f;
+    float d = h.x * h.x + h.y * h.y + a2 * h.z * h.z;
     return a2 / (PI * d * d);
 }
 
 float ggxLambda(vec3 w, float alpha) {
     float c2 = w.z * w.z;
     if (c2 <= 0.0f) return 1e30f;
-    float t2 = max(1.0f - c2, 0.0f) / c2;
+    float t2 = (w.x * w.x + w.y * w.y) / c2;
     return 0.5f * (-1.0f + sqrt(1.0f + alpha * alpha * t2));
 }
 
