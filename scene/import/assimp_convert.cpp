@@ -22,6 +22,7 @@ glm::mat4 toGlm(const aiMatrix4x4& m) {
 // What the conversion could not keep, counted so that each kind is reported once.
 struct Dropped {
     std::size_t faces = 0;
+    std::size_t nonFiniteTriangles = 0;
     std::size_t skinnedMeshes = 0;
     std::size_t morphedMeshes = 0;
 };
@@ -82,6 +83,7 @@ private:
         const MaterialId material = source.mMaterialIndex < materials_.size() ? materials_[source.mMaterialIndex] : MaterialId{};
         PrimitiveConversion converted = convertPrimitive(source, material);
         dropped_.faces += converted.droppedFaces;
+        dropped_.nonFiniteTriangles += converted.nonFiniteTriangles;
         dropped_.skinnedMeshes += source.HasBones() ? 1 : 0;
         dropped_.morphedMeshes += source.mNumAnimMeshes > 0 ? 1 : 0;
         if (converted.primitive.indices.empty()) return;
@@ -97,6 +99,8 @@ private:
 
     void reportDropped() {
         warnIf(dropped_.faces > 0, "non-triangles-dropped", std::to_string(dropped_.faces) + " point and line primitives dropped (triangles only)");
+        warnIf(dropped_.nonFiniteTriangles > 0, "non-finite-position",
+               std::to_string(dropped_.nonFiniteTriangles) + " triangles with NaN or infinite positions dropped");
         warnIf(dropped_.skinnedMeshes > 0, "skin-dropped", std::to_string(dropped_.skinnedMeshes) + " skinned meshes imported as static geometry");
         warnIf(dropped_.morphedMeshes > 0, "morph-targets-dropped", std::to_string(dropped_.morphedMeshes) + " meshes lost their morph targets");
         warnIf(ai_.mNumAnimations > 0, "animation-dropped", std::to_string(ai_.mNumAnimations) + " animations dropped");

@@ -2,18 +2,27 @@
 
 #include <assimp/mesh.h>
 
+#include <cmath>
+
 namespace glint {
 
 namespace {
 
 glm::vec3 toGlm(const aiVector3D& v) { return {v.x, v.y, v.z}; }
 
+bool isFinite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+glm::vec3 usableNormal(glm::vec3 n) {
+    const float length = glm::length(n);
+    return std::isfinite(length) && length > 1e-12f ? n / length : glm::vec3(0.0f, 1.0f, 0.0f);
+}
+
 void copyAttributes(const aiMesh& mesh, Primitive& p) {
     const unsigned n = mesh.mNumVertices;
     p.positions.reserve(n);
     for (unsigned i = 0; i < n; ++i) p.positions.push_back(toGlm(mesh.mVertices[i]));
     if (mesh.HasNormals())
-        for (unsigned i = 0; i < n; ++i) p.normals.push_back(toGlm(mesh.mNormals[i]));
+        for (unsigned i = 0; i < n; ++i) p.normals.push_back(usableNormal(toGlm(mesh.mNormals[i])));
     for (unsigned channel = 0; channel < 2; ++channel) {
         if (!mesh.HasTextureCoords(channel)) continue;
         auto& uv = channel == 0 ? p.uv0 : p.uv1;
@@ -39,6 +48,11 @@ PrimitiveConversion convertPrimitive(const aiMesh& mesh, MaterialId material) {
         // Assimp's validation step has checked every index against mNumVertices.
         if (face.mNumIndices != 3) {
             ++out.droppedFaces;
+            continue;
+        }
+        const auto& positions = out.primitive.positions;
+        if (!isFinite(positions[face.mIndices[0]]) || !isFinite(positions[face.mIndices[1]]) || !isFinite(positions[face.mIndices[2]])) {
+            ++out.nonFiniteTriangles;
             continue;
         }
         indices.insert(indices.end(), face.mIndices, face.mIndices + 3);

@@ -13,6 +13,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <array>
 #include <cmath>
 #include <memory>
 
@@ -29,17 +30,20 @@ const Material& onlyMaterialOfFirstMesh(const Scene& scene) {
     return scene.materials.at(scene.meshes.begin()->second.primitives.front().material);
 }
 
-// One triangle with FBX-style metadata, built by hand: a Z-up file in centimetres.
-std::unique_ptr<aiScene> zUpCentimetreTriangle() {
+// A one-mesh Assimp scene built by hand: positions and triangles.
+std::unique_ptr<aiScene> meshScene(const std::vector<aiVector3D>& positions, const std::vector<std::array<unsigned, 3>>& triangles) {
     auto scene = std::make_unique<aiScene>();
     auto* mesh = new aiMesh;
     mesh->mPrimitiveTypes = aiPrimitiveType_TRIANGLE;
-    mesh->mNumVertices = 3;
-    mesh->mVertices = new aiVector3D[3]{{0, 0, 0}, {0, 100, 0}, {0, 0, 100}};
-    mesh->mNumFaces = 1;
-    mesh->mFaces = new aiFace[1];
-    mesh->mFaces[0].mNumIndices = 3;
-    mesh->mFaces[0].mIndices = new unsigned[3]{0, 1, 2};
+    mesh->mNumVertices = static_cast<unsigned>(positions.size());
+    mesh->mVertices = new aiVector3D[positions.size()];
+    std::copy(positions.begin(), positions.end(), mesh->mVertices);
+    mesh->mNumFaces = static_cast<unsigned>(triangles.size());
+    mesh->mFaces = new aiFace[triangles.size()];
+    for (std::size_t i = 0; i < triangles.size(); ++i) {
+        mesh->mFaces[i].mNumIndices = 3;
+        mesh->mFaces[i].mIndices = new unsigned[3]{triangles[i][0], triangles[i][1], triangles[i][2]};
+    }
     scene->mNumMeshes = 1;
     scene->mMeshes = new aiMesh*[1]{mesh};
     scene->mNumMaterials = 1;
@@ -47,6 +51,12 @@ std::unique_ptr<aiScene> zUpCentimetreTriangle() {
     scene->mRootNode = new aiNode("root");
     scene->mRootNode->mNumMeshes = 1;
     scene->mRootNode->mMeshes = new unsigned[1]{0};
+    return scene;
+}
+
+// One triangle with FBX-style metadata: a Z-up file in centimetres.
+std::unique_ptr<aiScene> zUpCentimetreTriangle() {
+    auto scene = meshScene({{0, 0, 0}, {0, 100, 0}, {0, 0, 100}}, {{0, 1, 2}});
     scene->mMetaData = aiMetadata::Alloc(7);
     scene->mMetaData->Set(0, "UpAxis", std::int32_t(2));
     scene->mMetaData->Set(1, "UpAxisSign", std::int32_t(1));
@@ -257,6 +267,20 @@ private slots:
         } catch (const FileError& e) {
             QCOMPARE(e.code(), std::string("too-many-triangles"));
         }
+    }
+
+    void nonFiniteTrianglesAndNormalsAreRepaired() {
+        const float nan = std::nanf("");
+        auto ai = meshScene({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {nan, 0, 0}}, {{0, 1, 2}, {0, 1, 3}});
+        aiMesh& mesh = *ai->mMeshes[0];
+        mesh.mNormals = new aiVector3D[4]{{0, 0, 2}, {nan, 0, 0}, {0, 0, 0}, {0, 0, 1}};
+        LoadResult r = convertAssimpScene(*ai, {"nan.obj"});
+        const Primitive& p = r.scene.meshes.begin()->second.primitives.front();
+        QCOMPARE(p.indices, (std::vector<std::uint32_t>{0, 1, 2}));
+        QCOMPARE(p.normals[0], glm::vec3(0, 0, 1));
+        QCOMPARE(p.normals[1], glm::vec3(0, 1, 0));
+        QCOMPARE(p.normals[2], glm::vec3(0, 1, 0));
+        QVERIFY(hasWarning(r.warnings, "non-finite-position"));
     }
 
     void pointsOnlyIsNoGeometry() {
