@@ -19,6 +19,10 @@
 
 namespace glint {
 
+// What sampling needs: at least one key, finite times strictly increasing, finite positions and
+// lens values, non-zero finite orientations. Loaders and commands check this.
+bool isValidCameraPath(const CameraPath& path);
+
 // The camera state at time t (clamped to the first/last key; the result's time is the clamped t).
 // An empty path is a logic error (std::logic_error).
 CameraKey sampleCameraPath(const CameraPath& path, double t);

@@ -26,7 +26,8 @@ glm::vec3 sampleVec3Channel(const AnimationChannel& channel, double t);
 // Rotation channel, (x, y, z, w) packed; the result has unit length.
 glm::quat sampleRotationChannel(const AnimationChannel& channel, double t);
 
-// True when the channel has keys and exactly the values its interpolation needs.
+// True when the channel is a TRS channel with finite, strictly increasing key times and exactly the
+// values its interpolation needs. Sampling needs at least keys; the rest keeps results meaningful.
 bool isWellFormed(const AnimationChannel& channel);
 
 } // namespace glint

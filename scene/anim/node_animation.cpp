@@ -1,5 +1,6 @@
 #include "node_animation.h"
 
+#include "camera_path_sampling.h"
 #include "channel_sampling.h"
 
 #include <algorithm>
@@ -22,6 +23,23 @@ void applyChannel(const AnimationChannel& channel, double t, Transform& local) {
     }
 }
 
+const CameraPath* cameraPathOf(const Node& node) {
+    const Camera* camera = node.get<Camera>();
+    return camera && !camera->path.empty() ? &camera->path : nullptr;
+}
+
+// A baked track only approximates the camera path it came from; the path itself is exact.
+bool appliesTo(const Animation& animation, const AnimationChannel& channel, const Scene& scene) {
+    const Node* target = scene.node(channel.node);
+    return target && isWellFormed(channel) && !(animation.bakedCameraPath && cameraPathOf(*target));
+}
+
+void applyCameraPath(const CameraPath& path, double t, Transform& local) {
+    const CameraKey key = sampleCameraPath(path, t);
+    local.translation = glm::vec3(key.position);
+    local.rotation = glm::normalize(glm::quat(key.orientation));
+}
+
 } // namespace
 
 std::pair<double, double> animationTimeSpan(const Animation& animation) {
@@ -36,34 +54,33 @@ std::pair<double, double> animationTimeSpan(const Animation& animation) {
 
 std::pair<double, double> sceneAnimationTimeSpan(const Scene& scene) {
     std::optional<std::pair<double, double>> span;
-    for (const auto& [id, animation] : scene.animations) {
-        if (std::none_of(animation.channels.begin(), animation.channels.end(),
-                         [](const AnimationChannel& c) { return !c.times.empty(); }))
-            continue;
-        const auto own = animationTimeSpan(animation);
-        span = span ? unite(*span, own) : own;
-    }
+    auto include = [&](std::pair<double, double> own) { span = span ? unite(*span, own) : own; };
+    for (const auto& [id, animation] : scene.animations)
+        if (std::any_of(animation.channels.begin(), animation.channels.end(),
+                        [](const AnimationChannel& c) { return !c.times.empty(); }))
+            include(animationTimeSpan(animation));
+    for (const auto& [id, node] : scene.nodes())
+        if (const CameraPath* path = cameraPathOf(node)) include({path->keys.front().time, path->keys.back().time});
     return span.value_or(std::pair<double, double>{0.0, 0.0});
 }
 
-// Animations apply in id order, channels in file order: a later channel on the same node and
-// path wins, which is what a viewer playing all animations at once shows.
 Transform sampleLocalTransform(const Scene& scene, NodeId node, double t) {
     Transform local = scene.at(node).local;
     for (const auto& [id, animation] : scene.animations)
         for (const AnimationChannel& channel : animation.channels)
-            if (channel.node == node && isWellFormed(channel)) applyChannel(channel, t, local);
+            if (channel.node == node && appliesTo(animation, channel, scene)) applyChannel(channel, t, local);
+    if (const CameraPath* path = cameraPathOf(scene.at(node))) applyCameraPath(*path, t, local);
     return local;
 }
 
 std::map<NodeId, Transform> sampleAnimatedTransforms(const Scene& scene, double t) {
     std::map<NodeId, Transform> result;
     for (const auto& [id, animation] : scene.animations)
-        for (const AnimationChannel& channel : animation.channels) {
-            if (!isWellFormed(channel) || !scene.contains(channel.node)) continue;
-            auto it = result.try_emplace(channel.node, scene.at(channel.node).local).first;
-            applyChannel(channel, t, it->second);
-        }
+        for (const AnimationChannel& channel : animation.channels)
+            if (appliesTo(animation, channel, scene)) result.try_emplace(channel.node);
+    for (const auto& [id, node] : scene.nodes())
+        if (cameraPathOf(node)) result.try_emplace(id);
+    for (auto& [id, local] : result) local = sampleLocalTransform(scene, id, t);
     return result;
 }
 

@@ -11,15 +11,20 @@ namespace glint {
 
 // [start, end] of the keys of one animation, in seconds ({0, 0} when it has none).
 std::pair<double, double> animationTimeSpan(const Animation& animation);
-// The union over every animation of the scene, baked camera paths included.
+// The union over every animation of the scene and every camera path (baked or not).
 std::pair<double, double> sceneAnimationTimeSpan(const Scene& scene);
 
 // The local transform of `node` at time t with every animation of the scene applied to it
 // (channels not targeting the node leave its stored TRS in place). Outside a channel's keys the
-// first/last key holds. Pure: the scene is not changed.
+// first/last key holds. Animations apply in id order, so a later channel on the same node and
+// path wins. A camera node with a camera path follows the exact path (its position and
+// orientation become the node's translation and rotation, as bakeCameraPath writes them); baked
+// camera-path animations are then ignored for it. Malformed channels (isWellFormed) are skipped.
+// Pure: the scene is not changed. An unknown node throws std::out_of_range.
 Transform sampleLocalTransform(const Scene& scene, NodeId node, double t);
 
-// All animated nodes at time t: node -> local transform. Use with Scene::setLocal on a copy.
+// All animated nodes (camera-path nodes included) at time t: node -> local transform, as
+// sampleLocalTransform gives it. Use with Scene::setLocal on a copy.
 std::map<NodeId, Transform> sampleAnimatedTransforms(const Scene& scene, double t);
 
 } // namespace glint

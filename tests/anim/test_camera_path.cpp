@@ -208,6 +208,20 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, bakeCameraPath(path, NodeId{1}, 0.0));
     }
 
+    void validationRejectsWhatSamplingCannotUse() {
+        QVERIFY(isValidCameraPath(winding()));
+        QVERIFY(!isValidCameraPath(CameraPath{}));
+        CameraPath repeated = winding();
+        repeated.keys[2].time = repeated.keys[1].time;
+        QVERIFY(!isValidCameraPath(repeated));
+        CameraPath notANumber = winding();
+        notANumber.keys[3].position.y = std::nan("");
+        QVERIFY(!isValidCameraPath(notANumber));
+        CameraPath zeroRotation = winding();
+        zeroRotation.keys[0].orientation = glm::dquat(0, 0, 0, 0);
+        QVERIFY(!isValidCameraPath(zeroRotation));
+    }
+
     void oneKeyPathHoldsStill() {
         CameraPath path;
         path.keys = {key(2.0, {1, 2, 3}, 0.5, {0, 1, 0})};

@@ -94,6 +94,8 @@ private slots:
         QVERIFY(!isWellFormed(channel(AnimationPath::Translation, Interpolation::Linear, {0, 1}, {0, 0, 0})));
         QVERIFY(!isWellFormed(channel(AnimationPath::Rotation, Interpolation::CubicSpline, {0}, {0, 0, 0, 1})));
         QVERIFY(!isWellFormed(channel(AnimationPath::Translation, Interpolation::Linear, {}, {})));
+        QVERIFY(!isWellFormed(channel(AnimationPath::Translation, Interpolation::Linear, {1, 1}, {0, 0, 0, 1, 1, 1})));
+        QVERIFY(!isWellFormed(channel(AnimationPath::Translation, Interpolation::Step, {2, 1}, {0, 0, 0, 1, 1, 1})));
     }
 
     void timeSpansUniteChannelsAndAnimations() {
@@ -130,6 +132,30 @@ private slots:
         QCOMPARE(all.size(), std::size_t(1));
         QVERIFY(near(all.at(movingId).translation, {1, 0, 0}));
         QCOMPARE(scene.at(movingId).local.translation, glm::vec3(0.0f)); // the scene is untouched
+    }
+
+    // A camera with a path follows the exact path; a baked track of it is ignored, and the path
+    // counts towards the scene's time span.
+    void cameraPathDrivesItsNode() {
+        Scene scene;
+        Node cameraNode;
+        Camera camera;
+        CameraKey first, second;
+        first.time = 1.0;
+        second.time = 6.0;
+        second.position = {10, 0, 0};
+        camera.path.keys = {first, second};
+        cameraNode.component = camera;
+        const NodeId id = scene.addNode(cameraNode);
+        Animation staleBake;
+        staleBake.bakedCameraPath = true;
+        staleBake.channels = {channel(AnimationPath::Translation, Interpolation::Linear, {0, 1}, {5, 5, 5, 5, 5, 5}, id)};
+        scene.animations.add(staleBake);
+        QVERIFY(near(sampleLocalTransform(scene, id, 3.5).translation, {5, 0, 0}));
+        QCOMPARE(sceneAnimationTimeSpan(scene), std::make_pair(0.0, 6.0));
+        const auto all = sampleAnimatedTransforms(scene, 6.0);
+        QCOMPARE(all.size(), std::size_t(1));
+        QVERIFY(near(all.at(id).translation, {10, 0, 0}));
     }
 };
 
