@@ -131,6 +131,13 @@ bool isTemporaryName(const std::filesystem::path& file)
     return !number.empty() && std::all_of(number.begin(), number.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
 
+std::string finalNameOfTemporary(const std::filesystem::path& file)
+{
+    if (!isTemporaryName(file)) return {};
+    const std::string name = file.filename().string();
+    return name.substr(1, name.rfind(kTemporaryMarker) - 1);
+}
+
 std::vector<std::filesystem::path> saveFilesAtomically(const std::vector<std::vector<PendingFile>>& stages)
 {
     std::set<std::filesystem::path> finals;

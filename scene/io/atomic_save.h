@@ -21,6 +21,7 @@
 // files already renamed stay (by the order above, the result is still a loadable set).
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace glint {
@@ -35,5 +36,7 @@ std::vector<std::filesystem::path> saveFilesAtomically(const std::vector<std::ve
 
 // The temporary-name pattern above, for tests and for clean-up.
 bool isTemporaryName(const std::filesystem::path& file);
+// The final name a temporary stands for (".a.bin.glint-tmp3" -> "a.bin"); empty for other names.
+std::string finalNameOfTemporary(const std::filesystem::path& file);
 
 } // namespace glint

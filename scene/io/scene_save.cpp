@@ -31,12 +31,15 @@ bool isOwnBufferName(const std::string& name, const std::string& baseName)
 }
 
 // Runs after the new set is in place and synced, so a crash before it only leaves an unused file.
+// Also removes temporaries of buffers an interrupted save was writing (their names differ from
+// this save's, so the atomic save's own clean-up does not see them).
 void removeOldBuffers(const std::filesystem::path& folder, const std::string& baseName, const std::string& current)
 {
     std::error_code ec;
     for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
         const std::string name = entry.path().filename().string();
-        if (name != current && isOwnBufferName(name, baseName)) std::filesystem::remove(entry.path(), ec);
+        const bool oldBuffer = name != current && isOwnBufferName(name, baseName);
+        if (oldBuffer || isOwnBufferName(finalNameOfTemporary(entry.path()), baseName)) std::filesystem::remove(entry.path(), ec);
     }
 }
 

@@ -216,6 +216,7 @@ Scene largeScene(int gridSize, int variant)
     const MeshId grid = scene.meshes.add({.name = "grid", .primitives = {p}});
     scene.addNode(node("terrain", MeshInstance{grid}));
     scene.settings.render.seed = static_cast<std::uint32_t>(variant);
+    scene.name = "variant " + std::to_string(variant);
     return scene;
 }
 
