@@ -23,9 +23,10 @@ int findCdfInterval(sampler2D table, int row, int n, float u) {
     return lo;
 }
 
-// A point in [0, 1) drawn from the row's distribution, continuous inside its bin; pdf per unit length.
-float samplePiecewiseConstant1D(sampler2D table, int row, int n, float u, OUT(float) pdf) {
-    int i = findCdfInterval(table, row, n, u);
+// A point in [0, 1) drawn from the row's distribution, continuous inside its bin i; pdf per unit
+// length.
+float samplePiecewiseConstant1D(sampler2D table, int row, int n, float u, OUT(float) pdf, OUT(int) i) {
+    i = findCdfInterval(table, row, n, u);
     float c0 = cdfAt(table, row, i);
     float c1 = cdfAt(table, row, i + 1);
     float width = c1 - c0;
@@ -43,10 +44,11 @@ float piecewiseConstant1DPdf(sampler2D table, int row, int n, float x) {
 // columns, row size.y the marginal CDF over rows. Returns (x, y) in [0, 1)^2; pdf per unit area.
 vec2 samplePiecewiseConstant2D(sampler2D table, ivec2 size, vec2 u, OUT(float) pdf) {
     float pdfRow;
-    float y = samplePiecewiseConstant1D(table, size.y, size.y, u.y, pdfRow);
-    int row = min(int(y * float(size.y)), size.y - 1);
+    int row;
+    float y = samplePiecewiseConstant1D(table, size.y, size.y, u.y, pdfRow, row);
     float pdfColumn;
-    float x = samplePiecewiseConstant1D(table, row, size.x, u.x, pdfColumn);
+    int column;
+    float x = samplePiecewiseConstant1D(table, row, size.x, u.x, pdfColumn, column);
     pdf = pdfRow * pdfColumn;
     return vec2(x, y);
 }

@@ -8,8 +8,12 @@
 #include "common/math.glsl"
 #include "sampling/distribution.glsl"
 
+// sin of the angle to +Y (the map's pole), accurate near the poles where sqrt(1 - y^2) is not.
+float sinThetaOf(vec3 d) { return sqrt(d.x * d.x + d.z * d.z); }
+
+// v = acos(d.y) / pi, computed as atan2(sin, cos): acos loses float digits near the poles.
 vec2 equirectFromDirection(vec3 d) {
-    return vec2(0.5f + atan(d.z, d.x) * INV_TWO_PI, acos(clamp(d.y, -1.0f, 1.0f)) * INV_PI);
+    return vec2(0.5f + atan(d.z, d.x) * INV_TWO_PI, atan(sinThetaOf(d), d.y) * INV_PI);
 }
 
 vec3 directionFromEquirect(vec2 uv) {
@@ -29,12 +33,11 @@ vec3 sampleEnvironmentDirection(sampler2D cdfTable, ivec2 size, vec2 u, OUT(floa
     float pdfUv;
     vec2 uv = samplePiecewiseConstant2D(cdfTable, size, u, pdfUv);
     vec3 d = directionFromEquirect(uv);
-    pdf = solidAngleFromEquirectPdf(pdfUv, sin(uv.y * PI));
+    pdf = solidAngleFromEquirectPdf(pdfUv, sinThetaOf(d));
     return d;
 }
 
 float environmentDirectionPdf(sampler2D cdfTable, ivec2 size, vec3 d) {
     vec2 uv = equirectFromDirection(d);
-    float sinTheta = safeSqrt(1.0f - d.y * d.y);
-    return solidAngleFromEquirectPdf(piecewiseConstant2DPdf(cdfTable, size, uv), sinTheta);
+    return solidAngleFromEquirectPdf(piecewiseConstant2DPdf(cdfTable, size, uv), sinThetaOf(d));
 }
