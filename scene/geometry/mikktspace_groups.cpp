@@ -10,11 +10,12 @@ namespace {
 
 constexpr int kNoGroup = -1;
 
-// Triangles around one welded vertex that share its tangent frame.
+// Triangles around one welded vertex that share its tangent frame, summed as they join.
 struct Group {
     std::uint32_t vertex = 0;
     bool orientationPreserving = false;
-    std::vector<std::size_t> triangles;
+    glm::vec3 normal{0.0f};          // the vertex's unit normal
+    glm::vec3 weightedTangents{0.0f}; // sum of projected triangle tangents times corner angle
 };
 
 using CornerGroups = std::vector<std::array<int, 3>>;
@@ -36,42 +37,6 @@ glm::vec3 unitOrZero(const glm::vec3& v) {
     return length > 0.0f ? v / length : glm::vec3(0.0f);
 }
 
-// The original's recursive walk, as a loop: from triangle to edge neighbour around the group's
-// vertex, taking triangles of the group's handedness. A uv-degenerate triangle adopts the
-// handedness of the first group that reaches it.
-void growGroup(Group& group, int groupIndex, std::size_t start, const std::vector<std::uint32_t>& welded,
-               std::vector<TriangleFrame>& frames, CornerGroups& assigned) {
-    std::vector<std::size_t> pending{start};
-    while (!pending.empty()) {
-        const std::size_t f = pending.back();
-        pending.pop_back();
-        const int i = cornerOf(welded, f, group.vertex);
-        if (i < 0 || assigned[f][std::size_t(i)] != kNoGroup) continue;
-        TriangleFrame& frame = frames[f];
-        const bool untouched = std::all_of(assigned[f].begin(), assigned[f].end(), [](int g) { return g == kNoGroup; });
-        if (frame.uvDegenerate && untouched) frame.orientationPreserving = group.orientationPreserving;
-        if (frame.orientationPreserving != group.orientationPreserving) continue;
-        group.triangles.push_back(f);
-        assigned[f][std::size_t(i)] = groupIndex;
-        for (int neighbour : {frame.neighbours[std::size_t((i + 2) % 3)], frame.neighbours[std::size_t(i)]})
-            if (neighbour >= 0) pending.push_back(std::size_t(neighbour));
-    }
-}
-
-std::vector<Group> buildGroups(const std::vector<std::uint32_t>& welded, std::vector<TriangleFrame>& frames,
-                               CornerGroups& assigned) {
-    std::vector<Group> groups;
-    for (std::size_t f = 0; f < frames.size(); ++f) {
-        if (frames[f].uvDegenerate || frames[f].positionDegenerate) continue;
-        for (std::size_t i = 0; i < 3; ++i) {
-            if (assigned[f][i] != kNoGroup) continue;
-            groups.push_back({welded[3 * f + i], frames[f].orientationPreserving, {}});
-            growGroup(groups.back(), int(groups.size() - 1), f, welded, frames, assigned);
-        }
-    }
-    return groups;
-}
-
 // The corner angle, measured in the vertex's tangent plane.
 float cornerAngle(const Input& in, std::size_t f, int i, const glm::vec3& normal) {
     const glm::vec3& here = in.positions[in.indices[3 * f + std::size_t(i)]];
@@ -81,15 +46,47 @@ float cornerAngle(const Input& in, std::size_t f, int i, const glm::vec3& normal
     return std::acos(std::clamp(cosine, -1.0f, 1.0f));
 }
 
-std::optional<glm::vec4> groupTangent(const Input& in, const Group& group, const std::vector<std::uint32_t>& welded,
-                                      const std::vector<TriangleFrame>& frames) {
-    const glm::vec3 normal = unitOrZero(in.normals[group.vertex]);
-    glm::vec3 sum(0.0f);
-    for (std::size_t f : group.triangles) {
-        if (frames[f].uvDegenerate) continue;
-        sum += cornerAngle(in, f, cornerOf(welded, f, group.vertex), normal) * projectedUnit(frames[f].tangent, normal);
+// The original's recursive walk, as a loop: from triangle to edge neighbour around the group's
+// vertex, taking triangles of the group's handedness. A uv-degenerate triangle adopts the
+// handedness of the first group that reaches it.
+void growGroup(const Input& in, Group& group, int groupIndex, std::size_t start, const std::vector<std::uint32_t>& welded,
+               std::vector<TriangleFrame>& frames, CornerGroups& assigned, std::vector<std::size_t>& pending) {
+    pending.assign(1, start);
+    while (!pending.empty()) {
+        const std::size_t f = pending.back();
+        pending.pop_back();
+        const int i = cornerOf(welded, f, group.vertex);
+        if (i < 0 || assigned[f][std::size_t(i)] != kNoGroup) continue;
+        TriangleFrame& frame = frames[f];
+        const bool untouched = std::all_of(assigned[f].begin(), assigned[f].end(), [](int g) { return g == kNoGroup; });
+        if (frame.uvDegenerate && untouched) frame.orientationPreserving = group.orientationPreserving;
+        if (frame.orientationPreserving != group.orientationPreserving) continue;
+        assigned[f][std::size_t(i)] = groupIndex;
+        if (!frame.uvDegenerate)
+            group.weightedTangents += cornerAngle(in, f, i, group.normal) * projectedUnit(frame.tangent, group.normal);
+        for (int neighbour : {frame.neighbours[std::size_t((i + 2) % 3)], frame.neighbours[std::size_t(i)]})
+            if (neighbour >= 0) pending.push_back(std::size_t(neighbour));
     }
-    const glm::vec3 tangent = projectedUnit(sum, normal);
+}
+
+std::vector<Group> buildGroups(const Input& in, const std::vector<std::uint32_t>& welded,
+                               std::vector<TriangleFrame>& frames, CornerGroups& assigned) {
+    std::vector<Group> groups;
+    std::vector<std::size_t> pending;
+    for (std::size_t f = 0; f < frames.size(); ++f) {
+        if (frames[f].uvDegenerate || frames[f].positionDegenerate) continue;
+        for (std::size_t i = 0; i < 3; ++i) {
+            if (assigned[f][i] != kNoGroup) continue;
+            const std::uint32_t vertex = welded[3 * f + i];
+            groups.push_back({vertex, frames[f].orientationPreserving, unitOrZero(in.normals[vertex]), glm::vec3(0.0f)});
+            growGroup(in, groups.back(), int(groups.size() - 1), f, welded, frames, assigned, pending);
+        }
+    }
+    return groups;
+}
+
+std::optional<glm::vec4> groupTangent(const Group& group) {
+    const glm::vec3 tangent = projectedUnit(group.weightedTangents, group.normal);
     if (!(glm::length(tangent) > 0.5f)) return std::nullopt;
     return glm::vec4(tangent, group.orientationPreserving ? 1.0f : -1.0f);
 }
@@ -99,9 +96,10 @@ std::optional<glm::vec4> groupTangent(const Input& in, const Group& group, const
 std::vector<glm::vec4> cornerTangents(const Input& in, const std::vector<std::uint32_t>& welded,
                                       std::vector<TriangleFrame>& frames) {
     CornerGroups assigned(frames.size(), {kNoGroup, kNoGroup, kNoGroup});
-    const std::vector<Group> groups = buildGroups(welded, frames, assigned);
+    const std::vector<Group> groups = buildGroups(in, welded, frames, assigned);
     std::vector<std::optional<glm::vec4>> perGroup;
-    for (const Group& group : groups) perGroup.push_back(groupTangent(in, group, welded, frames));
+    perGroup.reserve(groups.size());
+    for (const Group& group : groups) perGroup.push_back(groupTangent(group));
 
     std::vector<std::optional<glm::vec4>> perCorner(welded.size());
     std::vector<std::optional<glm::vec4>> anyForVertex(in.positions.size());
@@ -112,8 +110,10 @@ std::vector<glm::vec4> cornerTangents(const Input& in, const std::vector<std::ui
     }
     // Corners of degenerate triangles take the frame another triangle gave their vertex.
     std::vector<glm::vec4> result(welded.size());
-    for (std::size_t c = 0; c < welded.size(); ++c)
-        result[c] = perCorner[c].value_or(anyForVertex[welded[c]].value_or(fallbackTangent(in.normals[welded[c]])));
+    for (std::size_t c = 0; c < welded.size(); ++c) {
+        const std::optional<glm::vec4>& own = perCorner[c] ? perCorner[c] : anyForVertex[welded[c]];
+        result[c] = own ? *own : fallbackTangent(in.normals[welded[c]]);
+    }
     return result;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <optional>
 #include <tuple>
 
 namespace glint::mikktspace {
@@ -18,11 +19,18 @@ auto attributeKey(const Input& in, std::uint32_t v) {
 // The original's thresholds: tiny uv areas and tangent magnitudes count as degenerate.
 bool notZero(float x) { return std::abs(x) > 1.17549435e-38f; }
 
-struct DirectedEdge {
-    std::uint32_t from, to;
-    int triangle, corner;
-    auto key() const { return std::make_tuple(from, to, triangle, corner); }
+// An edge keyed by its unordered vertex pair, so both walks of one edge sort next to each other.
+struct Edge {
+    std::uint64_t key;  // min vertex << 32 | max vertex
+    std::uint32_t corner; // 3 * triangle + i: the edge from corner i to corner i + 1
+    bool forward;         // walked from the smaller vertex to the larger
+    auto order() const { return std::make_pair(key, corner); }
 };
+
+Edge makeEdge(std::uint32_t from, std::uint32_t to, std::size_t corner) {
+    const std::uint64_t low = std::min(from, to), high = std::max(from, to);
+    return {low << 32 | high, std::uint32_t(corner), from < to};
+}
 
 } // namespace
 
@@ -64,21 +72,23 @@ std::vector<TriangleFrame> triangleFrames(const Input& in, const std::vector<std
     return frames;
 }
 
-// Triangles meet across an edge that one walks a->b and the other b->a (consistent winding).
+// Triangles meet across an edge that one walks a->b and the other b->a (consistent winding). Each
+// edge is paired with the first (lowest corner) opposite walk of it, as the original does.
 void findNeighbours(const std::vector<std::uint32_t>& welded, std::vector<TriangleFrame>& frames) {
-    std::vector<DirectedEdge> edges;
+    std::vector<Edge> edges;
     edges.reserve(welded.size());
     for (std::size_t f = 0; f < frames.size(); ++f) {
         if (frames[f].positionDegenerate) continue;
-        for (int i = 0; i < 3; ++i)
-            edges.push_back({welded[3 * f + i], welded[3 * f + (i + 1) % 3], int(f), i});
+        for (std::size_t i = 0; i < 3; ++i) edges.push_back(makeEdge(welded[3 * f + i], welded[3 * f + (i + 1) % 3], 3 * f + i));
     }
-    std::sort(edges.begin(), edges.end(), [](const DirectedEdge& a, const DirectedEdge& b) { return a.key() < b.key(); });
-    for (const DirectedEdge& e : edges) {
-        const auto match = std::lower_bound(edges.begin(), edges.end(), std::make_tuple(e.to, e.from, -1, -1),
-                                            [](const DirectedEdge& a, const auto& key) { return a.key() < key; });
-        if (match != edges.end() && match->from == e.to && match->to == e.from)
-            frames[std::size_t(e.triangle)].neighbours[std::size_t(e.corner)] = match->triangle;
+    std::sort(edges.begin(), edges.end(), [](const Edge& a, const Edge& b) { return a.order() < b.order(); });
+    for (std::size_t runStart = 0, runEnd = 0; runStart < edges.size(); runStart = runEnd) {
+        while (runEnd < edges.size() && edges[runEnd].key == edges[runStart].key) ++runEnd;
+        std::array<std::optional<std::uint32_t>, 2> firstWalk; // lowest corner per direction
+        for (std::size_t e = runEnd; e-- > runStart;) firstWalk[edges[e].forward] = edges[e].corner;
+        for (std::size_t e = runStart; e < runEnd; ++e)
+            if (const auto other = firstWalk[!edges[e].forward])
+                frames[edges[e].corner / 3].neighbours[edges[e].corner % 3] = int(*other / 3);
     }
 }
 

@@ -10,6 +10,8 @@ namespace glint {
 namespace {
 
 const glm::vec3 kX{1, 0, 0}, kY{0, 1, 0}, kZ{0, 0, 1};
+// A bound on the mesh size (a sphere of 4096 segments has 16.7 M triangles).
+constexpr int kMaxSegments = 4096;
 
 // Each face's (u, v) with cross(u, v) pointing out of the box.
 void addBox(PrimitiveBuilder& b, const glm::vec3& size) {
@@ -30,7 +32,7 @@ void addUpFacingRectangle(PrimitiveBuilder& b, float width, float depth) {
 } // namespace
 
 Primitive tessellateShape(const Shape& shape, int segments, float groundExtent) {
-    segments = std::max(segments, 3);
+    segments = std::clamp(segments, 3, kMaxSegments);
     PrimitiveBuilder b;
     switch (shape.kind) {
     case ShapeKind::Sphere: addSphere(b, shape.radius, segments); break;
