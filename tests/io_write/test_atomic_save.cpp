@@ -121,7 +121,7 @@ private slots:
         saveScene(scenes[0], folder / "scene.gltf");
         const auto oneSave = std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() - start);
 
-        constexpr int kKills = 24;
+        constexpr int kKills = 60;
         std::map<std::string, int> outcomes;
         for (int round = 0; round < kKills; ++round) {
             std::mt19937 random(static_cast<std::uint32_t>(round));
