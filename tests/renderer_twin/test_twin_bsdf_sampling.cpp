@@ -19,7 +19,7 @@ namespace {
 
 constexpr int kThetaCells = 10;
 constexpr int kPhiCells = 20;
-constexpr int kSamples = 300000;
+constexpr int kSamples = 200000;
 constexpr int kConfigurations = 26; // rows of sampleMatchesPdf_data, for the Sidak correction
 
 vec3 directionAt(double theta, double phi) {
