@@ -1,0 +1,24 @@
+#pragma once
+// Internal to node reading: the graph checks and the components a glTF node can carry.
+#include "gltf_reader.h"
+
+#include <vector>
+
+namespace glint {
+
+// parent[i] of every glTF node (-1: none). Throws node-graph-cycle for a node with two parents,
+// a node that is its own child, or any loop.
+std::vector<int> nodeParents(const GltfReadContext& ctx);
+
+// The glTF nodes of the default scene ("scene", else scene 0) in depth-first order, parents first;
+// with no scene, every root (warning no-scene). Nodes outside are named as dropped.
+std::vector<int> nodesToLoad(GltfReadContext& ctx, const std::vector<int>& parents);
+
+// Ids from GLINT_node, else i + 1 for glTF node i; duplicates and clashes get the next free id.
+std::vector<NodeId> assignNodeIds(GltfReadContext& ctx, const std::vector<int>& loaded);
+
+Camera readCamera(const GltfReadContext& ctx, int camera, const nlohmann::json& node, const std::string& where);
+Light readLight(const GltfReadContext& ctx, int light);
+Shape readShape(const GltfReadContext& ctx, const nlohmann::json& extension, const std::string& where);
+
+} // namespace glint

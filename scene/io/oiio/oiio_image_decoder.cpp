@@ -1,0 +1,96 @@
+#include "oiio_image_decoder.h"
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <memory>
+
+namespace glint {
+
+namespace {
+
+namespace OIIO = OIIO_NAMESPACE;
+
+// OpenImageIO picks its reader by file name: name the bytes after their signature.
+const char* pseudoFileName(std::span<const std::uint8_t> b)
+{
+    auto has = [&](std::initializer_list<std::uint8_t> magic) {
+        return b.size() >= magic.size() && std::equal(magic.begin(), magic.end(), b.begin());
+    };
+    if (has({0x89, 'P', 'N', 'G'})) return "memory.png";
+    if (has({0xFF, 0xD8})) return "memory.jpg";
+    if (has({'#', '?'})) return "memory.hdr";
+    if (has({0x76, 0x2f, 0x31, 0x01})) return "memory.exr";
+    if (has({'I', 'I', 42, 0}) || has({'M', 'M', 0, 42})) return "memory.tif";
+    return nullptr;
+}
+
+struct OpenedImage {
+    std::unique_ptr<OIIO::Filesystem::IOMemReader> reader;
+    std::unique_ptr<OIIO::ImageInput> input;
+};
+
+OpenedImage openFromMemory(std::span<const std::uint8_t> encoded)
+{
+    OpenedImage opened;
+    const char* name = pseudoFileName(encoded);
+    if (!name) return opened;
+    opened.reader = std::make_unique<OIIO::Filesystem::IOMemReader>(encoded.data(), encoded.size());
+    opened.input = OIIO::ImageInput::open(name, nullptr, opened.reader.get());
+    return opened;
+}
+
+template <class T>
+DecodedImage<T> decode(std::span<const std::uint8_t> encoded, const DecodeLimits& limits, OIIO::TypeDesc type)
+{
+    DecodedImage<T> out;
+    OpenedImage opened = openFromMemory(encoded);
+    if (!opened.input) {
+        out.error = "not an image OpenImageIO can read";
+        return out;
+    }
+    const OIIO::ImageSpec& spec = opened.input->spec();
+    const auto pixels = static_cast<std::uint64_t>(spec.width) * static_cast<std::uint64_t>(spec.height);
+    if (spec.width <= 0 || spec.height <= 0 || pixels > limits.maxPixels || pixels * 4 * sizeof(T) > limits.maxBytes) {
+        out.error = "image of " + std::to_string(spec.width) + "x" + std::to_string(spec.height) + " pixels exceeds the limits";
+        return out;
+    }
+    out.width = spec.width;
+    out.height = spec.height;
+    out.rgba.assign(pixels * 4, spec.nchannels >= 4 ? T(0) : type == OIIO::TypeDesc::FLOAT ? T(1) : T(255));
+    const int channels = std::min(spec.nchannels, 4);
+    if (!opened.input->read_image(0, 0, 0, channels, type, out.rgba.data(), 4 * sizeof(T))) {
+        out.error = opened.input->geterror();
+        out.rgba.clear();
+        return out;
+    }
+    if (channels < 3) { // grey (+ alpha): spread the grey over RGB
+        for (std::size_t i = 0; i < out.rgba.size(); i += 4) {
+            if (channels == 2) out.rgba[i + 3] = out.rgba[i + 1];
+            out.rgba[i + 1] = out.rgba[i + 2] = out.rgba[i];
+        }
+    }
+    return out;
+}
+
+} // namespace
+
+std::optional<ImageSize> OiioImageDecoder::probe(std::span<const std::uint8_t> encoded) const
+{
+    OpenedImage opened = openFromMemory(encoded);
+    if (!opened.input) return std::nullopt;
+    return ImageSize{opened.input->spec().width, opened.input->spec().height};
+}
+
+DecodedImage<float> OiioImageDecoder::decodeFloat(std::span<const std::uint8_t> encoded, const DecodeLimits& limits) const
+{
+    return decode<float>(encoded, limits, OIIO::TypeDesc::FLOAT);
+}
+
+DecodedImage<std::uint8_t> OiioImageDecoder::decode8(std::span<const std::uint8_t> encoded, const DecodeLimits& limits) const
+{
+    return decode<std::uint8_t>(encoded, limits, OIIO::TypeDesc::UINT8);
+}
+
+} // namespace glint
