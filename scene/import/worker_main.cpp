@@ -100,6 +100,13 @@ void limitAddressSpace(std::uint64_t bytes) {
     ::setrlimit(RLIMIT_AS, &limit);
 }
 
+// A crash on a hostile file is expected and reported by the parent; it must not leave a core file
+// in the user's working folder.
+void disableCoreDumps() {
+    rlimit none{0, 0};
+    ::setrlimit(RLIMIT_CORE, &none);
+}
+
 // Some importers print to stdout; the reply gets a descriptor of its own so nothing else lands in it.
 int takeStdoutForReply() {
     const int replyFd = ::dup(1);
@@ -134,6 +141,7 @@ glint::WorkerReply importToReply(const WorkerArguments& args) {
 } // namespace
 
 int main(int argc, char** argv) {
+    disableCoreDumps();
     misbehaveIfAsked();
     const std::optional<WorkerArguments> args = parseArguments(argc, argv);
     if (!args) {
