@@ -1,0 +1,123 @@
+// BVH benchmark (a program, not a test): build time and SAH cost for the bunny (~70k triangles)
+// and subdivided bunnies (~1.1M, ~4.4M) with 1 and 2 build threads, and CPU closest-hit rays/s.
+// Usage: bench_bvh OUTPUT_DIR [REPEATS]   writes OUTPUT_DIR/bvh_bench.csv and bvh_bench.json.
+#include "bvh_test_scenes.h"
+#include "renderer/bvh/traverse.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+using namespace glint::bvh;
+using namespace glint::bvh::test;
+
+namespace {
+
+struct Row {
+    std::string mesh;
+    std::size_t triangles = 0;
+    int threads = 0;
+    double buildMs = 0.0; // median
+    double sah = 0.0;
+    int depth = 0;
+    std::size_t nodes = 0;
+    double raysPerSecond = 0.0; // median; single-threaded closest hit, 0 when not measured
+};
+
+double median(std::vector<double> values)
+{
+    std::sort(values.begin(), values.end());
+    return values[values.size() / 2];
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+double measureRays(const MeshBvh& mesh, int repeats)
+{
+    const TestScene scene{{}, {}, buildTopLevel({Instance{}}, {mesh}), {}};
+    const FlatScene flat = flattenScene({mesh}, scene.topLevel);
+    std::mt19937 rng(5u);
+    std::vector<Ray> rays(200000);
+    for (Ray& ray : rays) ray = randomRayThrough(rng, mesh.bounds());
+    std::vector<double> rates;
+    for (int r = 0; r < repeats; ++r) {
+        const auto start = std::chrono::steady_clock::now();
+        int hits = 0;
+        for (const Ray& ray : rays) hits += intersectClosest(flat, ray, 1e30f).hit() ? 1 : 0;
+        rates.push_back(static_cast<double>(rays.size()) / secondsSince(start));
+        if (hits == 0) std::fprintf(stderr, "warning: no ray hit %s\\n", "the mesh");
+    }
+    return median(rates);
+}
+
+Row measureBuild(const std::string& name, const MeshTriangles& triangles, int threads, int repeats, bool rays)
+{
+    Row row{name, triangles.triangleCount(), threads};
+    BuildOptions options;
+    options.threads = threads;
+    std::vector<double> times;
+    MeshBvh mesh;
+    for (int r = 0; r < repeats; ++r) {
+        const auto start = std::chrono::steady_clock::now();
+        mesh = buildMeshBvh(triangles, options);
+        times.push_back(1000.0 * secondsSince(start));
+    }
+    row.buildMs = median(times);
+    row.sah = sahCost(mesh.bvh);
+    row.depth = maxDepth(mesh.bvh);
+    row.nodes = mesh.bvh.nodes.size();
+    if (rays) row.raysPerSecond = measureRays(mesh, repeats);
+    return row;
+}
+
+void writeFiles(const std::filesystem::path& dir, const std::vector<Row>& rows, int repeats)
+{
+    std::filesystem::create_directories(dir);
+    std::ofstream csv(dir / "bvh_bench.csv");
+    csv << "mesh,triangles,threads,build_ms_median,sah_cost,depth,nodes,rays_per_s_median\n";
+    std::ofstream json(dir / "bvh_bench.json");
+    json << "{\n  \"repeats\": " << repeats << ",\n  \"results\": [\n";
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        const Row& r = rows[i];
+        csv << r.mesh << ',' << r.triangles << ',' << r.threads << ',' << r.buildMs << ',' << r.sah << ',' << r.depth << ','
+            << r.nodes << ',' << r.raysPerSecond << '\n';
+        json << "    {\"mesh\": \"" << r.mesh << "\", \"triangles\": " << r.triangles << ", \"threads\": " << r.threads
+             << ", \"build_ms_median\": " << r.buildMs << ", \"sah_cost\": " << r.sah << ", \"depth\": " << r.depth
+             << ", \"nodes\": " << r.nodes << ", \"rays_per_s_median\": " << r.raysPerSecond << "}"
+             << (i + 1 < rows.size() ? "," : "") << '\n';
+    }
+    json << "  ]\n}\n";
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: bench_bvh OUTPUT_DIR [REPEATS]\n");
+        return 2;
+    }
+    const int repeats = argc > 2 ? std::max(1, std::stoi(argv[2])) : 5;
+    const MeshTriangles bunny = loadBunny();
+    const MeshTriangles bunny1m = subdivided(bunny, 2);
+    const MeshTriangles bunny4m = subdivided(bunny, 3);
+    std::vector<Row> rows;
+    for (int threads : {1, 2}) {
+        rows.push_back(measureBuild("bunny", bunny, threads, repeats, threads == 1));
+        rows.push_back(measureBuild("bunny_x16", bunny1m, threads, repeats, threads == 1));
+        rows.push_back(measureBuild("bunny_x64", bunny4m, threads, std::min(repeats, 3), threads == 1));
+    }
+    std::printf("%-10s %10s %7s %12s %9s %6s %10s %12s\n", "mesh", "triangles", "threads", "build ms", "SAH", "depth", "nodes", "rays/s");
+    for (const Row& r : rows)
+        std::printf("%-10s %10zu %7d %12.1f %9.3f %6d %10zu %12.0f\n", r.mesh.c_str(), r.triangles, r.threads, r.buildMs, r.sah,
+                    r.depth, r.nodes, r.raysPerSecond);
+    writeFiles(argv[1], rows, repeats);
+    return 0;
+}
