@@ -18,10 +18,9 @@ public:
 private:
     void step(std::size_t budget) {
         const std::uint32_t action = random_.below(100);
-        if (action < 8 && history_.canUndo()) {
-            history_.undo();
-            ++stats_.undos;
-        } else if (action < 12 && history_.canRedo()) {
+        if (action < 10 && history_.canUndo()) {
+            undo(1 + random_.below(3));
+        } else if (action < 30 && history_.canRedo()) {
             history_.redo();
             ++stats_.redos;
         } else if (action < 17 && budget >= 2) {
@@ -30,6 +29,13 @@ private:
             drag(std::min<std::size_t>(budget, 2 + random_.below(4)));
         } else {
             push(randomCommand(random_, scene_));
+        }
+    }
+
+    void undo(std::uint32_t steps) {
+        for (; steps > 0 && history_.canUndo(); --steps) {
+            history_.undo();
+            ++stats_.undos;
         }
     }
 
@@ -45,7 +51,10 @@ private:
         const std::uint64_t serial = history_.beginInteraction();
         const std::vector<NodeId> nodes = scene_.depthFirst();
         const bool material = nodes.empty() || (!scene_.materials.empty() && random_.chance(30));
-        if (material && scene_.materials.empty()) return push(randomCommand(random_, scene_));
+        if (material && scene_.materials.empty()) {
+            push(randomCommand(random_, scene_));
+            return;
+        }
         const NodeId node = nodes.empty() ? NodeId{} : random_.pick(nodes);
         const MaterialId target = material ? scene_.materials.begin()->first : MaterialId{};
         for (std::size_t i = 0; i < size; ++i) {
