@@ -26,6 +26,7 @@ struct Row {
     int depth = 0;
     std::size_t nodes = 0;
     double raysPerSecond = 0.0; // median; single-threaded closest hit, 0 when not measured
+    double hitFraction = 0.0;   // of the random rays through the mesh's box
 };
 
 double median(std::vector<double> values)
@@ -39,7 +40,7 @@ double secondsSince(std::chrono::steady_clock::time_point start)
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-double measureRays(const MeshBvh& mesh, int repeats)
+double measureRays(const MeshBvh& mesh, int repeats, double& hitFraction)
 {
     const TestScene scene{{}, {}, buildTopLevel({Instance{}}, {mesh}), {}};
     const FlatScene flat = flattenScene({mesh}, scene.topLevel);
@@ -49,10 +50,10 @@ double measureRays(const MeshBvh& mesh, int repeats)
     std::vector<double> rates;
     for (int r = 0; r < repeats; ++r) {
         const auto start = std::chrono::steady_clock::now();
-        int hits = 0;
+        std::size_t hits = 0;
         for (const Ray& ray : rays) hits += intersectClosest(flat, ray, 1e30f).hit() ? 1 : 0;
         rates.push_back(static_cast<double>(rays.size()) / secondsSince(start));
-        if (hits == 0) std::fprintf(stderr, "warning: no ray hit %s\\n", "the mesh");
+        hitFraction = static_cast<double>(hits) / static_cast<double>(rays.size());
     }
     return median(rates);
 }
@@ -73,7 +74,7 @@ Row measureBuild(const std::string& name, const MeshTriangles& triangles, int th
     row.sah = sahCost(mesh.bvh);
     row.depth = maxDepth(mesh.bvh);
     row.nodes = mesh.bvh.nodes.size();
-    if (rays) row.raysPerSecond = measureRays(mesh, repeats);
+    if (rays) row.raysPerSecond = measureRays(mesh, repeats, row.hitFraction);
     return row;
 }
 
@@ -81,16 +82,16 @@ void writeFiles(const std::filesystem::path& dir, const std::vector<Row>& rows, 
 {
     std::filesystem::create_directories(dir);
     std::ofstream csv(dir / "bvh_bench.csv");
-    csv << "mesh,triangles,threads,build_ms_median,sah_cost,depth,nodes,rays_per_s_median\n";
+    csv << "mesh,triangles,threads,build_ms_median,sah_cost,depth,nodes,rays_per_s_median,ray_hit_fraction\n";
     std::ofstream json(dir / "bvh_bench.json");
     json << "{\n  \"repeats\": " << repeats << ",\n  \"results\": [\n";
     for (std::size_t i = 0; i < rows.size(); ++i) {
         const Row& r = rows[i];
         csv << r.mesh << ',' << r.triangles << ',' << r.threads << ',' << r.buildMs << ',' << r.sah << ',' << r.depth << ','
-            << r.nodes << ',' << r.raysPerSecond << '\n';
+            << r.nodes << ',' << r.raysPerSecond << ',' << r.hitFraction << '\n';
         json << "    {\"mesh\": \"" << r.mesh << "\", \"triangles\": " << r.triangles << ", \"threads\": " << r.threads
              << ", \"build_ms_median\": " << r.buildMs << ", \"sah_cost\": " << r.sah << ", \"depth\": " << r.depth
-             << ", \"nodes\": " << r.nodes << ", \"rays_per_s_median\": " << r.raysPerSecond << "}"
+             << ", \"nodes\": " << r.nodes << ", \"rays_per_s_median\": " << r.raysPerSecond << ", \"ray_hit_fraction\": " << r.hitFraction << "}"
              << (i + 1 < rows.size() ? "," : "") << '\n';
     }
     json << "  ]\n}\n";
