@@ -49,7 +49,7 @@ double integrateAdaptive(const Density& pdf, double t0, double t1, double p0, do
     };
     double c[4] = {midpoint(t0, tm, p0, pm), midpoint(tm, t1, p0, pm), midpoint(t0, tm, pm, p1), midpoint(tm, t1, pm, p1)};
     double fine = c[0] + c[1] + c[2] + c[3];
-    if (depth == 0 || (minDepth <= 0 && std::abs(fine - coarse) < 2e-8)) return fine;
+    if (depth == 0 || (minDepth <= 0 && std::abs(fine - coarse) < 1e-7 + 1e-3 * fine)) return fine;
     return integrateAdaptive(pdf, t0, tm, p0, pm, c[0], depth - 1, minDepth - 1) +
            integrateAdaptive(pdf, tm, t1, p0, pm, c[1], depth - 1, minDepth - 1) +
            integrateAdaptive(pdf, t0, tm, pm, p1, c[2], depth - 1, minDepth - 1) +
@@ -65,7 +65,7 @@ std::vector<double> integratedCells(const Density& pdf) {
         for (int p = 0; p < kPhiCells * sub; ++p) {
             double t0 = t * dt, p0 = p * dp;
             double coarse = pdf(t0 + 0.5 * dt, p0 + 0.5 * dp) * std::sin(t0 + 0.5 * dt) * dt * dp;
-            cells[(t / sub) * kPhiCells + p / sub] += integrateAdaptive(pdf, t0, t0 + dt, p0, p0 + dp, coarse, 10, 2);
+            cells[(t / sub) * kPhiCells + p / sub] += integrateAdaptive(pdf, t0, t0 + dt, p0, p0 + dp, coarse, 6, 2);
         }
     }
     return cells;
