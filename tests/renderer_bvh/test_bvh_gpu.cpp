@@ -1,7 +1,8 @@
 // The GLSL traversal (shaders/bvh/) reads the flattened buffers exactly as the CPU twin does: the
 // same rays through the bunny and transformed instances give the same hits on the GPU and the CPU.
-// 128 x 128 rays; the triangle slot and instance must agree for every ray, t within 1e-5 relative
-// (GPU division may differ by an ULP or two; the watertight edge tests decide the same way).
+// 128 x 128 rays; the triangle slot, instance and object id must agree for every ray, t within 1e-5
+// relative and barycentrics within 1e-4 (GPU division may differ by an ULP or two; the watertight
+// edge tests decide the same way).
 #include "bvh_test_scenes.h"
 #include "renderer/bvh/bvh_layout.h"
 #include "renderer/bvh/size_check.h"
@@ -105,6 +106,8 @@ private slots:
             ++hitCount;
             QVERIFY2(static_cast<int>(gpuHit[3]) == cpu.slot, qPrintable(where + QString(": slot %1 vs %2").arg(gpuHit[3]).arg(cpu.slot)));
             QVERIFY2(std::abs(gpuHit[0] - cpu.t) <= 1e-5f * cpu.t, qPrintable(where + QString(": t %1 vs %2").arg(gpuHit[0]).arg(cpu.t)));
+            QVERIFY2(std::abs(gpuHit[1] - cpu.u) <= 1e-4f && std::abs(gpuHit[2] - cpu.v) <= 1e-4f,
+                     qPrintable(where + QString(": barycentrics (%1, %2) vs (%3, %4)").arg(gpuHit[1]).arg(gpuHit[2]).arg(cpu.u).arg(cpu.v)));
             QCOMPARE(static_cast<std::uint32_t>(gpuInstance[2]), scene.topLevel.instances[static_cast<std::size_t>(cpu.instance)].objectId);
         }
         qInfo("%s: %d of %d rays hit", context.renderer().c_str(), hitCount, kSize * kSize);
