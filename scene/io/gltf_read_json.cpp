@@ -2,6 +2,7 @@
 
 #include "scene/core/diagnostics.h"
 
+#include <charconv>
 #include <cmath>
 #include <limits>
 
@@ -128,7 +129,11 @@ Json unknownMembers(const Json& object, std::initializer_list<std::string_view> 
 float finiteFloat(double value, const std::string& file, const std::string& where)
 {
     if (!std::isfinite(value) || std::abs(value) > static_cast<double>(std::numeric_limits<float>::max()))
-        throw FileError(file, "non-finite-value", where + " is " + std::to_string(value) + ", outside the range of a float");
+    {
+        char text[32];
+        const auto end = std::to_chars(text, text + sizeof text, value).ptr;
+        throw FileError(file, "non-finite-value", where + " is " + std::string(text, end) + ", outside the range of a float");
+    }
     return static_cast<float>(value);
 }
 
