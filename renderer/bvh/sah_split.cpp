@@ -42,17 +42,28 @@ void measure(const BuildItems& items, std::uint32_t begin, std::uint32_t end, Aa
     }
 }
 
-// Best split along one axis: SAH cost (relative to the parent's area) of each bin boundary.
-void chooseOnAxis(const BuildItems& items, std::uint32_t begin, std::uint32_t end, const BinMapping& mapping,
-                  float parentArea, SplitChoice& best)
+using AxisBins = std::array<Bin, kMaxBins>;
+
+// Sorts the range into the bins of every axis that has extent, in one pass over the items.
+void fillBins(const BuildItems& items, std::uint32_t begin, std::uint32_t end, const std::array<BinMapping, 3>& mappings,
+              const std::array<bool, 3>& useAxis, std::array<AxisBins, 3>& bins)
 {
-    std::array<Bin, kMaxBins> bins{};
     for (std::uint32_t i = begin; i < end; ++i) {
         const std::uint32_t item = items.order[i];
-        Bin& bin = bins[static_cast<std::size_t>(mapping(items.centroids[item]))];
-        bin.bounds.grow(items.bounds[item]);
-        ++bin.count;
+        const glm::vec3& centroid = items.centroids[item];
+        const Aabb& box = items.bounds[item];
+        for (int axis = 0; axis < 3; ++axis) {
+            if (!useAxis[axis]) continue;
+            Bin& bin = bins[axis][static_cast<std::size_t>(mappings[axis](centroid))];
+            bin.bounds.grow(box);
+            ++bin.count;
+        }
     }
+}
+
+// Best bin boundary on one axis: SAH cost relative to the parent's area.
+void chooseOnAxis(const AxisBins& bins, const BinMapping& mapping, std::uint32_t count, float parentArea, SplitChoice& best)
+{
     std::array<float, kMaxBins> rightCost{};
     Aabb right;
     std::uint32_t rightCount = 0;
@@ -66,7 +77,7 @@ void chooseOnAxis(const BuildItems& items, std::uint32_t begin, std::uint32_t en
     for (int b = 1; b < mapping.bins; ++b) {
         left.grow(bins[b - 1].bounds);
         leftCount += bins[b - 1].count;
-        if (leftCount == 0 || leftCount == end - begin) continue;
+        if (leftCount == 0 || leftCount == count) continue;
         const float cost = (left.surfaceArea() * static_cast<float>(leftCount) + rightCost[b]) / parentArea;
         if (cost < best.cost) best = SplitChoice{cost, mapping, b};
     }
@@ -84,13 +95,18 @@ RangeSplit splitRange(BuildItems& items, std::uint32_t begin, std::uint32_t end,
 
     const int binCount = std::clamp(options.bins, 2, kMaxBins);
     const float parentArea = std::max(split.bounds.surfaceArea(), std::numeric_limits<float>::min());
-    SplitChoice best;
+    std::array<BinMapping, 3> mappings{};
+    std::array<bool, 3> useAxis{};
     for (int axis = 0; axis < 3; ++axis) {
         const float extent = centroidBounds.hi[axis] - centroidBounds.lo[axis];
-        if (!(extent > 0.0f)) continue;
-        const BinMapping mapping{axis, centroidBounds.lo[axis], static_cast<float>(binCount) / extent, binCount};
-        chooseOnAxis(items, begin, end, mapping, parentArea, best);
+        useAxis[axis] = extent > 0.0f;
+        mappings[axis] = BinMapping{axis, centroidBounds.lo[axis], useAxis[axis] ? static_cast<float>(binCount) / extent : 0.0f, binCount};
     }
+    std::array<AxisBins, 3> bins{};
+    fillBins(items, begin, end, mappings, useAxis, bins);
+    SplitChoice best;
+    for (int axis = 0; axis < 3; ++axis)
+        if (useAxis[axis]) chooseOnAxis(bins[axis], mappings[axis], count, parentArea, best);
     const float leafCost = static_cast<float>(count);
     const float splitCost = options.traversalCost + best.cost;
     if (count <= options.maxLeafSize && leafCost <= splitCost) return split;
