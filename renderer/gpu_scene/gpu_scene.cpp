@@ -8,7 +8,7 @@
 namespace glint::renderer {
 namespace {
 
-enum TextureUnit : GLuint { shapeUnit = 0, materialUnit = 1, lightUnit = 2, environmentUnit = 3, environmentCdfUnit = 4 };
+enum TextureUnit : GLuint { shapeUnit = 0, materialUnit = 1, lightUnit = 2, environmentUnit = 3, environmentCdfUnit = 4, firstMeshUnit = 5 };
 
 gl::TextureBuffer vec4Buffer(const std::string& what, const std::vector<glm::vec4>& texels) {
     return gl::TextureBuffer(what, GL_RGBA32F, texels.data(), texels.size(), sizeof(glm::vec4));
@@ -48,7 +48,9 @@ GpuScene::GpuScene(const Scene& scene, const std::filesystem::path& environmentF
       environment_(scene.settings.environment),
       shapes_(vec4Buffer("the shape buffer", packed_.shapes)),
       materials_(vec4Buffer("the material buffer", packed_.materials)),
-      lights_(vec4Buffer("the light buffer", packed_.lights)) {
+      lights_(vec4Buffer("the light buffer", packed_.lights)),
+      meshes_(scene, packed_.materialIndex) {
+    features_.meshes = !meshes_.empty();
     if (!environmentFile.empty()) {
         const EnvironmentImage image = loadEnvironmentImage(environmentFile);
         const auto table = twin::buildEnvironmentSamplingTable(image.width, image.height, image.rgb);
@@ -65,6 +67,7 @@ void GpuScene::bind(const gl::ShaderProgram& program) const {
     lights_.bind(lightUnit, program.uniform("uLights"));
     glUniform1i(program.uniform("uShapeCount"), packed_.shapeCount);
     glUniform1i(program.uniform("uLightCount"), packed_.lightCount);
+    meshes_.bind(program, firstMeshUnit);
     const glm::vec3 colour = environment_.color * environment_.intensity;
     glUniform3fv(program.uniform("uEnvironmentColor"), 1, glm::value_ptr(colour));
     if (features_.environmentMap) {

@@ -1,8 +1,9 @@
 #pragma once
-// A scene snapshot compiled into GPU data: texture buffers of shapes, materials and lights, and
-// the environment. Built on the GL thread; binds itself to a path-trace program.
+// A scene snapshot compiled into GPU data: texture buffers of shapes, materials and lights, the
+// meshes' BVH, and the environment. Built on the GL thread; binds itself to a path-trace program.
 #include "renderer/gl/shader_program.h"
 #include "renderer/gl/texture_buffer.h"
+#include "renderer/gpu_scene/gpu_meshes.h"
 #include "renderer/gpu_scene/packed_scene.h"
 
 #include <filesystem>
@@ -23,7 +24,7 @@ public:
     GpuScene(const Scene& scene, const std::filesystem::path& environmentFile);
 
     const SceneFeatures& features() const { return features_; }
-    // Binds the buffers to texture units 0..4 and sets the scene uniforms of `program`.
+    // Binds the buffers to texture units 0..12 and sets the scene uniforms of `program`.
     void bind(const gl::ShaderProgram& program) const;
 
 private:
@@ -33,6 +34,7 @@ private:
     gl::TextureBuffer shapes_;
     gl::TextureBuffer materials_;
     gl::TextureBuffer lights_;
+    GpuMeshes meshes_;
     gl::Texture environmentMap_;
     gl::Texture environmentCdf_; // renderer/cpu_twin/env_sampling.h layout
     glm::ivec2 environmentSize_{0};

@@ -1,5 +1,5 @@
-// The path integrator: next-event estimation at every vertex (punctual lights, and the environment
-// map with multiple importance sampling), BSDF sampling to continue, Russian roulette, and a bounce
+// The path integrator: next-event estimation at every vertex (punctual lights; emissive triangles
+// and the environment map with multiple importance sampling), BSDF sampling to continue, Russian roulette, and a bounce
 // limit with CONTRACTS.md semantics: bounces = 0 renders emitters and direct light only; each
 // further bounce adds one indirect vertex. Shading frames use the surface's outward normal: the
 // shared BSDF reads the side of wo (wo.z < 0: inside).
@@ -50,6 +50,25 @@ vec3 environmentLight(Vertex v, INOUT(Rng) rng) {
     return f * environmentRadiance(direction) * (powerHeuristic(lightPdf, bsdfPdf) / lightPdf);
 }
 
+// One emissive triangle, weighted against BSDF sampling by the power heuristic.
+vec3 areaLight(Vertex v, INOUT(Rng) rng) {
+    vec3 u = rand3(rng);
+    AreaLightSample ls;
+    if (!sampleEmissiveTriangle(v.position, u, ls)) return vec3(0.0);
+    float bsdfPdf;
+    vec3 f = bsdfEval(v.material, v.wo, localFromWorld(v.frame, ls.direction), bsdfPdf);
+    // Stop just short of the light so the shadow ray does not find the emitter itself.
+    if (maxComponent(f) <= 0.0 || occluded(spawnRay(v.position, v.faceNormal, ls.direction), ls.distance * (1.0 - 1e-4)))
+        return vec3(0.0);
+    return f * ls.radiance * (powerHeuristic(ls.pdf, bsdfPdf) / ls.pdf);
+}
+
+// Weight of emission found by BSDF sampling: emissive triangles are light-sampled too.
+float emissionMisWeight(Hit hit, vec3 emission, vec3 direction, float bsdfPdf) {
+    if (!hit.onMesh || bsdfPdf <= 0.0 || !hasEmissiveTriangles()) return 1.0;
+    return powerHeuristic(bsdfPdf, emissiveLightPdf(emission, hit.t, abs(dot(hit.geometricNormal, direction))));
+}
+
 // Weight of an environment contribution found by BSDF sampling (pdf 0: a delta lobe, weight 1).
 float environmentMisWeight(vec3 direction, float bsdfPdf) {
     if (!environmentIsSampled() || bsdfPdf <= 0.0) return 1.0;
@@ -83,10 +102,11 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng) {
             result.depth = hit.t * dot(ray.direction, viewAxis);
             result.objectId = hit.objectId;
         }
-        result.radiance += throughput * fetchEmission(hit.material);
+        vec3 emission = fetchEmission(hit.material);
+        result.radiance += throughput * emission * emissionMisWeight(hit, emission, ray.direction, lastBsdfPdf);
         if (depth > maxBounces) break;
 
-        result.radiance += throughput * (punctualLight(v, rng) + environmentLight(v, rng));
+        result.radiance += throughput * (punctualLight(v, rng) + areaLight(v, rng) + environmentLight(v, rng));
 
         BsdfSample bs;
         if (!bsdfSample(v.material, v.wo, rand3(rng), bs) || maxComponent(bs.weight) <= 0.0) break;

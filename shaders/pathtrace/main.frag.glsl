@@ -13,6 +13,7 @@
 #include "sampling/mis.glsl"
 #include "environment.glsl"
 #include "lights.glsl"
+#include "emissive_lights.glsl"
 #include "camera.glsl"
 #include "integrator.glsl"
 #include "output_guard.glsl"

@@ -1,0 +1,36 @@
+#pragma once
+// The scene's triangle meshes on the GPU: the two-level BVH of renderer/bvh (layout in
+// bvh_layout.h), per-vertex shading normals, and the emissive triangles for light sampling.
+#include "renderer/gl/shader_program.h"
+#include "renderer/gl/texture_buffer.h"
+#include "renderer/gpu_scene/emissive_triangles.h"
+#include "scene/core/scene.h"
+
+#include <map>
+#include <memory>
+#include <optional>
+
+namespace glint::renderer {
+
+class GpuMeshes {
+public:
+    // `materialIndex`: the renderer's material table. Throws std::runtime_error when the BVH is
+    // invalid or exceeds GL_MAX_TEXTURE_BUFFER_SIZE.
+    GpuMeshes(const Scene& scene, const std::map<MaterialId, int>& materialIndex);
+    ~GpuMeshes();
+
+    bool empty() const { return triangleCount_ == 0; }
+    std::size_t triangleCount() const { return triangleCount_; }
+    // Texture units firstUnit .. firstUnit + 7.
+    void bind(const gl::ShaderProgram& program, GLuint firstUnit) const;
+
+private:
+    struct Buffers;
+    std::unique_ptr<Buffers> buffers_;
+    std::size_t triangleCount_ = 0;
+    int topLevelRoot_ = -1;
+    int emissiveCount_ = 0;
+    float emissivePower_ = 0.0f;
+};
+
+} // namespace glint::renderer

@@ -1,0 +1,73 @@
+// Emissive mesh triangles as lights (renderer/gpu_scene/emissive_triangles.h): one triangle chosen
+// in proportion to its power, a uniform point on it. Since the choice is proportional to area x
+// luminance, the pdf per unit area of any emitter point is luminance / uEmissivePower, which lets
+// BSDF-sampled hits compute their MIS weight from the material alone.
+#ifdef HAS_MESHES
+uniform samplerBuffer uEmissiveTriangles; // 4 texels per triangle: p0, p1, p2, emission
+uniform samplerBuffer uEmissiveCdf;       // uEmissiveCount + 1 ascending values
+uniform int uEmissiveCount;
+uniform float uEmissivePower;
+#endif
+
+struct AreaLightSample {
+    vec3 direction;
+    float distance;
+    vec3 radiance;
+    float pdf; // per solid angle at the shading point
+};
+
+// Solid-angle pdf of light sampling for a point of emission `emission` seen at distance t under cos.
+float emissiveLightPdf(vec3 emission, float t, float cosAtLight) {
+#ifdef HAS_MESHES
+    if (uEmissiveCount == 0 || cosAtLight <= 0.0) return 0.0;
+    return luminance(emission) / uEmissivePower * t * t / cosAtLight;
+#else
+    return 0.0;
+#endif
+}
+
+bool hasEmissiveTriangles() {
+#ifdef HAS_MESHES
+    return uEmissiveCount > 0;
+#else
+    return false;
+#endif
+}
+
+#ifdef HAS_MESHES
+int findEmissiveTriangle(float u) {
+    int lo = 0;
+    int hi = uEmissiveCount;
+    while (hi - lo > 1) {
+        int mid = (lo + hi) / 2;
+        if (texelFetch(uEmissiveCdf, mid).x <= u) lo = mid;
+        else hi = mid;
+    }
+    return lo;
+}
+#endif
+
+bool sampleEmissiveTriangle(vec3 p, vec3 u, OUT(AreaLightSample) s) {
+    s = AreaLightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0), 0.0);
+#ifdef HAS_MESHES
+    if (uEmissiveCount == 0) return false;
+    int i = findEmissiveTriangle(u.x);
+    vec3 p0 = texelFetch(uEmissiveTriangles, 4 * i).xyz;
+    vec3 p1 = texelFetch(uEmissiveTriangles, 4 * i + 1).xyz;
+    vec3 p2 = texelFetch(uEmissiveTriangles, 4 * i + 2).xyz;
+    vec3 emission = texelFetch(uEmissiveTriangles, 4 * i + 3).xyz;
+    float su = sqrt(u.y);
+    vec3 q = (1.0 - su) * p0 + (u.z * su) * p1 + (su - u.z * su) * p2;
+    vec3 offset = q - p;
+    float distance = length(offset);
+    if (!(distance > 0.0)) return false;
+    vec3 direction = offset / distance;
+    float cosAtLight = abs(dot(normalize(cross(p1 - p0, p2 - p0)), direction));
+    float pdf = emissiveLightPdf(emission, distance, cosAtLight);
+    if (!(pdf > 0.0) || !isFiniteFloat(pdf)) return false;
+    s = AreaLightSample(direction, distance, emission, pdf);
+    return true;
+#else
+    return false;
+#endif
+}
