@@ -53,7 +53,7 @@ std::vector<std::uint32_t> indicesOf(const GltfReadContext& ctx, const tinygltf:
     std::vector<std::uint32_t> indices(vertexCount);
     if (source.indices < 0) {
         std::iota(indices.begin(), indices.end(), 0u);
-        return indices;
+        return triangleListFrom(source.mode, indices);
     }
     indices = readAccessorIndices(ctx, source.indices, "the indices of " + where);
     for (std::size_t i = 0; i < indices.size(); ++i)
