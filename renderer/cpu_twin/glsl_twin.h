@@ -1,9 +1,11 @@
 #pragma once
 // The C++ twin of the shared GLSL (shaders/common, shaders/sampling, shaders/bsdf): the same source
 // files compiled as C++ through GLM, so that CPU tests check the code the GPU runs. This header
-// supplies what GLSL has built in and C++ lacks (out-parameters, uint, sampler2D + texelFetch).
+// supplies what GLSL has built in and C++ lacks (out-parameters, uint, sampler2D + texelFetch,
+// array constructors).
 // The files land in an unnamed namespace: GLSL functions cannot be marked inline, and internal
 // linkage keeps each test's copy to itself.
+#include <array>
 #include <cstdint>
 #include <glm/glm.hpp>
 
@@ -23,8 +25,15 @@ inline vec4 texelFetch(const sampler2D& texture, ivec2 p, int /*lod*/) {
     return vec4(texture.texels[p.y * texture.width + p.x], 0.0f, 0.0f, 1.0f);
 }
 
+template <std::size_t N, typename... Values>
+constexpr std::array<float, N> floatTable(Values... values) {
+    static_assert(sizeof...(Values) == N, "FLOAT_TABLE: wrong number of values");
+    return {float(values)...};
+}
+
 #define OUT(T) T&
 #define INOUT(T) T&
+#define FLOAT_TABLE(name, n) const std::array<float, n> name = floatTable<n>
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-function"
@@ -42,5 +51,6 @@ namespace {
 
 #undef OUT
 #undef INOUT
+#undef FLOAT_TABLE
 
 } // namespace glint::twin

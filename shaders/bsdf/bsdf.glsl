@@ -5,13 +5,15 @@
 //                                    Schlick(F0)) over Lambert, which is scaled by
 //                                    (1 - F(wo.z)) (1 - F(wi.z)) / (1 - average F)
 // Roughness below sqrt(GGX_DELTA_ALPHA) makes the specular lobes deltas. Opaque lobes are two-sided
-// (mirrored when wo.z < 0); the dielectric uses the side to pick eta. The GGX lobes are single-
-// scattering: see docs/MATERIALS.md for the energy they lose at high roughness.
+// (mirrored when wo.z < 0); the dielectric uses the side to pick eta. The reflective GGX lobes are
+// compensated for multiple scattering (ggx_energy.glsl); the dielectric's are not: see
+// docs/MATERIALS.md for the energy each keeps.
 #ifdef __cplusplus
 #pragma once
 #endif
 #include "bsdf/bsdf_sample.glsl"
 #include "bsdf/dielectric.glsl"
+#include "bsdf/ggx_energy.glsl"
 #include "bsdf/lambert.glsl"
 
 // Mixture weights and the probabilities of sampling each lobe, from the material and wo.
@@ -21,6 +23,8 @@ struct BsdfLobes {
     float layered;
     float alpha;
     vec3 layerF0;       // KHR_materials_specular F0 of the dielectric layer
+    vec3 metalEnergyScale; // multiple-scattering compensation of the two GGX lobes at wo
+    vec3 layerEnergyScale;
     float pMetal;       // lobe choice probabilities, summing to 1 (or all 0: a black surface)
     float pGlass;
     float pLayerSpecular;
@@ -39,8 +43,11 @@ BsdfLobes bsdfLobes(SurfaceMaterial m, float cosWo) {
     float pDiffuse = layered * (1.0f - layerF) * maxComponent(m.baseColor);
     float total = pMetal + pGlass + pLayerSpecular + pDiffuse;
     float scale = total > 0.0f ? 1.0f / total : 0.0f;
-    return BsdfLobes(metal, glass, layered, ggxAlphaFromRoughness(m.roughness), f0, pMetal * scale,
-                     pGlass * scale, pLayerSpecular * scale, pDiffuse * scale);
+    float mu = abs(cosWo);
+    vec3 metalEnergyScale = ggxMultipleScatteringScale(m.baseColor, mu, m.roughness);
+    vec3 layerEnergyScale = ggxMultipleScatteringScale(m.specularFactor * f0, mu, m.roughness);
+    return BsdfLobes(metal, glass, layered, ggxAlphaFromRoughness(m.roughness), f0, metalEnergyScale,
+                     layerEnergyScale, pMetal * scale, pGlass * scale, pLayerSpecular * scale, pDiffuse * scale);
 }
 
 // Reflectance of the KHR_materials_specular layer seen from a direction at cos(theta) to the normal.
@@ -68,7 +75,8 @@ vec3 opaqueEval(SurfaceMaterial m, BsdfLobes l, vec3 wo, vec3 wi, OUT(float) pdf
         float cosOH = max(dot(wo, normalize(wo + wi)), 0.0f);
         float microfacet = ggxReflectionNoFresnel(wo, wi, l.alpha);
         vec3 layerF = m.specularFactor * fresnelSchlick(l.layerF0, cosOH);
-        vec3 specular = l.metal * fresnelSchlick(m.baseColor, cosOH) + l.layered * layerF;
+        vec3 specular = l.metal * l.metalEnergyScale * fresnelSchlick(m.baseColor, cosOH) +
+                        l.layered * l.layerEnergyScale * layerF;
         f += specular * microfacet;
         pdf += (l.pMetal + l.pLayerSpecular) * ggxReflectionPdf(wo, wi, l.alpha);
     }
