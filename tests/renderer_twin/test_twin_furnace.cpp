@@ -11,7 +11,7 @@ using namespace glint::twin;
 
 namespace {
 
-constexpr int kSamples = 200000;
+constexpr int kSamples = 100000;
 
 SurfaceMaterial whiteMaterial(float metallic, float roughness, float transmission, bool thinWalled) {
     SurfaceMaterial m = defaultSurfaceMaterial();
