@@ -9,7 +9,6 @@
 #include <QtTest>
 
 #include <cmath>
-#include <functional>
 #include <vector>
 
 using namespace glint::twin;
@@ -35,10 +34,9 @@ int cellOf(vec3 w) {
     return t * kPhiCells + p;
 }
 
-using Density = std::function<double(double theta, double phi)>;
-
 // Integral of density * sin(theta) over a rectangle in (theta, phi), refined where the midpoint
 // rule on 2x2 children disagrees with the parent's (peaked GGX lobes at low roughness).
+template <typename Density> // double(double theta, double phi)
 double integrateAdaptive(const Density& pdf, double t0, double t1, double p0, double p1, double coarse, int depth,
                          int minDepth) {
     double tm = 0.5 * (t0 + t1);
@@ -56,6 +54,7 @@ double integrateAdaptive(const Density& pdf, double t0, double t1, double p0, do
            integrateAdaptive(pdf, tm, t1, pm, p1, c[3], depth - 1, minDepth - 1);
 }
 
+template <typename Density>
 std::vector<double> integratedCells(const Density& pdf) {
     constexpr int sub = 8;
     std::vector<double> cells(kThetaCells * kPhiCells, 0.0);
