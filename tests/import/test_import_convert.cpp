@@ -15,6 +15,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <memory>
 
 using namespace glint;
@@ -154,6 +155,54 @@ private slots:
         const Image& refused = r.scene.images.at(r.scene.textures.at(m.specularColorTexture.texture).image);
         QVERIFY(refused.missing);
         QVERIFY(refused.encoded.empty());
+    }
+
+    void texturePathsAreConfinedToTheModelsFolder() {
+        QTemporaryDir dir;
+        const std::filesystem::path root = dir.path().toStdString();
+        const std::filesystem::path folder = root / "model";
+        std::filesystem::create_directory(folder);
+        const std::string png = "\x89PNG\r\n\x1a\n";
+        writeText(root / "secret.png", png);
+        writeText(folder / "beside.png", png);
+        std::filesystem::create_symlink(root / "secret.png", folder / "link.png");
+        writeText(folder / "m.mtl", "newmtl a\nmap_Kd " + (root / "elsewhere" / "beside.png").string() + "\nmap_Ks link.png\n");
+        writeText(folder / "m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n");
+
+        LoadResult r = readWithAssimp(folder / "m.obj", {folder / "m.obj"});
+        const Material& m = onlyMaterialOfFirstMesh(r.scene);
+        // An absolute path is looked up by name beside the model.
+        const Image& beside = r.scene.images.at(r.scene.textures.at(m.baseColorTexture.texture).image);
+        QVERIFY(!beside.missing);
+        QCOMPARE(beside.encoded.size(), png.size());
+        QVERIFY(hasWarning(r.warnings, "texture-path-absolute"));
+        // A symlink that leads out of the folder is refused.
+        const Image& linked = r.scene.images.at(r.scene.textures.at(m.specularColorTexture.texture).image);
+        QVERIFY(linked.missing);
+        QVERIFY(linked.encoded.empty());
+        QVERIFY(hasWarning(r.warnings, "texture-outside-folder"));
+    }
+
+    void embeddedTexturesKeepTheirBytes() {
+        auto ai = meshScene({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}});
+        static const unsigned char jpeg[] = {0xFF, 0xD8, 0xFF, 0xE0, 0x00, 0x10};
+        auto* texture = new aiTexture;
+        texture->mWidth = sizeof jpeg; // compressed: mHeight 0, mWidth bytes
+        texture->mHeight = 0;
+        texture->pcData = reinterpret_cast<aiTexel*>(new unsigned char[sizeof jpeg]);
+        std::memcpy(texture->pcData, jpeg, sizeof jpeg);
+        ai->mNumTextures = 1;
+        ai->mTextures = new aiTexture*[1]{texture};
+        const aiString reference("*0");
+        ai->mMaterials[0]->AddProperty(&reference, AI_MATKEY_TEXTURE_DIFFUSE(0));
+
+        LoadResult r = convertAssimpScene(*ai, {"embedded.fbx"});
+        const Material& m = onlyMaterialOfFirstMesh(r.scene);
+        const Image& image = r.scene.images.at(r.scene.textures.at(m.baseColorTexture.texture).image);
+        QCOMPARE(image.mimeType, std::string("image/jpeg"));
+        QVERIFY(image.encoded == std::vector<std::uint8_t>(std::begin(jpeg), std::end(jpeg)));
+        QVERIFY(image.uri.empty());
+        QVERIFY(r.warnings.empty());
     }
 
     void roughnessFollowsTheBlinnPhongRelation() {
