@@ -88,6 +88,26 @@ private slots:
         QCOMPARE(p.material, MaterialId{7});
     }
 
+    // u runs along the longitude (counter-clockwise seen from +Y) and v from the north pole down,
+    // so MikkTSpace's tangent is the eastward direction and the glTF bitangent points north. On the
+    // uv seam (u = 0 or 1) MikkTSpace sees one side only: the tangent is the chord of one segment,
+    // half a segment angle (180 / 32 degrees) off.
+    void sphereTangentsFollowTheLongitude() {
+        const int segments = 32;
+        const Primitive p = tessellateShape(shapeOf(ShapeKind::Sphere), segments);
+        for (std::size_t v = 0; v < p.positions.size(); ++v) {
+            const glm::vec3 n = p.normals[v];
+            if (std::abs(n.y) == 1.0f) continue; // at the poles longitude has no direction
+            const glm::vec3 east = glm::normalize(glm::vec3(n.z, 0.0f, -n.x)); // d/d(longitude)
+            const glm::vec3 tangent(p.tangents[v]);
+            const bool onSeam = p.uv0[v].x == 0.0f || p.uv0[v].x == 1.0f;
+            const float toleranceDegrees = onSeam ? 180.0f / segments + 0.1f : 0.1f; // 0.1: float rounding
+            QVERIFY2(glm::dot(tangent, east) >= std::cos(glm::radians(toleranceDegrees)), qPrintable(QString::number(v)));
+            const glm::vec3 bitangent = glm::cross(n, tangent) * p.tangents[v].w;
+            QVERIFY(bitangent.y > 0.0f);
+        }
+    }
+
     void boxIsClosedOutwardWithItsExtents() {
         const Primitive p = tessellateShape(shapeOf(ShapeKind::Box));
         verifyAttributesFilled(p);
