@@ -189,7 +189,7 @@ private slots:
         auto* texture = new aiTexture;
         texture->mWidth = sizeof jpeg; // compressed: mHeight 0, mWidth bytes
         texture->mHeight = 0;
-        texture->pcData = reinterpret_cast<aiTexel*>(new unsigned char[sizeof jpeg]);
+        texture->pcData = new aiTexel[2]; // aiTexture's destructor frees an aiTexel array
         std::memcpy(texture->pcData, jpeg, sizeof jpeg);
         ai->mNumTextures = 1;
         ai->mTextures = new aiTexture*[1]{texture};
