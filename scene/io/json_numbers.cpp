@@ -39,7 +39,8 @@ void appendDouble(std::string& out, double d)
         out += "null";
         return;
     }
-    appendNumber(out, d);
+    // JSON readers parse "-0" as the integer 0: write every zero as "0" so a re-save is identical.
+    appendNumber(out, d == 0.0 ? 0.0 : d);
 }
 
 // Invalid UTF-8 in a name must not abort a save: it becomes U+FFFD, the same on every save.

@@ -17,7 +17,8 @@ nlohmann::json jsonFloat(float f);
 nlohmann::json jsonFloats(std::span<const float> values);
 
 // Text with object keys sorted (nlohmann::json keeps objects ordered by key), `indent` spaces per
-// level (negative: compact, one line), numbers by std::to_chars, strings escaped as JSON requires.
+// level (negative: compact, one line), numbers by std::to_chars (-0 as 0), strings escaped as JSON
+// requires.
 std::string deterministicJsonText(const nlohmann::json& value, int indent);
 
 // Adds the members of `unknown` that `target` lacks, verbatim (objects merged key by key): how

@@ -54,6 +54,7 @@ private slots:
         QCOMPARE(deterministicJsonText(jsonFloat(3.4028235e38f), -1), std::string("3.4028235e+38"));
         QCOMPARE(deterministicJsonText(jsonFloat(std::numeric_limits<float>::infinity()), -1), std::string("null"));
         QCOMPARE(deterministicJsonText(json(0.1), -1), std::string("0.1"));
+        QCOMPARE(deterministicJsonText(jsonFloat(-0.0f), -1), std::string("0"));
         QCOMPARE(deterministicJsonText(json(0.1f), -1), std::string("0.10000000149011612")); // why jsonFloat exists
     }
 
