@@ -9,10 +9,15 @@ namespace {
 
 constexpr int kMaxBins = 64;
 
+// No member initialisers: a range resets only the bins it uses (kEmptyBin).
 struct Bin {
-    Aabb bounds;
-    std::uint32_t count = 0;
+    glm::vec3 lo;
+    glm::vec3 hi;
+    std::uint32_t count;
 };
+
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+const Bin kEmptyBin{glm::vec3(kInfinity), glm::vec3(-kInfinity), 0};
 
 struct BinMapping {
     int axis = 0;
@@ -42,7 +47,7 @@ void measure(const BuildItems& items, std::uint32_t begin, std::uint32_t end, Aa
     }
 }
 
-using AxisBins = std::array<Bin, kMaxBins>;
+using AxisBins = std::array<Bin, kMaxBins>; // only the first `bins` entries of a mapping are used
 
 // Sorts the range into the bins of every axis that has extent, in one pass over the items.
 void fillBins(const BuildItems& items, std::uint32_t begin, std::uint32_t end, const std::array<BinMapping, 3>& mappings,
@@ -55,30 +60,31 @@ void fillBins(const BuildItems& items, std::uint32_t begin, std::uint32_t end, c
         for (int axis = 0; axis < 3; ++axis) {
             if (!useAxis[axis]) continue;
             Bin& bin = bins[axis][static_cast<std::size_t>(mappings[axis](centroid))];
-            bin.bounds.grow(box);
+            bin.lo = glm::min(bin.lo, box.lo);
+            bin.hi = glm::max(bin.hi, box.hi);
             ++bin.count;
         }
     }
 }
 
-// Best bin boundary on one axis: SAH cost relative to the parent's area.
-void chooseOnAxis(const AxisBins& bins, const BinMapping& mapping, std::uint32_t count, float parentArea, SplitChoice& best)
+// Best bin boundary on one axis: SAH cost times the parent's area (divided once, by the caller).
+void chooseOnAxis(const AxisBins& bins, const BinMapping& mapping, std::uint32_t count, SplitChoice& best)
 {
     std::array<float, kMaxBins> rightCost{};
     Aabb right;
     std::uint32_t rightCount = 0;
     for (int b = mapping.bins - 1; b > 0; --b) {
-        right.grow(bins[b].bounds);
+        right.grow(Aabb{bins[b].lo, bins[b].hi});
         rightCount += bins[b].count;
         rightCost[b] = right.surfaceArea() * static_cast<float>(rightCount);
     }
     Aabb left;
     std::uint32_t leftCount = 0;
     for (int b = 1; b < mapping.bins; ++b) {
-        left.grow(bins[b - 1].bounds);
+        left.grow(Aabb{bins[b - 1].lo, bins[b - 1].hi});
         leftCount += bins[b - 1].count;
         if (leftCount == 0 || leftCount == count) continue;
-        const float cost = (left.surfaceArea() * static_cast<float>(leftCount) + rightCost[b]) / parentArea;
+        const float cost = left.surfaceArea() * static_cast<float>(leftCount) + rightCost[b];
         if (cost < best.cost) best = SplitChoice{cost, mapping, b};
     }
 }
@@ -93,7 +99,8 @@ RangeSplit splitRange(BuildItems& items, std::uint32_t begin, std::uint32_t end,
     const std::uint32_t count = end - begin;
     if (count <= 1) return split;
 
-    const int binCount = std::clamp(options.bins, 2, kMaxBins);
+    // Small ranges need no more bins than items: the sweep over empty bins was most of their cost.
+    const int binCount = std::clamp(std::min(options.bins, static_cast<int>(std::max(count, 4u))), 2, kMaxBins);
     const float parentArea = std::max(split.bounds.surfaceArea(), std::numeric_limits<float>::min());
     std::array<BinMapping, 3> mappings{};
     std::array<bool, 3> useAxis{};
@@ -102,11 +109,13 @@ RangeSplit splitRange(BuildItems& items, std::uint32_t begin, std::uint32_t end,
         useAxis[axis] = extent > 0.0f;
         mappings[axis] = BinMapping{axis, centroidBounds.lo[axis], useAxis[axis] ? static_cast<float>(binCount) / extent : 0.0f, binCount};
     }
-    std::array<AxisBins, 3> bins{};
+    std::array<AxisBins, 3> bins;
+    for (AxisBins& axisBins : bins) std::fill_n(axisBins.begin(), binCount, kEmptyBin);
     fillBins(items, begin, end, mappings, useAxis, bins);
     SplitChoice best;
     for (int axis = 0; axis < 3; ++axis)
-        if (useAxis[axis]) chooseOnAxis(bins[axis], mappings[axis], count, parentArea, best);
+        if (useAxis[axis]) chooseOnAxis(bins[axis], mappings[axis], count, best);
+    best.cost /= parentArea;
     const float leafCost = static_cast<float>(count);
     const float splitCost = options.traversalCost + best.cost;
     if (count <= options.maxLeafSize && leafCost <= splitCost) return split;
