@@ -7,6 +7,7 @@
 
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -184,6 +185,43 @@ private slots:
         const ChannelStats below = channelStats(renderAt(30.0f).radiance, 0);
         QVERIFY2(std::abs(below.mean - expected) < 0.03 * expected, qPrintable(QString("%1 vs %2").arg(below.mean).arg(expected)));
         QCOMPARE(channelStats(renderAt(60.0f).radiance, 0).maximum, 0.0);
+    }
+    // 3x3 pixels, 1 spp, seed 8, 0 bounces. An orthographic camera (1 mm across) looks straight down
+    // at a white Lambert ground at x = -1, 0, +1 m; a light 2 m above x = 0 shines down. A point light
+    // of I cd gives L = 1/pi * I/683 / d^2 * cos; a spot light (inner 10, outer 40 degrees) adds the
+    // KHR_lights_punctual smooth falloff, ((cos a - cos outer) / (cos inner - cos outer))^2 clamped.
+    // Tolerance 0.1 %.
+    void pointAndSpotLightsFollowTheInverseSquareLaw_data() {
+        QTest::addColumn<int>("type");
+        QTest::newRow("point") << int(LightType::Point);
+        QTest::newRow("spot") << int(LightType::Spot);
+    }
+    void pointAndSpotLightsFollowTheInverseSquareLaw() {
+        QFETCH(int, type);
+        const float inner = glm::radians(10.0f), outer = glm::radians(40.0f);
+        for (float x : {-1.0f, 0.0f, 1.0f}) {
+            Scene scene;
+            const MaterialId white = scene.materials.add(lambert(glm::vec3(1.0f)));
+            addShape(scene, ShapeKind::GroundPlane, white, glm::vec3(0.0f));
+            Light light;
+            light.type = static_cast<LightType>(type);
+            light.intensity = 500.0f;
+            light.innerConeAngle = inner;
+            light.outerConeAngle = outer;
+            addNode(scene, "light", light, {0.0f, 2.0f, 0.0f}, lookRotation({0.0f, -1.0f, 0.0f}, {0.0f, 0.0f, -1.0f}));
+            addOrthographicCamera(scene, {x, 1.0f, 0.0f}, {0.0f, -1.0f, 0.0f}, 0.0005f);
+            const auto out = render(scene, 3, 1, 8, 0);
+            const double d2 = x * x + 4.0, cosine = 2.0 / std::sqrt(d2);
+            double falloff = 1.0;
+            if (light.type == LightType::Spot) {
+                const double t = std::clamp((cosine - std::cos(outer)) / (std::cos(inner) - std::cos(outer)), 0.0, 1.0);
+                falloff = t * t;
+            }
+            const double expected = 1.0 / M_PI * 500.0 / 683.0 / d2 * cosine * falloff;
+            const double actual = channelStats(out.radiance, 0).mean;
+            QVERIFY2(std::abs(actual - expected) <= 1e-3 * expected,
+                     qPrintable(QString("x %1: %2 vs %3").arg(x).arg(actual).arg(expected)));
+        }
     }
 };
 
