@@ -2,6 +2,7 @@
 // closest t (bit for bit) and the same triangle, on the bunny and on transformed instances.
 #include "bvh_test_scenes.h"
 #include "renderer/bvh/traverse.h"
+#include "renderer/bvh/bvh_layout.h"
 #include "renderer/bvh/triangle_intersect.h"
 #include "renderer/bvh/validate.h"
 
@@ -9,6 +10,7 @@
 
 #include <QTest>
 
+#include <cmath>
 #include <limits>
 
 using namespace glint;
@@ -115,6 +117,43 @@ private slots:
         const Ray ray{{-0.02f, 0.1f, -1.0f}, {0.0f, 0.0f, 1.0f}};
         (void)intersectClosest(scene.flat, ray, kFar);
         (void)occluded(scene.flat, ray, kFar); // returning at all is what this test is about
+    }
+
+    void shapeInstancesGoThroughTheIntersector()
+    {
+        // A unit sphere (shape 7 of the renderer's table) at z = 5 in front of a cube at z = 10.
+        const std::vector<MeshBvh> meshes{buildMeshBvh(closedGridCube(2, 1.0f, glm::vec3(-1.0f)), BuildOptions{})};
+        const std::vector<Instance> instances{
+            {glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, 10)), kInstanceMesh, 0, 1, {}},
+            {glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, 5)), glm::vec3(2.0f)), kInstanceShape, 7, 2,
+             Aabb{glm::vec3(-1.0f), glm::vec3(1.0f)}}};
+        const FlatScene flat = flattenScene(meshes, buildTopLevel(instances, meshes));
+        QCOMPARE(validateFlatScene(flat), std::optional<std::string>{});
+        std::vector<std::uint32_t> asked;
+        const ShapeIntersector unitSphere = [&](std::uint32_t shape, const Ray& local, float& tMax) {
+            asked.push_back(shape);
+            const float a = glm::dot(local.direction, local.direction);
+            const float b = glm::dot(local.origin, local.direction);
+            const float c = glm::dot(local.origin, local.origin) - 1.0f;
+            const float disc = b * b - a * c;
+            if (disc < 0.0f) return false;
+            const float t = (-b - std::sqrt(disc)) / a;
+            if (!(t > 0.0f && t < tMax)) return false;
+            tMax = t;
+            return true;
+        };
+        const Ray ray{{0.5f, 0.5f, 0.0f}, {0.0f, 0.0f, 1.0f}};
+        const RayHit hit = intersectClosest(flat, ray, kFar, unitSphere);
+        QCOMPARE(hit.instance, 1);
+        QCOMPARE(hit.slot, -1);
+        QCOMPARE(hit.t, 5.0f - std::sqrt(4.0f - 0.5f)); // the sphere of radius 2 at z = 5
+        QCOMPARE(asked, std::vector<std::uint32_t>{7});
+        QVERIFY(occluded(flat, ray, 4.0f, unitSphere));
+        QVERIFY(!occluded(flat, ray, 3.0f, unitSphere));
+        // Without an intersector the shape is skipped and the cube behind it is hit.
+        const RayHit behind = intersectClosest(flat, ray, kFar);
+        QCOMPARE(behind.instance, 0);
+        QCOMPARE(behind.t, 9.0f);
     }
 
     void closestHitReportsBarycentrics()
