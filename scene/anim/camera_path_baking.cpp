@@ -39,8 +39,8 @@ Animation bakeCameraPath(const CameraPath& path, NodeId cameraNode, double fps) 
     AnimationChannel translation = emptyChannel(cameraNode, AnimationPath::Translation);
     AnimationChannel rotation = emptyChannel(cameraNode, AnimationPath::Rotation);
     glm::dquat previous{1.0, 0.0, 0.0, 0.0};
-    for (double t : bakeTimes(path, fps)) {
-        const CameraKey key = sampleCameraPath(path, t);
+    for (const CameraKey& key : sampleCameraPath(path, bakeTimes(path, fps))) {
+        const double t = key.time;
         // Keep neighbouring samples in one hemisphere so every tool's LINEAR slerp agrees.
         const glm::dquat q = glm::dot(previous, key.orientation) < 0.0 ? -key.orientation : key.orientation;
         previous = q;

@@ -5,6 +5,7 @@
 #include "camera_path_rotation.h"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 
 namespace glint {
@@ -13,16 +14,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Constant speed: the path time whose travelled distance is the same fraction of the whole
-// length as t is of the whole duration. A path that does not move keeps its own timing.
-double constantSpeedTime(const std::vector<CameraKey>& keys, double t) {
-    const ArcLengthTable table(keys);
-    if (table.totalLength() <= 0.0) return t;
-    const double start = keys.front().time, end = keys.back().time;
-    const double fraction = std::clamp((t - start) / (end - start), 0.0, 1.0);
-    return table.timeAtDistance(fraction * table.totalLength());
-}
-
 // Hermite lens values can overshoot between keys; keep them physically meaningful.
 void clampLens(CameraKey& key) {
     key.yfov = std::clamp(key.yfov, 1e-4f, float(kPi) - 1e-4f);
@@ -30,12 +21,33 @@ void clampLens(CameraKey& key) {
     key.lensRadius = std::max(key.lensRadius, 0.0f);
 }
 
-CameraKey interpolateKeys(const std::vector<CameraKey>& keys, RotationInterpolation rotation, double t) {
+// What every sample of one path (of at least two keys) shares, computed once.
+struct PreparedPath {
+    const CameraPath& path;
+    std::vector<glm::dquat> orientations;
+    std::optional<ArcLengthTable> arcLength; // constant speed only
+
+    explicit PreparedPath(const CameraPath& p) : path(p), orientations(consistentOrientations(p.keys)) {
+        if (p.constantSpeed) arcLength.emplace(p.keys);
+    }
+
+    // Constant speed: the curve time whose travelled distance is the same fraction of the whole
+    // length as t is of the whole duration. A path that does not move keeps its own timing.
+    double curveTime(double t) const {
+        if (!arcLength || arcLength->totalLength() <= 0.0) return t;
+        const double start = path.keys.front().time, end = path.keys.back().time;
+        const double fraction = std::clamp((t - start) / (end - start), 0.0, 1.0);
+        return arcLength->timeAtDistance(fraction * arcLength->totalLength());
+    }
+};
+
+CameraKey interpolateKeys(const PreparedPath& prepared, double t) {
+    const std::vector<CameraKey>& keys = prepared.path.keys;
     const PathSegment segment = findPathSegment(keys, t);
     CameraKey key;
     key.time = t;
     key.position = hermiteValue(keys, segment, [](const CameraKey& k) { return k.position; });
-    key.orientation = interpolateOrientation(keys, consistentOrientations(keys), segment, rotation);
+    key.orientation = interpolateOrientation(keys, prepared.orientations, segment, prepared.path.rotation);
     key.yfov = float(hermiteValue(keys, segment, [](const CameraKey& k) { return double(k.yfov); }));
     key.focusDistance = float(hermiteValue(keys, segment, [](const CameraKey& k) { return double(k.focusDistance); }));
     key.lensRadius = float(hermiteValue(keys, segment, [](const CameraKey& k) { return double(k.lensRadius); }));
@@ -45,20 +57,22 @@ CameraKey interpolateKeys(const std::vector<CameraKey>& keys, RotationInterpolat
 
 } // namespace
 
-CameraKey sampleCameraPath(const CameraPath& path, double t) {
+std::vector<CameraKey> sampleCameraPath(const CameraPath& path, const std::vector<double>& times) {
     if (path.keys.empty()) throw std::logic_error("sampleCameraPath: the path has no keys");
     const std::vector<CameraKey>& keys = path.keys;
-    const double clamped = std::clamp(t, keys.front().time, keys.back().time);
-    if (keys.size() == 1) {
-        CameraKey only = keys.front();
-        only.time = clamped;
-        return only;
+    std::optional<PreparedPath> prepared;
+    if (keys.size() > 1) prepared.emplace(path);
+    std::vector<CameraKey> samples;
+    samples.reserve(times.size());
+    for (double t : times) {
+        const double clamped = std::clamp(t, keys.front().time, keys.back().time);
+        samples.push_back(prepared ? interpolateKeys(*prepared, prepared->curveTime(clamped)) : keys.front());
+        samples.back().time = clamped;
     }
-    const double curveTime = path.constantSpeed ? constantSpeedTime(keys, clamped) : clamped;
-    CameraKey key = interpolateKeys(keys, path.rotation, curveTime);
-    key.time = clamped;
-    return key;
+    return samples;
 }
+
+CameraKey sampleCameraPath(const CameraPath& path, double t) { return sampleCameraPath(path, std::vector<double>{t}).front(); }
 
 double cameraPathLength(const CameraPath& path) {
     if (path.keys.size() < 2) return 0.0;

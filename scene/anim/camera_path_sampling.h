@@ -17,6 +17,8 @@
 #include "scene/core/camera_path.h"
 #include "scene/core/ids.h"
 
+#include <vector>
+
 namespace glint {
 
 // What sampling needs: at least one key, finite times strictly increasing, finite positions and
@@ -26,6 +28,10 @@ bool isValidCameraPath(const CameraPath& path);
 // The camera state at time t (clamped to the first/last key; the result's time is the clamped t).
 // An empty path is a logic error (std::logic_error).
 CameraKey sampleCameraPath(const CameraPath& path, double t);
+
+// The same at many times at once, sharing the per-path set-up (the arc-length table of the
+// constant-speed mode): use this for animations.
+std::vector<CameraKey> sampleCameraPath(const CameraPath& path, const std::vector<double>& times);
 
 // Arc length of the position curve between the first and the last key, in metres.
 double cameraPathLength(const CameraPath& path);
