@@ -41,6 +41,21 @@ bool sameFile(const fs::path& file, const FileSet& reference, const std::string&
     return it != reference.end() && fs::exists(file) && test::readBytes(file) == it->second;
 }
 
+// Empty when the loader opens the set (the byte checks above already prove it complete).
+std::string loaderProblem(const fs::path& gltf)
+{
+#ifdef GLINT_HAVE_LOADER
+    try {
+        loadScene(gltf);
+    } catch (const FileError& e) {
+        return std::string("the loader refuses it: ") + e.what();
+    }
+#else
+    (void)gltf;
+#endif
+    return {};
+}
+
 // Empty when the folder holds a complete set: the glTF of one variant, every buffer and image it
 // names with that variant's bytes, and a project file of either variant (a kill between the glTF
 // and the project file leaves the previous project file, as documented in atomic_save.h).
@@ -58,9 +73,10 @@ std::string incompleteSet(const fs::path& folder, const std::vector<FileSet>& va
         for (const json& image : j["images"])
             if (image.contains("uri") && !sameFile(folder / image["uri"].get<std::string>(), variant, image["uri"]))
                 return "image " + image["uri"].get<std::string>() + " is missing or differs";
-        for (const FileSet& any : variants)
-            if (sameFile(folder / "scene.glint.json", any, "scene.glint.json")) return {};
-        return "the project file is missing or torn";
+        bool projectComplete = false;
+        for (const FileSet& any : variants) projectComplete = projectComplete || sameFile(folder / "scene.glint.json", any, "scene.glint.json");
+        if (!projectComplete) return "the project file is missing or torn";
+        return loaderProblem(gltf);
     }
     return "scene.gltf is missing or matches neither variant";
 }

@@ -1,9 +1,12 @@
 // Round trips of real files: every sample model and the bundled scenes load, save (.gltf and
 // .glb), load again into an equal Scene; a second save is byte-identical (also under de_DE), and
-// every saved file passes the Khronos validator with 0 errors.
+// every saved file passes the Khronos validator with 0 errors (not in sanitizer builds, which
+// have no validator installed).
 #include "feature_scene.h"
 #include "io_write_helpers.h"
+#ifdef GLINT_VALIDATE_OUTPUT
 #include "validator_run.h"
+#endif
 
 #include "scene/io/scene_io.h"
 
@@ -96,8 +99,10 @@ private slots:
         const std::string difference = firstDifference(first.path().toStdString(), second.path().toStdString());
         QVERIFY2(difference.empty(), difference.c_str());
 
+#ifdef GLINT_VALIDATE_OUTPUT
         const std::string errors = test::validatorErrors({savedFile});
         QVERIFY2(errors.empty(), errors.c_str());
+#endif
     }
 
     void resaveUnderGermanLocaleIsIdentical()
@@ -127,6 +132,12 @@ private slots:
         QVERIFY2(loaded.scene.settings == expected.settings, "project settings differ after loading");
         QVERIFY2(loaded.scene.nodes() == expected.nodes(), "nodes differ after loading");
         QVERIFY2(loaded.scene.materials == expected.materials, "materials differ after loading");
+        QVERIFY2(loaded.scene.meshes == expected.meshes, "meshes differ after loading");
+        QVERIFY2(loaded.scene.images == expected.images, "images differ after loading");
+        QVERIFY2(loaded.scene.textures == expected.textures, "textures differ after loading");
+        QVERIFY2(loaded.scene.samplers == expected.samplers, "samplers differ after loading");
+        QVERIFY2(loaded.scene.animations == expected.animations, "animations differ after loading");
+        QVERIFY2(loaded.scene == expected, "the scene differs after loading");
         saveScene(loaded.scene, fs::path(second.path().toStdString()) / "features.gltf");
         const std::string difference = firstDifference(first.path().toStdString(), second.path().toStdString());
         QVERIFY2(difference.empty(), difference.c_str());
