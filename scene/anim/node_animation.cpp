@@ -34,10 +34,15 @@ bool appliesTo(const Animation& animation, const AnimationChannel& channel, cons
     return target && isWellFormed(channel) && !(animation.bakedCameraPath && cameraPathOf(*target));
 }
 
-void applyCameraPath(const CameraPath& path, double t, Transform& local) {
+// Camera paths are in world space: the local transform that puts the node on its path under its
+// parent's stored world transform.
+Transform localOnCameraPath(const Scene& scene, const Node& node, const CameraPath& path, double t) {
     const CameraKey key = sampleCameraPath(path, t);
-    local.translation = glm::vec3(key.position);
-    local.rotation = glm::normalize(glm::quat(key.orientation));
+    Transform world = node.local;
+    world.translation = glm::vec3(key.position);
+    world.rotation = glm::normalize(glm::quat(key.orientation));
+    if (!node.parent) return world;
+    return fromMatrix(glm::inverse(scene.worldFromNode(node.parent)) * toMatrix(world));
 }
 
 } // namespace
@@ -69,7 +74,7 @@ Transform sampleLocalTransform(const Scene& scene, NodeId node, double t) {
     for (const auto& [id, animation] : scene.animations)
         for (const AnimationChannel& channel : animation.channels)
             if (channel.node == node && appliesTo(animation, channel, scene)) applyChannel(channel, t, local);
-    if (const CameraPath* path = cameraPathOf(scene.at(node))) applyCameraPath(*path, t, local);
+    if (const CameraPath* path = cameraPathOf(scene.at(node))) return localOnCameraPath(scene, scene.at(node), *path, t);
     return local;
 }
 

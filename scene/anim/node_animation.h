@@ -17,9 +17,10 @@ std::pair<double, double> sceneAnimationTimeSpan(const Scene& scene);
 // The local transform of `node` at time t with every animation of the scene applied to it
 // (channels not targeting the node leave its stored TRS in place). Outside a channel's keys the
 // first/last key holds. Animations apply in id order, so a later channel on the same node and
-// path wins. A camera node with a camera path follows the exact path (its position and
-// orientation become the node's translation and rotation, as bakeCameraPath writes them); baked
-// camera-path animations are then ignored for it. Malformed channels (isWellFormed) are skipped.
+// path wins. A camera node with a camera path follows the exact (world-space) path instead: the
+// local transform that puts it there under its parent's stored world transform (for animated
+// parents use sceneAt, scene_at_time.h); baked camera-path animations are ignored for it.
+// Malformed channels (isWellFormed) are skipped.
 // Pure: the scene is not changed. An unknown node throws std::out_of_range.
 Transform sampleLocalTransform(const Scene& scene, NodeId node, double t);
 

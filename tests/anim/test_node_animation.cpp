@@ -156,6 +156,12 @@ private slots:
         const auto all = sampleAnimatedTransforms(scene, 6.0);
         QCOMPARE(all.size(), std::size_t(1));
         QVERIFY(near(all.at(id).translation, {10, 0, 0}));
+
+        // Paths are in world space: under a parent moved by (0, 3, 0) the local transform compensates.
+        Node parent;
+        parent.local.translation = {0, 3, 0};
+        scene.setParent(id, scene.addNode(parent));
+        QVERIFY(near(sampleLocalTransform(scene, id, 3.5).translation, {5, -3, 0}));
     }
 };
 
