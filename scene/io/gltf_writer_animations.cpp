@@ -6,6 +6,8 @@
 
 #include "scene/anim/camera_path_sampling.h"
 
+#include <exception>
+
 namespace glint {
 
 namespace {
@@ -92,9 +94,15 @@ void writeAnimations(GltfWriteContext& ctx)
     for (const auto& [id, node] : ctx.scene.nodes()) {
         const auto* camera = node.get<Camera>();
         if (!camera || camera->path.empty()) continue;
-        Animation baked = bakeCameraPath(camera->path, id, fps);
-        baked.bakedCameraPath = true;
-        writeAnimation(ctx, baked, "the baked camera path of node " + std::to_string(id.value));
+        const std::string what = "the baked camera path of node " + std::to_string(id.value);
+        try {
+            Animation baked = bakeCameraPath(camera->path, id, fps);
+            baked.bakedCameraPath = true;
+            writeAnimation(ctx, baked, what);
+        } catch (const std::exception& e) {
+            // The exact path is still saved in GLINT_camera_path; only other tools miss the motion.
+            ctx.drop("camera-path-not-baked", what + " was not written: " + e.what());
+        }
     }
 }
 

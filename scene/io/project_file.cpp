@@ -54,7 +54,10 @@ public:
 
     void read(const std::string& key, std::string& out)
     {
-        if (const json* v = find(key)) out = v->is_string() ? v->get<std::string>() : (wrongType(key, "a string"), "");
+        const json* v = find(key);
+        if (!v) return;
+        if (!v->is_string()) wrongType(key, "a string");
+        out = v->get<std::string>();
     }
     void read(const std::string& key, int& out)
     {
@@ -74,11 +77,17 @@ public:
     }
     void read(const std::string& key, float& out)
     {
-        if (const json* v = find(key)) out = v->is_number() ? v->get<float>() : (wrongType(key, "a number"), 0.0f);
+        const json* v = find(key);
+        if (!v) return;
+        if (!v->is_number()) wrongType(key, "a number");
+        out = v->get<float>();
     }
     void read(const std::string& key, double& out)
     {
-        if (const json* v = find(key)) out = v->is_number() ? v->get<double>() : (wrongType(key, "a number"), 0.0);
+        const json* v = find(key);
+        if (!v) return;
+        if (!v->is_number()) wrongType(key, "a number");
+        out = v->get<double>();
     }
     void read(const std::string& key, glm::vec3& out)
     {
