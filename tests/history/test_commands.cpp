@@ -216,6 +216,22 @@ private slots:
         QCOMPARE(SetProjectSettings(environment).apply(scene).flags, static_cast<std::uint32_t>(Change::Environment));
     }
 
+    void changeSetsMergeFlagsAndIds() {
+        ChangeSet changes;
+        QVERIFY(changes.empty());
+        QVERIFY(!affectsImage(changes));
+        changes.merge(nodeChange(Change::Name, NodeId{3}));
+        QVERIFY(!changes.empty());
+        QVERIFY(!affectsImage(changes));
+        ChangeSet material;
+        material.add(Change::Material).materials.insert(MaterialId{2});
+        changes.merge(material);
+        QVERIFY(changes.has(Change::Name) && changes.has(Change::Material) && !changes.has(Change::Geometry));
+        QCOMPARE(changes.nodes, std::set<NodeId>{NodeId{3}});
+        QCOMPARE(changes.materials, std::set<MaterialId>{MaterialId{2}});
+        QVERIFY(affectsImage(changes));
+    }
+
     void addNodeReusesItsIdOnRedo() {
         SampleIds ids;
         Scene scene = sampleScene(&ids);
