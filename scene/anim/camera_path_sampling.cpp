@@ -72,7 +72,9 @@ std::vector<CameraKey> sampleCameraPath(const CameraPath& path, const std::vecto
     return samples;
 }
 
-CameraKey sampleCameraPath(const CameraPath& path, double t) { return sampleCameraPath(path, std::vector<double>{t}).front(); }
+CameraKey sampleCameraPath(const CameraPath& path, double t) {
+    return sampleCameraPath(path, std::vector<double>{t}).front();
+}
 
 double cameraPathLength(const CameraPath& path) {
     if (path.keys.size() < 2) return 0.0;

@@ -63,8 +63,9 @@ KeyInterval findKeyInterval(const std::vector<float>& times, double t) {
 
 bool isWellFormed(const AnimationChannel& c) {
     if (c.path == AnimationPath::Weights || c.times.empty()) return false;
-    if (!std::isfinite(c.times.front()) || std::adjacent_find(c.times.begin(), c.times.end(), std::greater_equal<>()) != c.times.end())
-        return false;
+    const bool increasing =
+        std::adjacent_find(c.times.begin(), c.times.end(), std::greater_equal<>()) == c.times.end();
+    if (!std::isfinite(c.times.front()) || !increasing) return false;
     const std::size_t perKey = c.interpolation == Interpolation::CubicSpline ? 3 : 1;
     return c.values.size() == c.times.size() * perKey * componentCount(c.path);
 }

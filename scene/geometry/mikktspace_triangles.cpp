@@ -79,7 +79,8 @@ void findNeighbours(const std::vector<std::uint32_t>& welded, std::vector<Triang
     edges.reserve(welded.size());
     for (std::size_t f = 0; f < frames.size(); ++f) {
         if (frames[f].positionDegenerate) continue;
-        for (std::size_t i = 0; i < 3; ++i) edges.push_back(makeEdge(welded[3 * f + i], welded[3 * f + (i + 1) % 3], 3 * f + i));
+        for (std::size_t i = 0; i < 3; ++i)
+            edges.push_back(makeEdge(welded[3 * f + i], welded[3 * f + (i + 1) % 3], 3 * f + i));
     }
     std::sort(edges.begin(), edges.end(), [](const Edge& a, const Edge& b) { return a.order() < b.order(); });
     for (std::size_t runStart = 0, runEnd = 0; runStart < edges.size(); runStart = runEnd) {
