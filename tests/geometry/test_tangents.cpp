@@ -105,6 +105,14 @@ private slots:
         }
     }
 
+    // A triangle with coincident corners takes the frame its vertices have from healthy triangles.
+    void degenerateTriangleBorrowsItsVerticesFrames() {
+        Primitive p = square(false);
+        p.indices.insert(p.indices.end(), {0, 1, 1});
+        QVERIFY(generateTangents(p));
+        for (std::size_t c = 0; c < p.indices.size(); ++c) QVERIFY(near(p.tangents[p.indices[c]], {1, 0, 0, 1}));
+    }
+
     void refusesWithoutNormalsOrUvs() {
         Primitive noUv = square(false);
         noUv.uv0.clear();
