@@ -20,7 +20,6 @@ void setIntegratorUniforms(const gl::ShaderProgram& program, const PathTraceSett
     glUniform1i(program.uniform("uMaxBounces"), std::max(settings.bounces, 0));
     glUniform1f(program.uniform("uClamp"), settings.clamp);
     glUniform1i(program.uniform("uIndependentSampler"), settings.independentSampler ? 1 : 0);
-    glUniform1i(program.uniform("uDebugView"), settings.view == DebugView::AmbientOcclusion ? 1 : 0);
     glUniform1f(program.uniform("uAoDistance"), settings.aoDistance);
 }
 
@@ -32,8 +31,9 @@ gl::RenderTarget makeGBuffer(int width, int height) {
 
 void PathTracePass::render(const GpuScene& scene, const CameraSetup& camera, const PathTraceSettings& settings,
                            std::uint32_t sampleIndex, const gl::RenderTarget& target) {
-    const gl::ShaderProgram& program = programs_.get({"fullscreen.vert.glsl", "pathtrace/main.frag.glsl",
-                                                      scene.features().defines(),
+    gl::Defines defines = scene.features().defines();
+    if (settings.view == DebugView::AmbientOcclusion) defines["DEBUG_VIEW_AO"] = ""; // a variant of its own
+    const gl::ShaderProgram& program = programs_.get({"fullscreen.vert.glsl", "pathtrace/main.frag.glsl", defines,
                                                       {"outRadiance", "outAlbedo", "outNormalDepth", "outObjectId"}});
     program.use();
     scene.bind(program);

@@ -25,42 +25,56 @@ struct Vertex {
     SurfaceMaterial material;
 };
 
-vec3 punctualLight(Vertex v, INOUT(Rng) rng) {
-    vec3 sum = vec3(0.0);
-    for (int light = 0; light < uLightCount; ++light) {
-        LightSample ls = sampleLight(light, v.position, rand2(rng));
-        float pdf;
-        vec3 f = bsdfEval(v.material, v.wo, localFromWorld(v.frame, ls.direction), pdf);
-        if (maxComponent(f) <= 0.0) continue;
-        if (!occluded(spawnRay(v.position, v.faceNormal, ls.direction), ls.distance)) sum += f * ls.irradiance;
-    }
-    return sum;
+// A light sample waiting for its shadow ray: unoccluded, it adds `contribution`.
+struct ShadowCandidate {
+    vec3 direction;
+    float distance;
+    vec3 contribution; // f * Le * MIS weight / pdf
+};
+
+ShadowCandidate noCandidate() { return ShadowCandidate(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0)); }
+
+ShadowCandidate punctualCandidate(Vertex v, int light, INOUT(Rng) rng) {
+    LightSample ls = sampleLight(light, v.position, rand2(rng));
+    float pdf;
+    vec3 f = bsdfEval(v.material, v.wo, localFromWorld(v.frame, ls.direction), pdf);
+    return ShadowCandidate(ls.direction, ls.distance, f * ls.irradiance);
+}
+
+// One emissive triangle, weighted against BSDF sampling by the power heuristic. The shadow ray stops
+// just short of the light so that it does not find the emitter itself.
+ShadowCandidate areaCandidate(Vertex v, INOUT(Rng) rng) {
+    AreaLightSample ls;
+    if (!sampleEmissiveTriangle(v.position, rand3(rng), ls)) return noCandidate();
+    float bsdfPdf;
+    vec3 f = bsdfEval(v.material, v.wo, localFromWorld(v.frame, ls.direction), bsdfPdf);
+    return ShadowCandidate(ls.direction, ls.distance * (1.0 - 1e-4), f * ls.radiance * (powerHeuristic(ls.pdf, bsdfPdf) / ls.pdf));
 }
 
 // One environment sample, weighted against BSDF sampling by the power heuristic.
-vec3 environmentLight(Vertex v, INOUT(Rng) rng) {
+ShadowCandidate environmentCandidate(Vertex v, INOUT(Rng) rng) {
     vec2 u = rand2(rng);
-    if (!environmentIsSampled()) return vec3(0.0);
+    if (!environmentIsSampled()) return noCandidate();
     float lightPdf;
     vec3 direction = sampleEnvironment(u, lightPdf);
-    if (lightPdf <= 0.0) return vec3(0.0);
+    if (lightPdf <= 0.0) return noCandidate();
     float bsdfPdf;
     vec3 f = bsdfEval(v.material, v.wo, localFromWorld(v.frame, direction), bsdfPdf);
-    if (maxComponent(f) <= 0.0 || occluded(spawnRay(v.position, v.faceNormal, direction), RAY_MAX)) return vec3(0.0);
-    return f * environmentRadiance(direction) * (powerHeuristic(lightPdf, bsdfPdf) / lightPdf);
+    return ShadowCandidate(direction, RAY_MAX, f * environmentRadiance(direction) * (powerHeuristic(lightPdf, bsdfPdf) / lightPdf));
 }
 
-// One emissive triangle, weighted against BSDF sampling by the power heuristic.
-vec3 areaLight(Vertex v, INOUT(Rng) rng) {
-    vec3 u = rand3(rng);
-    AreaLightSample ls;
-    if (!sampleEmissiveTriangle(v.position, u, ls)) return vec3(0.0);
-    float bsdfPdf;
-    vec3 f = bsdfEval(v.material, v.wo, localFromWorld(v.frame, ls.direction), bsdfPdf);
-    // Stop just short of the light so the shadow ray does not find the emitter itself.
-    if (maxComponent(f) <= 0.0 || occluded(spawnRay(v.position, v.faceNormal, ls.direction), ls.distance * (1.0 - 1e-4)))
-        return vec3(0.0);
-    return f * ls.radiance * (powerHeuristic(ls.pdf, bsdfPdf) / ls.pdf);
+// Next-event estimation: every punctual light, one emissive triangle and one environment sample.
+// All shadow rays go through one call site: GLSL inlines every call, and each traversal copy costs
+// compile time (seconds on llvmpipe for the BVH variant).
+vec3 directLight(Vertex v, INOUT(Rng) rng) {
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < uLightCount + 2; ++i) {
+        ShadowCandidate c = i < uLightCount ? punctualCandidate(v, i, rng)
+                          : (i == uLightCount ? areaCandidate(v, rng) : environmentCandidate(v, rng));
+        if (!(maxComponent(c.contribution) > 0.0)) continue;
+        if (!occluded(spawnRay(v.position, v.faceNormal, c.direction), c.distance)) sum += c.contribution;
+    }
+    return sum;
 }
 
 // Weight of emission found by BSDF sampling: emissive triangles are light-sampled too.
@@ -106,7 +120,7 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng) {
         result.radiance += throughput * emission * emissionMisWeight(hit, emission, ray.direction, lastBsdfPdf);
         if (depth > maxBounces) break;
 
-        result.radiance += throughput * (punctualLight(v, rng) + areaLight(v, rng) + environmentLight(v, rng));
+        result.radiance += throughput * directLight(v, rng);
 
         BsdfSample bs;
         if (!bsdfSample(v.material, v.wo, rand3(rng), bs) || maxComponent(bs.weight) <= 0.0) break;
@@ -128,7 +142,8 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng) {
     return result;
 }
 
-// Debug view: the fraction of a cosine-weighted hemisphere unoccluded within uAoDistance.
+// Debug view (the DEBUG_VIEW_AO variant): the fraction of a cosine-weighted hemisphere unoccluded
+// within uAoDistance.
 uniform float uAoDistance;
 
 PathResult ambientOcclusion(Ray ray, vec3 viewAxis, INOUT(Rng) rng) {

@@ -20,7 +20,6 @@
 
 uniform uint uSampleIndex;
 uniform uint uSeed;
-uniform int uDebugView; // 0: path tracing, 1: ambient occlusion
 
 out vec4 outRadiance;
 out vec4 outAlbedo;
@@ -31,7 +30,11 @@ void main() {
     uvec2 pixel = uvec2(gl_FragCoord.xy);
     Rng rng = rngStart(pixel, uSampleIndex, uSeed);
     Ray ray = cameraRay(pixel, uSampleIndex, uSeed, rng);
-    PathResult path = uDebugView == 1 ? ambientOcclusion(ray, cameraForward(), rng) : tracePath(ray, cameraForward(), rng);
+#ifdef DEBUG_VIEW_AO
+    PathResult path = ambientOcclusion(ray, cameraForward(), rng);
+#else
+    PathResult path = tracePath(ray, cameraForward(), rng);
+#endif
     outRadiance = vec4(finiteNonNegative(path.radiance), 1.0);
     outAlbedo = vec4(finiteNonNegative(path.albedo), 1.0);
     outNormalDepth = vec4(finiteOrZero(path.normal), path.depth);
