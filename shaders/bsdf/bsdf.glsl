@@ -3,7 +3,7 @@
 //   (1 - metallic) transmission      dielectric interface (dielectric.glsl), transmission tinted
 //   (1 - metallic)(1 - transmission) KHR_materials_specular layer (GGX, F = specularFactor *
 //                                    Schlick(F0)) over Lambert, which is scaled by
-//                                    (1 - F(wo.z)) (1 - F(wi.z)) / (1 - average F)
+//                                    (1 - R(wo)) (1 - R(wi)) / (1 - average R), R the layer's albedo
 // Roughness below sqrt(GGX_DELTA_ALPHA) makes the specular lobes deltas. Opaque lobes are two-sided
 // (mirrored when wo.z < 0); the dielectric uses the side to pick eta. The reflective GGX lobes are
 // compensated for multiple scattering (ggx_energy.glsl); the dielectric's are not: see
@@ -50,23 +50,33 @@ BsdfLobes bsdfLobes(SurfaceMaterial m, float cosWo) {
                      layerEnergyScale, pMetal * scale, pGlass * scale, pLayerSpecular * scale, pDiffuse * scale);
 }
 
-// Reflectance of the KHR_materials_specular layer seen from a direction at cos(theta) to the normal.
+// What the KHR_materials_specular layer reflects of light arriving at cos(theta) to the normal: the
+// smooth Fresnel for a mirror, the (compensated) GGX albedo for a rough layer.
 float layerReflectance(SurfaceMaterial m, BsdfLobes l, float cosTheta) {
-    return m.specularFactor * maxComponent(fresnelSchlick(l.layerF0, cosTheta));
+    if (l.alpha < GGX_DELTA_ALPHA) return m.specularFactor * maxComponent(fresnelSchlick(l.layerF0, cosTheta));
+    vec3 f0 = m.specularFactor * l.layerF0;
+    vec3 scale = ggxMultipleScatteringScale(f0, cosTheta, m.roughness);
+    return m.specularFactor * maxComponent(ggxSchlickAlbedo(l.layerF0, cosTheta, m.roughness) * scale);
 }
 
-// Cosine-weighted hemispherical average of layerReflectance: Schlick integrates to F0 + (1 - F0) / 21.
+// The cosine-weighted average of layerReflectance over all directions (Schlick's integrates to
+// F0 + (1 - F0) / 21).
 float layerAverageReflectance(SurfaceMaterial m, BsdfLobes l) {
-    return m.specularFactor * maxComponent(l.layerF0 + (vec3(1.0f) - l.layerF0) / 21.0f);
+    if (l.alpha < GGX_DELTA_ALPHA) return m.specularFactor * maxComponent(l.layerF0 + (vec3(1.0f) - l.layerF0) / 21.0f);
+    vec3 average = ggxAverageSchlickAlbedo(l.layerF0, m.roughness);
+    vec3 f0 = m.specularFactor * l.layerF0;
+    float e = max(ggxAverageSchlickAlbedo(vec3(1.0f), m.roughness).x, 0.05f);
+    return m.specularFactor * maxComponent(average * (vec3(1.0f) + f0 * ((1.0f - e) / e)));
 }
 
 // Opaque (metal + layered) part for wo.z > 0: f * cos(wi) and the lobe-weighted pdf.
 vec3 opaqueEval(SurfaceMaterial m, BsdfLobes l, vec3 wo, vec3 wi, OUT(float) pdf) {
     pdf = 0.0f;
     if (wi.z <= 0.0f) return vec3(0.0f);
-    // The diffuse under the specular layer keeps what the layer transmits on the way in and on the
-    // way out, normalised so that a white diffuse reflects exactly 1 - F(wo) (reciprocal; the glTF
-    // spec's 1 - F(wo.h) gains up to 6 % at grazing angles, see docs/MATERIALS.md).
+    // The diffuse under the specular layer keeps what the layer does not reflect on the way in and
+    // on the way out, normalised so that a white diffuse returns exactly what the layer leaves
+    // (reciprocal; the glTF spec's 1 - F(wo.h) gains up to 6 % at grazing angles, and the smooth
+    // 1 - F(wo) loses up to half the light of a rough layer there; see docs/MATERIALS.md).
     float diffuseScale = (1.0f - layerReflectance(m, l, wo.z)) * (1.0f - layerReflectance(m, l, wi.z)) /
                          max(1.0f - layerAverageReflectance(m, l), 1e-6f);
     vec3 f = l.layered * diffuseScale * m.baseColor * lambertReflection(wo, wi);
