@@ -2,7 +2,8 @@
 // compensation for microfacet models"): single scattering reflects E(mu, roughness) of the light when
 // F = 1; the rest would leave after more bounces between microfacets. Scaling the lobe by
 // 1 + F0 (1 - E) / E puts that energy back, tinted by F0. The scale depends on wo only, so the
-// compensated BRDF is not exactly reciprocal (as in the paper).
+// compensated BRDF is not exactly reciprocal (as in the paper). The Fresnel-weighted tables give
+// what a rough specular layer reflects, which the diffuse beneath it must not reflect again.
 #ifdef __cplusplus
 #pragma once
 #endif
@@ -10,8 +11,8 @@
 
 // E(mu, roughness) of GGX with height-correlated masking and F = 1, rows roughness = (i / 31)^2,
 // columns mu = (j / 15)^2 (column 0 at mu = 0.002): dense at low roughness and grazing angles,
-// where E changes fastest. Made by VNDF sampling with 256 x 256 strata (the averages with 48 values of mu);
-// test_twin_bsdf_known recomputes entries.
+// where E changes fastest. Made by VNDF sampling with 256 x 256 strata (the averages with 48
+// values of mu); test_twin_bsdf_known recomputes entries.
 FLOAT_TABLE(GGX_ALBEDO_TABLE, 512)(
     0.9136f, 0.9705f, 0.9982f, 0.9998f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f,
     0.9136f, 0.9705f, 0.9982f, 0.9998f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f,
