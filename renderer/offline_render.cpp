@@ -99,7 +99,7 @@ RenderOutput OfflineRenderer::render(const Scene& scene, const RenderRequest& re
     const gl::RenderTarget sample = makeGBuffer(request.width, request.height);
     const gl::RenderTarget display(request.width, request.height, {GL_RGBA8});
     const PathTraceSettings settings{request.seed, request.bounces, request.clamp, request.independentSampler,
-                                     request.view, 1.0f};
+                                     request.view, request.aoDistance};
     RenderOutput out;
     out.width = request.width;
     out.height = request.height;

@@ -29,6 +29,7 @@ struct RenderRequest {
     float clamp = 0.0f;                   // 0 = off (unbiased)
     bool independentSampler = false;
     DebugView view = DebugView::None;
+    float aoDistance = 1.0f;              // metres, for DebugView::AmbientOcclusion
     std::function<void(int done, int total)> progress; // after each sample; may be empty
 };
 

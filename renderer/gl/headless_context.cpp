@@ -88,7 +88,12 @@ bool isSoftwareRenderer(const std::string& glRenderer) {
 HeadlessContext::HeadlessContext(const HeadlessContextOptions& options) : egl_(std::make_unique<Egl>()) {
     egl_->display = openDisplay(platform_);
     if (egl_->display == EGL_NO_DISPLAY) throw std::runtime_error("EGL: no display (device, surfaceless or default)");
-    egl_->context = createCoreContext(egl_->display);
+    try {
+        egl_->context = createCoreContext(egl_->display);
+    } catch (...) {
+        eglTerminate(egl_->display);
+        throw;
+    }
     if (eglMakeCurrent(egl_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, egl_->context) != EGL_TRUE) {
         eglDestroyContext(egl_->display, egl_->context);
         eglTerminate(egl_->display);

@@ -4,6 +4,7 @@
 #include "renderer/bvh/flat_scene.h"
 #include "renderer/bvh/size_check.h"
 #include "renderer/bvh/validate.h"
+#include "renderer/gpu_scene/visibility.h"
 
 #include <stdexcept>
 #include <vector>
@@ -16,12 +17,6 @@ struct GpuMeshes::Buffers {
 };
 
 namespace {
-
-bool visibleInWorld(const Scene& scene, const Node& node) {
-    for (const Node* n = &node; n; n = n->parent ? scene.node(n->parent) : nullptr)
-        if (!n->visible) return false;
-    return true;
-}
 
 struct MeshSet {
     std::vector<bvh::MeshBvh> bvhs;

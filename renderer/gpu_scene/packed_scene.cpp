@@ -1,18 +1,12 @@
 #include "renderer/gpu_scene/packed_scene.h"
 
 #include "renderer/gpu_scene/light_units.h"
+#include "renderer/gpu_scene/visibility.h"
 
 #include <cmath>
 
 namespace glint::renderer {
 namespace {
-
-// A node is drawn only if it and every ancestor are visible.
-bool visibleInWorld(const Scene& scene, const Node& node) {
-    for (const Node* n = &node; n; n = n->parent ? scene.node(n->parent) : nullptr)
-        if (!n->visible) return false;
-    return true;
-}
 
 void packShape(PackedScene& out, const Shape& shape, const glm::mat4& worldFromLocal, float objectId, int material) {
     const glm::mat4 localFromWorld = glm::inverse(worldFromLocal);
