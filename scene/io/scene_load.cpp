@@ -1,4 +1,5 @@
 // loadScene: a .gltf, a .glb, or a project file (.glint.json) that names its glTF.
+#include "confined_fs.h"
 #include "scene/io/project_file.h"
 #include "scene/io/scene_io.h"
 
@@ -45,10 +46,8 @@ LoadResult loadScene(const fs::path& file, const LoadOptions& options)
     if (isProjectPath(file)) {
         Warnings warnings;
         ProjectFile project = readProjectFile(file, warnings);
-        const fs::path folder = file.parent_path();
-        if (project.sceneFile.empty() || fs::path(project.sceneFile).is_absolute() || fs::path(project.sceneFile).lexically_normal().begin()->string() == "..")
-            throw FileError(file.string(), "uri-escapes-folder", "the project file's scene '" + project.sceneFile + "' must be a file in its own folder");
-        LoadResult result = loadGltfFile(folder / project.sceneFile, options);
+        const ConfinedFolder folder{file.parent_path().empty() ? fs::path(".") : file.parent_path()};
+        LoadResult result = loadGltfFile(confinedPath(folder, project.sceneFile, file.string()), options);
         result.scene.settings = std::move(project.settings);
         warnings.insert(warnings.end(), result.warnings.begin(), result.warnings.end());
         result.warnings = std::move(warnings);

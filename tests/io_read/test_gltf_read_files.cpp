@@ -2,6 +2,8 @@
 // (no `..`, no absolute paths, no symlinks out), missing and oversized images.
 #include "io_read_helpers.h"
 
+#include "scene/io/project_file.h"
+
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -203,6 +205,33 @@ private slots:
     void malformedImageDataUri()
     {
         GLINT_EXPECT_ERROR(loadJson(withImage(triangle().finish(), "data:image/png;base64,@@@@"), folder()), "malformed-data-uri", "images[0].uri");
+    }
+
+    void projectFileBesideTheSceneIsRead()
+    {
+        fs::create_directory(folder() / "project");
+        writeFile(folder() / "project" / "shot.glb", validGlb());
+        ProjectFile project;
+        project.sceneFile = "shot.glb";
+        project.settings.render.spp = 7;
+        project.settings.activeCamera = NodeId{1};
+        writeFile(folder() / "project" / "shot.glint.json", bytesOf(writeProjectFileText(project)));
+        const LoadResult viaScene = loadScene(folder() / "project" / "shot.glb");
+        QCOMPARE(viaScene.scene.settings.render.spp, 7);
+        const LoadResult viaProject = loadScene(folder() / "project" / "shot.glint.json");
+        QCOMPARE(viaProject.scene.settings.activeCamera, NodeId{1});
+        QCOMPARE(viaProject.scene.nodeCount(), std::size_t(1));
+        LoadOptions withoutProject;
+        withoutProject.loadProjectFile = false;
+        QCOMPARE(loadScene(folder() / "project" / "shot.glb", withoutProject).scene.settings.render.spp, ProjectSettings{}.render.spp);
+    }
+
+    void projectFileNamingASceneOutsideItsFolder()
+    {
+        ProjectFile project;
+        project.sceneFile = "../elsewhere.glb";
+        writeFile(folder() / "escape.glint.json", bytesOf(writeProjectFileText(project)));
+        GLINT_EXPECT_ERROR(loadScene(folder() / "escape.glint.json"), "uri-escapes-folder", "'../elsewhere.glb' leads out of the scene's folder");
     }
 
     void loadSceneDispatchesOnExtension()
