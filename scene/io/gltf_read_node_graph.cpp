@@ -11,21 +11,38 @@ namespace {
 
 std::size_t countOf(const Json& doc, const char* key) { return doc.contains(key) ? doc[key].size() : 0; }
 
-void requireNoLoop(const GltfReadContext& ctx, const std::vector<int>& parents, std::size_t start)
+// Walks up from every node once (linear time even for a chain of a million nodes): meeting a node
+// of the walk in progress again is a loop.
+void requireNoLoop(const GltfReadContext& ctx, const std::vector<int>& parents)
 {
-    int at = parents[start];
-    for (std::size_t steps = 0; at >= 0; ++steps, at = parents[static_cast<std::size_t>(at)]) {
-        if (static_cast<std::size_t>(at) == start || steps > parents.size())
-            ctx.fail("node-graph-cycle", "node " + std::to_string(start) + " is its own ancestor: the node hierarchy has a cycle");
+    enum class Mark : std::uint8_t { Unseen, OnWalk, Done };
+    std::vector<Mark> marks(parents.size(), Mark::Unseen);
+    std::vector<std::size_t> walk;
+    for (std::size_t start = 0; start < parents.size(); ++start) {
+        walk.clear();
+        for (int at = static_cast<int>(start); at >= 0 && marks[static_cast<std::size_t>(at)] != Mark::Done; at = parents[static_cast<std::size_t>(at)]) {
+            if (marks[static_cast<std::size_t>(at)] == Mark::OnWalk)
+                ctx.fail("node-graph-cycle", "node " + std::to_string(at) + " is its own ancestor: the node hierarchy has a cycle");
+            marks[static_cast<std::size_t>(at)] = Mark::OnWalk;
+            walk.push_back(static_cast<std::size_t>(at));
+        }
+        for (std::size_t n : walk) marks[n] = Mark::Done;
     }
 }
 
-void collectDepthFirst(const Json& doc, int node, std::vector<int>& out)
+// Parents before children, siblings in order; iterative, so a deep hierarchy cannot exhaust the stack.
+void collectDepthFirst(const Json& doc, int root, std::vector<int>& out)
 {
-    out.push_back(node);
-    const Json& json = doc["nodes"][static_cast<std::size_t>(node)];
-    if (json.contains("children"))
-        for (const Json& child : json["children"]) collectDepthFirst(doc, child.get<int>(), out);
+    std::vector<int> pending{root};
+    while (!pending.empty()) {
+        const int node = pending.back();
+        pending.pop_back();
+        out.push_back(node);
+        const Json& json = doc["nodes"][static_cast<std::size_t>(node)];
+        if (!json.contains("children")) continue;
+        const Json& children = json["children"];
+        for (auto it = children.rbegin(); it != children.rend(); ++it) pending.push_back(it->get<int>());
+    }
 }
 
 std::vector<int> defaultSceneRoots(GltfReadContext& ctx, const std::vector<int>& parents)
@@ -76,7 +93,7 @@ std::vector<int> nodeParents(const GltfReadContext& ctx)
             parents[child] = static_cast<int>(i);
         }
     }
-    for (std::size_t i = 0; i < count; ++i) requireNoLoop(ctx, parents, i);
+    requireNoLoop(ctx, parents);
     return parents;
 }
 

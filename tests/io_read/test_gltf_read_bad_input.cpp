@@ -212,6 +212,18 @@ private slots:
         GLINT_EXPECT_ERROR(loadJson(doc), "node-graph-cycle", message.toStdString());
     }
 
+    // A hierarchy 50,000 nodes deep: no recursion to exhaust the stack, no quadratic loop check.
+    void deepNodeChainLoads()
+    {
+        Json doc = triangle().finish();
+        const int depth = 50000;
+        doc["nodes"] = Json::array();
+        for (int i = 0; i < depth; ++i) doc["nodes"].push_back(i + 1 < depth ? Json{{"children", {i + 1}}} : Json{{"mesh", 0}});
+        const LoadResult r = loadJson(doc);
+        QCOMPARE(r.scene.nodeCount(), std::size_t(depth));
+        QCOMPARE(r.scene.at(NodeId{depth}).parent, NodeId{depth - 1});
+    }
+
     void sceneRootThatIsAChild()
     {
         Json doc = triangle().finish();
