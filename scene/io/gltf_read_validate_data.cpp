@@ -176,6 +176,9 @@ void DataChecker::checkAccessors() const
         if (count > options.maxBufferBytes / size)
             fail("huge-count", where + ".count is " + std::to_string(count) + ": more than " + std::to_string(options.maxBufferBytes) + " bytes of data");
         const int view = json.index(a, "bufferView", where);
+        // Without a bufferView nothing in the file bounds the zeros the reader would allocate.
+        if (view < 0 && count * componentCount(json.string(a, "type", where)) > options.maxBufferBytes / 16)
+            fail("huge-count", where + ".count is " + std::to_string(count) + " with no bufferView: too many elements to fill with zeros");
         if (view >= 0) checkRange(json.unsignedNumber(a, "byteOffset", 0, where), count, size, strideOf(json, doc, view), view, "accessor " + std::to_string(i));
         const Json* sparse = json.member(a, "sparse");
         if (!sparse) continue;

@@ -119,6 +119,8 @@ private slots:
         doc["accessors"][0].erase("bufferView"); // an all-zero accessor would be allocated in full
         doc["accessors"][0]["count"] = std::uint64_t(1) << 40;
         GLINT_EXPECT_ERROR(loadJson(doc), "huge-count", "accessors[0].count is 1099511627776");
+        doc["accessors"][0]["count"] = 100000000; // 1.2 GB of vec3 floats: under the byte cap, yet only zeros
+        GLINT_EXPECT_ERROR(loadJson(doc), "huge-count", "accessors[0].count is 100000000 with no bufferView");
     }
 
     void hugeDeclaredBuffer()
