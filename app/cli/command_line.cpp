@@ -13,17 +13,13 @@ namespace glint::cli {
 
 namespace {
 
-CLI::App makeParser(Action& action) {
-    CLI::App app{"Glint: scene editor and path tracer.\n"
-                 "Without a subcommand, opens the editor (glint [FILE]).",
-                 "glint"};
+void configureParser(CLI::App& app, Action& action) {
     app.set_version_flag("--version", std::string("glint ") + kVersion);
     app.require_subcommand(1);
     app.fallthrough(false);
     addInfoCommand(app, action);
     addConvertCommand(app, action);
     addRenderCommand(app, action);
-    return app;
 }
 
 // CLI11 messages are already specific ("The following argument was not expected: --x");
@@ -40,7 +36,10 @@ int usageError(const CLI::ParseError& e) {
 
 int runCommandLine(int argc, char** argv) {
     Action action;
-    CLI::App app = makeParser(action);
+    CLI::App app{"Glint: scene editor and path tracer.\n"
+                 "Without a subcommand, opens the editor (glint [FILE]).",
+                 "glint"};
+    configureParser(app, action);
     try {
         app.parse(argc, argv);
     } catch (const CLI::Success& e) {
