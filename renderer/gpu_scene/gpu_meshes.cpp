@@ -49,21 +49,34 @@ MeshSet buildMeshSet(const Scene& scene, const std::map<MaterialId, int>& materi
     return set;
 }
 
-// Vertex normals in the vertex order of FlatScene::meshes (zero where a primitive has none).
-std::vector<glm::vec4> vertexNormals(const Scene& scene, const MeshSet& set) {
-    std::vector<glm::vec4> normals;
+// Vertex data in the vertex order of FlatScene::meshes: the normal (zero where a primitive has
+// none); with `texturing` also (uv0, uv1), the tangent (zero: none) and COLOR_0 (white: none), the
+// layout of shaders/pathtrace/meshes.glsl.
+std::vector<glm::vec4> vertexTexels(const Scene& scene, const MeshSet& set, bool texturing) {
+    std::vector<glm::vec4> texels;
     for (const MeshId id : set.ids)
-        for (const Primitive& primitive : scene.meshes.at(id).primitives)
-            for (std::size_t v = 0; v < primitive.positions.size(); ++v)
-                normals.push_back(glm::vec4(v < primitive.normals.size() ? primitive.normals[v] : glm::vec3(0.0f), 0.0f));
-    return normals;
+        for (const Primitive& p : scene.meshes.at(id).primitives)
+            for (std::size_t v = 0; v < p.positions.size(); ++v) {
+                texels.push_back(glm::vec4(v < p.normals.size() ? p.normals[v] : glm::vec3(0.0f), 0.0f));
+                if (!texturing) continue;
+                texels.push_back({v < p.uv0.size() ? p.uv0[v] : glm::vec2(0.0f), v < p.uv1.size() ? p.uv1[v] : glm::vec2(0.0f)});
+                texels.push_back(v < p.tangents.size() ? p.tangents[v] : glm::vec4(0.0f));
+                texels.push_back(v < p.colors.size() ? p.colors[v] : glm::vec4(1.0f));
+            }
+    return texels;
+}
+
+// Emission that light sampling assumes: the factors. Emissive-textured materials are left to BSDF
+// sampling (shaders/pathtrace/material.glsl), since a factor would misstate their texels.
+glm::vec3 sampledEmission(const Scene& scene, const Material& m) {
+    if (m.emissiveTexture.valid() && scene.textures.contains(m.emissiveTexture.texture)) return glm::vec3(0.0f);
+    return m.emissiveFactor * m.emissiveStrength;
 }
 
 EmissiveTriangles emissiveTriangles(const Scene& scene, const MeshSet& set, const std::map<MaterialId, int>& materialIndex) {
     std::vector<glm::vec3> emissionOf(materialIndex.size() + 1, glm::vec3(0.0f));
     for (const auto& [id, index] : materialIndex) {
-        const Material& m = scene.materials.at(id);
-        emissionOf[static_cast<std::size_t>(index)] = m.emissiveFactor * m.emissiveStrength;
+        emissionOf[static_cast<std::size_t>(index)] = sampledEmission(scene, scene.materials.at(id));
     }
     EmissiveTriangles lights;
     for (const bvh::Instance& instance : set.instances) {
@@ -86,7 +99,7 @@ gl::TextureBuffer upload(const char* what, GLenum format, const std::vector<T>& 
 
 } // namespace
 
-GpuMeshes::GpuMeshes(const Scene& scene, const std::map<MaterialId, int>& materialIndex) {
+GpuMeshes::GpuMeshes(const Scene& scene, const std::map<MaterialId, int>& materialIndex, bool texturing) {
     MeshSet set = buildMeshSet(scene, materialIndex);
     if (set.instances.empty()) return;
     const bvh::TopLevel topLevel = bvh::buildTopLevel(set.instances, set.bvhs);
@@ -99,7 +112,7 @@ GpuMeshes::GpuMeshes(const Scene& scene, const std::map<MaterialId, int>& materi
         upload("uBvhNodeBounds", GL_RGBA32F, flat.nodeBounds), upload("uBvhNodeLinks", GL_RGBA32UI, flat.nodeLinks),
         upload("uBvhTrianglePositions", GL_RGBA32F, flat.trianglePositions),
         upload("uBvhTriangleVertices", GL_RGBA32UI, flat.triangleVertices), upload("uBvhInstances", GL_RGBA32UI, flat.instances),
-        upload("the vertex normals", GL_RGBA32F, vertexNormals(scene, set)),
+        upload("the vertex attributes", GL_RGBA32F, vertexTexels(scene, set, texturing)),
         upload("the emissive triangles", GL_RGBA32F, lights.texels), upload("the emissive CDF", GL_R32F, lights.cdf)});
     triangleCount_ = flat.trianglePositions.size() / bvh::kTrianglePositionTexels;
     topLevelRoot_ = flat.topLevelRoot;

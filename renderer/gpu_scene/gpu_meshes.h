@@ -14,9 +14,10 @@ namespace glint::renderer {
 
 class GpuMeshes {
 public:
-    // `materialIndex`: the renderer's material table. Throws std::runtime_error when the BVH is
-    // invalid or exceeds GL_MAX_TEXTURE_BUFFER_SIZE.
-    GpuMeshes(const Scene& scene, const std::map<MaterialId, int>& materialIndex);
+    // `materialIndex`: the renderer's material table. `texturing`: upload UVs, tangents and COLOR_0
+    // beside the normals (the HAS_TEXTURES layout). Throws std::runtime_error when the BVH is invalid
+    // or exceeds GL_MAX_TEXTURE_BUFFER_SIZE.
+    GpuMeshes(const Scene& scene, const std::map<MaterialId, int>& materialIndex, bool texturing = false);
     ~GpuMeshes();
 
     bool empty() const { return triangleCount_ == 0; }

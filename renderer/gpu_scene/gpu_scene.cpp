@@ -2,13 +2,14 @@
 
 #include "renderer/cpu_twin/env_sampling.h"
 #include "renderer/gpu_scene/environment_image.h"
+#include "scene/io/oiio/oiio_image_decoder.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
 namespace glint::renderer {
 namespace {
 
-enum TextureUnit : GLuint { shapeUnit = 0, materialUnit = 1, lightUnit = 2, environmentUnit = 3, environmentCdfUnit = 4, firstMeshUnit = 5 };
+enum TextureUnit : GLuint { shapeUnit = 0, materialUnit = 1, lightUnit = 2, environmentUnit = 3, environmentCdfUnit = 4, firstMeshUnit = 5, firstTextureUnit = 13 };
 
 gl::TextureBuffer vec4Buffer(const std::string& what, const std::vector<glm::vec4>& texels) {
     return gl::TextureBuffer(what, GL_RGBA32F, texels.data(), texels.size(), sizeof(glm::vec4));
@@ -34,23 +35,58 @@ void bindTexture2D(const gl::Texture& texture, GLuint unit, GLint location) {
     glUniform1i(location, static_cast<GLint>(unit));
 }
 
+// What the visible meshes' materials ask of the shader (textures are found by buildTextureSet).
+void addMeshMaterialFeatures(const Scene& scene, SceneFeatures& features) {
+    for (const MaterialId id : meshMaterials(scene)) {
+        const Material m = scene.materials.contains(id) ? scene.materials.at(id) : Material{};
+        if (m.alphaMode != AlphaMode::Opaque) features.alpha = true;
+        if (!m.doubleSided && m.emissiveFactor * m.emissiveStrength == glm::vec3(0.0f)) features.singleSided = true;
+    }
+}
+
+// COLOR_0 needs the textured vertex layout even without a texture.
+bool meshesHaveColors(const Scene& scene) {
+    for (const auto& [id, mesh] : scene.meshes)
+        for (const Primitive& p : mesh.primitives)
+            if (!p.colors.empty()) return true;
+    return false;
+}
+
+TextureSet sceneTextures(const Scene& scene) {
+    return buildTextureSet(scene, meshMaterials(scene), OiioImageDecoder{}, queryTextureLimits());
+}
+
 } // namespace
 
 gl::Defines SceneFeatures::defines() const {
     gl::Defines defines;
     if (meshes) defines["HAS_MESHES"] = "";
     if (environmentMap) defines["HAS_ENV_MAP"] = "";
+    if (meshes && textures) {
+        defines["HAS_TEXTURES"] = "";
+        defines["TEXTURE_ARRAY_COUNT"] = std::to_string(textureArrays);
+    }
+    if (meshes && alpha) defines["HAS_ALPHA"] = "";
+    if (meshes && singleSided) defines["HAS_SINGLE_SIDED"] = "";
     return defines;
 }
 
 GpuScene::GpuScene(const Scene& scene, const std::filesystem::path& environmentFile)
-    : packed_(packScene(scene)),
+    : GpuScene(scene, environmentFile, sceneTextures(scene)) {}
+
+GpuScene::GpuScene(const Scene& scene, const std::filesystem::path& environmentFile, TextureSet textures)
+    : packed_(packScene(scene, &textures)),
       environment_(scene.settings.environment),
       shapes_(vec4Buffer("the shape buffer", packed_.shapes)),
       materials_(vec4Buffer("the material buffer", packed_.materials)),
       lights_(vec4Buffer("the light buffer", packed_.lights)),
-      meshes_(scene, packed_.materialIndex) {
+      meshes_(scene, packed_.materialIndex, !textures.empty() || meshesHaveColors(scene)),
+      textureArrays_(textures),
+      warnings_(std::move(textures.warnings)) {
     features_.meshes = !meshes_.empty();
+    addMeshMaterialFeatures(scene, features_);
+    features_.textures = !textureArrays_.empty() || meshesHaveColors(scene);
+    features_.textureArrays = static_cast<int>(textures.buckets.size());
     if (!environmentFile.empty()) {
         const EnvironmentImage image = loadEnvironmentImage(environmentFile);
         const auto table = twin::buildEnvironmentSamplingTable(image.width, image.height, image.rgb);
@@ -68,6 +104,7 @@ void GpuScene::bind(const gl::ShaderProgram& program) const {
     glUniform1i(program.uniform("uShapeCount"), packed_.shapeCount);
     glUniform1i(program.uniform("uLightCount"), packed_.lightCount);
     meshes_.bind(program, firstMeshUnit);
+    if (features_.meshes && features_.textures) textureArrays_.bind(program, firstTextureUnit);
     const glm::vec3 colour = environment_.color * environment_.intensity;
     glUniform3fv(program.uniform("uEnvironmentColor"), 1, glm::value_ptr(colour));
     if (features_.environmentMap) {

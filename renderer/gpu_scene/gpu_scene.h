@@ -5,6 +5,7 @@
 #include "renderer/gl/texture_buffer.h"
 #include "renderer/gpu_scene/gpu_meshes.h"
 #include "renderer/gpu_scene/packed_scene.h"
+#include "renderer/gpu_scene/texture_arrays.h"
 
 #include <filesystem>
 #include <optional>
@@ -15,6 +16,10 @@ namespace glint::renderer {
 struct SceneFeatures {
     bool meshes = false;
     bool environmentMap = false;
+    bool textures = false;    // material textures or COLOR_0 on meshes: UVs, tangents, texture arrays
+    int textureArrays = 0;    // texture arrays bound (TEXTURE_ARRAY_COUNT)
+    bool alpha = false;       // a mesh material with alpha mode MASK or BLEND
+    bool singleSided = false; // a non-emissive single-sided mesh material: camera rays cull its back faces
     gl::Defines defines() const;
 };
 
@@ -24,10 +29,15 @@ public:
     GpuScene(const Scene& scene, const std::filesystem::path& environmentFile);
 
     const SceneFeatures& features() const { return features_; }
-    // Binds the buffers to texture units 0..12 and sets the scene uniforms of `program`.
+    // Problems that did not stop the upload (missing or undecodable textures, resampled sizes).
+    const std::vector<std::string>& warnings() const { return warnings_; }
+    // Binds the buffers to texture units 0..12, the texture arrays to 13..15 (the 16 units GL 4.1
+    // guarantees), and sets the scene uniforms of `program`.
     void bind(const gl::ShaderProgram& program) const;
 
 private:
+    GpuScene(const Scene& scene, const std::filesystem::path& environmentFile, TextureSet textures);
+
     SceneFeatures features_;
     PackedScene packed_;
     Environment environment_;
@@ -38,6 +48,8 @@ private:
     gl::Texture environmentMap_;
     gl::Texture environmentCdf_; // renderer/cpu_twin/env_sampling.h layout
     glm::ivec2 environmentSize_{0};
+    TextureArrays textureArrays_;
+    std::vector<std::string> warnings_;
 };
 
 } // namespace glint::renderer

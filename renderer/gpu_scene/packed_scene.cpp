@@ -1,6 +1,7 @@
 #include "renderer/gpu_scene/packed_scene.h"
 
 #include "renderer/gpu_scene/light_units.h"
+#include "renderer/gpu_scene/texture_refs.h"
 #include "renderer/gpu_scene/visibility.h"
 
 #include <cmath>
@@ -33,23 +34,28 @@ void packLight(PackedScene& out, const Light& light, const glm::mat4& worldFromL
 } // namespace
 
 // Texels: base colour; emission, roughness; metallic, specular, transmission, IOR; specular colour,
-// thickness (0: thin-walled); attenuation colour, attenuation distance (0: no absorption).
-std::vector<glm::vec4> packMaterial(const Material& m) {
+// thickness (0: thin-walled); attenuation colour, attenuation distance (0: no absorption); alpha mode
+// (0 opaque, 1 mask, 2 blend), alpha cutoff, double-sided, 0; then the texture references
+// (texture_refs.h).
+std::vector<glm::vec4> packMaterial(const Material& m, const Scene* scene, const TextureSet* textures) {
     const bool absorbs = std::isfinite(m.attenuationDistance) && m.attenuationDistance > 0.0f;
-    return {m.baseColorFactor,
+    std::vector<glm::vec4> texels{m.baseColorFactor,
             glm::vec4(m.emissiveFactor * m.emissiveStrength, glm::clamp(m.roughnessFactor, 0.0f, 1.0f)),
             {glm::clamp(m.metallicFactor, 0.0f, 1.0f), std::max(m.specularFactor, 0.0f),
              glm::clamp(m.transmissionFactor, 0.0f, 1.0f), std::max(m.ior, 1.0f)},
             glm::vec4(m.specularColorFactor, std::max(m.thicknessFactor, 0.0f)),
-            glm::vec4(m.attenuationColor, absorbs ? m.attenuationDistance : 0.0f)};
+            glm::vec4(m.attenuationColor, absorbs ? m.attenuationDistance : 0.0f),
+            {static_cast<float>(m.alphaMode), m.alphaCutoff, m.doubleSided ? 1.0f : 0.0f, 0.0f}};
+    appendMaterialTextureRefs(texels, scene, m, textures);
+    return texels;
 }
 
-PackedScene packScene(const Scene& scene) {
+PackedScene packScene(const Scene& scene, const TextureSet* textures) {
     PackedScene out;
     out.materials = packMaterial(Material{});
     for (const auto& [id, material] : scene.materials) {
         out.materialIndex[id] = static_cast<int>(out.materials.size() / materialTexels);
-        const auto texels = packMaterial(material);
+        const auto texels = packMaterial(material, &scene, textures);
         out.materials.insert(out.materials.end(), texels.begin(), texels.end());
     }
     for (const NodeId id : scene.depthFirst()) {

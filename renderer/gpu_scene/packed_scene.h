@@ -2,6 +2,7 @@
 // The scene flattened into the arrays the path-trace shader reads (layouts in
 // shaders/pathtrace/scene_buffers.glsl, lights.glsl, material.glsl). CPU only: no GL here, so the
 // packing is tested without a context.
+#include "renderer/gpu_scene/texture_set.h"
 #include "scene/core/scene.h"
 
 #include <glm/glm.hpp>
@@ -12,7 +13,8 @@
 namespace glint::renderer {
 
 inline constexpr int shapeTexels = 5;
-inline constexpr int materialTexels = 5;
+inline constexpr int materialBaseTexels = 6; // factors, then alpha mode and sidedness
+inline constexpr int materialTexels = 18;    // base texels + 4 texture references of 3 texels
 inline constexpr int lightTexels = 4;
 
 struct PackedScene {
@@ -24,9 +26,11 @@ struct PackedScene {
     std::map<MaterialId, int> materialIndex;
 };
 
-// Visible shapes and lights of `scene` (world transforms resolved), and every material.
-PackedScene packScene(const Scene& scene);
+// Visible shapes and lights of `scene` (world transforms resolved), and every material; texture
+// references point into `textures` (none without it).
+PackedScene packScene(const Scene& scene, const TextureSet* textures = nullptr);
 
-std::vector<glm::vec4> packMaterial(const Material& material);
+// One material record; texture references are empty unless `scene` and `textures` are given.
+std::vector<glm::vec4> packMaterial(const Material& material, const Scene* scene = nullptr, const TextureSet* textures = nullptr);
 
 } // namespace glint::renderer

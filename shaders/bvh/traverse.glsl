@@ -6,6 +6,10 @@
 // Shape instances: define BVH_SHAPE_INSTANCES and, before including this file,
 //   bool bvhIntersectShapeInstance(uint shape, vec3 localOrigin, vec3 localDirection, inout float tMax);
 // (lowers tMax and returns true on a closer hit). Without it shape instances are skipped.
+//
+// Triangle filter (alpha testing, back-face culling): define BVH_TRIANGLE_FILTER and, before
+// including this file, bool bvhAcceptTriangle(int instance, int slot, vec3 tuv, vec3 localDirection);
+// a rejected triangle hit is skipped as if the ray had missed it (closest and any hit alike).
 #include "bvh/buffers.glsl"
 #include "bvh/box.glsl"
 #include "bvh/triangle.glsl"
@@ -52,6 +56,9 @@ bool bvhWalkMesh(int root, int instance, vec3 origin, vec3 direction, bool anyHi
                 vec3 tuv;
                 if (bvhIntersectTriangle(ray, bvhTrianglePosition(slot, 0), bvhTrianglePosition(slot, 1),
                                          bvhTrianglePosition(slot, 2), hit.t, tuv)) {
+#ifdef BVH_TRIANGLE_FILTER
+                    if (!bvhAcceptTriangle(instance, slot, tuv, direction)) continue;
+#endif
                     hit = BvhHit(tuv.x, tuv.y, tuv.z, instance, slot);
                     if (anyHit) return true;
                 }

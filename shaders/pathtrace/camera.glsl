@@ -40,3 +40,10 @@ Ray cameraRay(uvec2 pixel, uint sampleIndex, uint seed, INOUT(Rng) rng) {
 }
 
 vec3 cameraForward() { return normalize(-uWorldFromCamera[2].xyz); }
+
+// The ray cone of a camera ray (textures/ray_cone.glsl): a perspective pixel subtends
+// 2 tan(fov/2) / height radians; an orthographic one is a pixel wide and does not spread.
+RayCone cameraCone() {
+    float pixel = 2.0 * uHalfExtent.y / uResolution.y;
+    return uOrthographic != 0 ? RayCone(pixel, 0.0) : RayCone(0.0, pixel);
+}

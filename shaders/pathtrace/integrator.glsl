@@ -23,7 +23,12 @@ struct Vertex {
     Frame frame;     // around the outward shading normal
     vec3 wo;         // towards where the ray came from, local
     SurfaceMaterial material;
+    RayCone cone;    // the arriving ray's cone, its width taken at this vertex
 };
+
+// Random bits for the triangle filter's stochastic transparency, from dimensions no sampling
+// routine draws (so alpha-free scenes keep their random streams).
+uvec4 alphaKey(Rng rng, uint salt) { return rngBits(rng.key, 0x80000000u + salt * 0x10000u + rng.dimension); }
 
 // A light sample waiting for its shadow ray: unoccluded, it adds `contribution`.
 struct ShadowCandidate {
@@ -72,6 +77,7 @@ vec3 directLight(Vertex v, INOUT(Rng) rng) {
         ShadowCandidate c = i < uLightCount ? punctualCandidate(v, i, rng)
                           : (i == uLightCount ? areaCandidate(v, rng) : environmentCandidate(v, rng));
         if (!(maxComponent(c.contribution) > 0.0)) continue;
+        setTraceState(false, alphaKey(rng, 1u), v.cone);
         if (!occluded(spawnRay(v.position, v.faceNormal, c.direction), c.distance)) sum += c.contribution;
     }
     return sum;
@@ -95,7 +101,9 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng) {
     vec3 attenuation = vec3(0.0); // Beer-Lambert sigma of the medium the ray travels in
     float lastBsdfPdf = 0.0;       // of the sampled direction; 0 for camera rays and delta lobes
     int maxBounces = min(uMaxBounces, HARD_PATH_LIMIT - 1);
+    RayCone cone = cameraCone();
     for (int depth = 0; depth <= maxBounces + 1; ++depth) {
+        setTraceState(depth == 0, alphaKey(rng, 2u), cone);
         Hit hit = traceClosest(ray);
         if (hit.material < 0) {
             vec3 environment = environmentRadiance(ray.direction);
@@ -107,17 +115,18 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng) {
         Vertex v;
         v.position = ray.origin + hit.t * ray.direction;
         v.faceNormal = hit.geometricNormal;
-        v.frame = frameFromNormal(hit.shadingNormal);
+        v.cone = RayCone(coneWidthAt(cone, hit.t), cone.spread);
+        SurfaceShading shading = shadeSurface(hit, ray.direction, v.cone.width);
+        v.frame = frameFromNormal(shading.normal);
         v.wo = localFromWorld(v.frame, -ray.direction);
-        v.material = fetchSurfaceMaterial(hit.material);
+        v.material = shading.material;
         if (depth == 0) {
             result.albedo = v.material.baseColor;
-            result.normal = v.wo.z >= 0.0 ? hit.shadingNormal : -hit.shadingNormal;
+            result.normal = v.wo.z >= 0.0 ? shading.normal : -shading.normal;
             result.depth = hit.t * dot(ray.direction, viewAxis);
             result.objectId = hit.objectId;
         }
-        vec3 emission = fetchEmission(hit.material);
-        result.radiance += throughput * emission * emissionMisWeight(hit, emission, ray.direction, lastBsdfPdf);
+        result.radiance += throughput * shading.emission * emissionMisWeight(hit, shading.sampledEmission, ray.direction, lastBsdfPdf);
         if (depth > maxBounces) break;
 
         result.radiance += throughput * directLight(v, rng);
@@ -136,6 +145,8 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng) {
         bool crosses = (bs.wi.z > 0.0) != (v.wo.z > 0.0);
         if (crosses && !v.material.thinWalled) attenuation = v.wo.z > 0.0 ? attenuationCoefficient(v.material) : vec3(0.0);
         vec3 wi = worldFromLocal(v.frame, bs.wi);
+        float lobeRoughness = (bs.lobe & LOBE_SPECULAR) != 0u ? 0.0 : ((bs.lobe & LOBE_DIFFUSE) != 0u ? 1.0 : v.material.roughness);
+        cone = bounceCone(cone, hit.t, shading.curvature, lobeRoughness);
         ray = spawnRay(v.position, v.faceNormal, wi);
     }
     if (uClamp > 0.0) result.radiance = min(result.radiance, vec3(uClamp));
@@ -148,11 +159,13 @@ uniform float uAoDistance;
 
 PathResult ambientOcclusion(Ray ray, vec3 viewAxis, INOUT(Rng) rng) {
     PathResult result = PathResult(vec3(1.0), vec3(1.0), vec3(0.0), -1.0, 0.0);
+    setTraceState(true, alphaKey(rng, 2u), cameraCone());
     Hit hit = traceClosest(ray);
     if (hit.material < 0) return result;
     vec3 p = ray.origin + hit.t * ray.direction;
     vec3 n = dot(ray.direction, hit.shadingNormal) < 0.0 ? hit.shadingNormal : -hit.shadingNormal;
     vec3 wi = worldFromLocal(frameFromNormal(n), cosineHemisphere(rand2(rng)));
+    setTraceState(false, alphaKey(rng, 1u), cameraCone());
     float visible = occluded(spawnRay(p, hit.geometricNormal, wi), uAoDistance) ? 0.0 : 1.0;
     return PathResult(vec3(visible), vec3(1.0), n, hit.t * dot(ray.direction, viewAxis), hit.objectId);
 }

@@ -18,3 +18,62 @@ SurfaceMaterial fetchSurfaceMaterial(int material) {
 vec3 fetchEmission(int material) {
     return materialTexel(material, 1).rgb;
 }
+
+// A hit's material after textures, and the normal it shades with.
+struct SurfaceShading {
+    SurfaceMaterial material;
+    vec3 emission;        // radiance leaving the surface
+    vec3 sampledEmission; // what light sampling of emissive triangles assumes here (0: not light-sampled)
+    vec3 normal;          // shading normal, on the geometric normal's side
+    float curvature;      // 1/m, for the ray cone's spread
+};
+
+#ifdef HAS_TEXTURES
+// Tangent-space normal mapping with the MikkTSpace frame: the tangent made orthogonal to the
+// interpolated normal, bitangent = cross(n, t) x handedness. A mapped normal that would face away
+// from the geometric normal (or a mesh without tangents) keeps the interpolated normal.
+vec3 mappedNormal(vec3 n, vec3 geometricNormal, MeshSurface m, TextureRef r) {
+    vec3 t = m.tangent - dot(m.tangent, n) * n;
+    if (!(dot(t, t) > 1e-12) || !isFiniteVec3(t)) return n;
+    t = normalize(t);
+    vec3 b = cross(n, t) * m.handedness;
+    vec3 c = sampleSurfaceTexture(m, r).xyz * 2.0 - 1.0;
+    vec3 mapped = normalize(t * (c.x * r.scale) + b * (c.y * r.scale) + n * c.z);
+    return isFiniteVec3(mapped) && dot(mapped, geometricNormal) > 0.0 ? mapped : n;
+}
+
+// glTF's texture semantics: base colour x texture x COLOR_0; roughness x G, metallic x B;
+// emission x texture. Emissive-textured triangles are not light-sampled (the light table holds
+// factors), so their emission is found by BSDF sampling alone, unweighted. The occlusion texture is
+// not read: a path tracer computes occlusion itself (docs/MATERIALS.md).
+void applyTextures(Hit hit, vec3 rayDirection, float coneWidth, INOUT(SurfaceShading) s) {
+    MeshSurface m = meshSurface(hit.triangle.x, hit.triangle.y, hit.barycentric, rayDirection, hit.geometricNormal, coneWidth);
+    s.curvature = m.curvature;
+    s.material.baseColor *= m.color.rgb;
+    TextureRef r = fetchTextureRef(hit.material, TEXREF_BASE_COLOR);
+    if (hasTexture(r)) s.material.baseColor *= sampleSurfaceTexture(m, r).rgb;
+    r = fetchTextureRef(hit.material, TEXREF_METALLIC_ROUGHNESS);
+    if (hasTexture(r)) {
+        vec4 metallicRoughness = sampleSurfaceTexture(m, r);
+        s.material.roughness *= metallicRoughness.g;
+        s.material.metallic *= metallicRoughness.b;
+    }
+    r = fetchTextureRef(hit.material, TEXREF_EMISSIVE);
+    if (hasTexture(r)) {
+        s.emission *= sampleSurfaceTexture(m, r).rgb;
+        s.sampledEmission = vec3(0.0);
+    }
+    r = fetchTextureRef(hit.material, TEXREF_NORMAL);
+    if (hasTexture(r)) s.normal = mappedNormal(s.normal, hit.geometricNormal, m, r);
+}
+#endif
+
+// `coneWidth`: the ray cone's width at the hit, for the textures' level of detail.
+SurfaceShading shadeSurface(Hit hit, vec3 rayDirection, float coneWidth) {
+    vec3 emission = fetchEmission(hit.material);
+    SurfaceShading s = SurfaceShading(fetchSurfaceMaterial(hit.material), emission, emission, hit.shadingNormal, 0.0);
+#ifdef HAS_TEXTURES
+    if (hit.triangle.x >= 0) applyTextures(hit, rayDirection, coneWidth, s);
+#endif
+    return s;
+}

@@ -1,14 +1,34 @@
 // Triangle meshes through the two-level BVH (shaders/bvh), compiled only for scenes with meshes
 // (HAS_MESHES). Shading normals are interpolated vertex normals (the geometric normal where a mesh
 // has none or they are degenerate), turned to the geometric normal's side.
+#include "trace_state.glsl" // outside the #ifdef: the include resolver pastes a file only once
 #ifdef HAS_MESHES
+#include "bvh/buffers.glsl"
+
+// Mesh-local vertex data in the vertex order of bvh_layout.h, VERTEX_TEXELS per vertex: the normal;
+// with textures (HAS_TEXTURES) also (uv0, uv1), the tangent and COLOR_0 (gpu_meshes.cpp).
+uniform samplerBuffer uVertexNormals;
+#ifdef HAS_TEXTURES
+const int VERTEX_TEXELS = 4;
+#else
+const int VERTEX_TEXELS = 1;
+#endif
+
+vec4 vertexTexel(uint vertex, int k) { return texelFetch(uVertexNormals, int(vertex) * VERTEX_TEXELS + k); }
+
+#ifdef HAS_TEXTURES
+#include "textures/texture_sample.glsl"
+#include "mesh_surface.glsl"
+#endif
+#if defined(HAS_ALPHA) || defined(HAS_SINGLE_SIDED)
+#define BVH_TRIANGLE_FILTER
+#include "triangle_filter.glsl"
+#endif
 #include "bvh/traverse.glsl"
 
-uniform samplerBuffer uVertexNormals; // mesh-local, in the vertex order of bvh_layout.h
-
 vec3 meshShadingNormal(BvhHit b, uvec4 vertices, vec3 geometricNormal) {
-    vec3 local = (1.0 - b.u - b.v) * texelFetch(uVertexNormals, int(vertices.x)).xyz +
-                 b.u * texelFetch(uVertexNormals, int(vertices.y)).xyz + b.v * texelFetch(uVertexNormals, int(vertices.z)).xyz;
+    vec3 local = (1.0 - b.u - b.v) * vertexTexel(vertices.x, 0).xyz + b.u * vertexTexel(vertices.y, 0).xyz +
+                 b.v * vertexTexel(vertices.z, 0).xyz;
     if (!(dot(local, local) > 1e-12) || !isFiniteVec3(local)) return geometricNormal;
     vec3 n = bvhNormalToWorld(b.instance, local);
     if (!isFiniteVec3(n)) return geometricNormal;
@@ -22,7 +42,7 @@ void intersectMeshes(Ray ray, INOUT(Hit) hit) {
     vec3 geometricNormal = bvhGeometricNormal(b);
     if (!isFiniteVec3(geometricNormal)) return; // a zero-area triangle the watertight test let through
     hit = Hit(b.t, geometricNormal, meshShadingNormal(b, vertices, geometricNormal), int(vertices.w),
-              float(bvhInstanceInfo(b.instance).z), true);
+              float(bvhInstanceInfo(b.instance).z), true, ivec2(b.slot, b.instance), vec2(b.u, b.v));
 }
 
 bool occludedByMeshes(Ray ray, float distance) {

@@ -13,10 +13,12 @@ struct Hit {
     int material;         // index into the material buffer; -1: no hit
     float objectId;       // node id of what was hit
     bool onMesh;          // a mesh triangle (emissive ones are also sampled as lights)
+    ivec2 triangle;       // mesh hits: (triangle slot, instance); (-1, -1) otherwise
+    vec2 barycentric;     // mesh hits: weights of vertices 1 and 2
 };
 
 Hit noHit() {
-    return Hit(RAY_MAX, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), -1, 0.0, false);
+    return Hit(RAY_MAX, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), -1, 0.0, false, ivec2(-1), vec2(0.0));
 }
 
 // Secondary rays start a few ULPs off the surface (bvh/ray_offset.glsl): no self-intersection, at

@@ -1,0 +1,29 @@
+#pragma once
+// CPU mipmaps for material textures: a deterministic 2x2 box filter (driver glGenerateMipmap
+// filters differ between vendors), averaged in linear light for sRGB images. CPU only: no GL here.
+#include <cstdint>
+#include <vector>
+
+namespace glint::renderer {
+
+// One RGBA8 image level, rows in upload order.
+struct TextureLevel {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> rgba;
+};
+
+// The sRGB transfer function of IEC 61966-2-1 (exact piecewise form, not a gamma of 2.2).
+float srgbToLinear(std::uint8_t encoded);
+std::uint8_t linearToSrgb8(float linear); // rounded to the nearest code
+
+// Levels 0 .. 1x1. Each texel of level n+1 averages the 2x2 texels (2x, 2y) .. (2x+1, 2y+1) of level
+// n, the odd last row or column of an odd-sized level folded into its neighbour by clamping. Colour
+// channels of an sRGB image are averaged as linear values and re-encoded; alpha is always linear.
+std::vector<TextureLevel> buildMipChain(TextureLevel base, bool srgb);
+
+// Bilinear resampling to another size (texel centres aligned, edges clamped), in linear light for
+// sRGB images: used only when the scene has more texture sizes than sampler units.
+TextureLevel resampleLevel(const TextureLevel& level, int width, int height, bool srgb);
+
+} // namespace glint::renderer

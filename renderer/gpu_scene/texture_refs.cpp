@@ -1,0 +1,55 @@
+#include "renderer/gpu_scene/texture_refs.h"
+
+#include <cmath>
+
+namespace glint::renderer {
+namespace {
+
+int wrapCode(Wrap wrap) {
+    switch (wrap) {
+    case Wrap::ClampToEdge: return 1;
+    case Wrap::MirroredRepeat: return 2;
+    default: return 0;
+    }
+}
+
+bool nearestMin(Filter f) { return f == Filter::Nearest || f == Filter::NearestMipmapNearest || f == Filter::NearestMipmapLinear; }
+
+// glTF leaves an unset filter to the viewer: trilinear, like the sample viewer.
+bool mipmapped(Filter f) { return f != Filter::Nearest && f != Filter::Linear; }
+
+} // namespace
+
+float samplerFlags(const Sampler& s) {
+    const int flags = wrapCode(s.wrapS) + 3 * wrapCode(s.wrapT) + 9 * (s.magFilter == Filter::Nearest ? 1 : 0) +
+                      18 * (nearestMin(s.minFilter) ? 1 : 0) + 36 * (mipmapped(s.minFilter) ? 1 : 0);
+    return static_cast<float>(flags);
+}
+
+void appendTextureRef(std::vector<glm::vec4>& out, const TextureRef& ref, TextureSlot slot, const Sampler& sampler) {
+    const TextureTransform& t = ref.transform;
+    const float c = std::cos(t.rotation), s = std::sin(t.rotation);
+    const int texCoord = t.texCoord >= 0 ? t.texCoord : ref.texCoord;
+    out.push_back({static_cast<float>(slot.bucket), static_cast<float>(slot.layer), samplerFlags(sampler), static_cast<float>(texCoord)});
+    out.push_back({c * t.scale.x, s * t.scale.y, -s * t.scale.x, c * t.scale.y});
+    out.push_back({t.offset.x, t.offset.y, ref.scale, 0.0f});
+}
+
+void appendMaterialTextureRefs(std::vector<glm::vec4>& out, const Scene* scene, const Material& m, const TextureSet* textures) {
+    const auto add = [&](const TextureRef& ref, bool srgb) {
+        TextureSlot slot;
+        Sampler sampler;
+        if (scene && textures && ref.valid() && scene->textures.contains(ref.texture)) {
+            const Texture& texture = scene->textures.at(ref.texture);
+            slot = textures->find(texture.image, srgb);
+            if (scene->samplers.contains(texture.sampler)) sampler = scene->samplers.at(texture.sampler);
+        }
+        appendTextureRef(out, ref, slot, sampler);
+    };
+    add(m.baseColorTexture, true);
+    add(m.metallicRoughnessTexture, false);
+    add(m.normalTexture, false);
+    add(m.emissiveTexture, true);
+}
+
+} // namespace glint::renderer

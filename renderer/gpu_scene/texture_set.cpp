@@ -1,0 +1,137 @@
+#include "renderer/gpu_scene/texture_set.h"
+
+#include "renderer/gpu_scene/visibility.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace glint::renderer {
+namespace {
+
+using Use = std::pair<ImageId, bool>; // image, sRGB
+
+TextureLevel placeholderChecker() {
+    TextureLevel level{8, 8, std::vector<std::uint8_t>(8 * 8 * 4)};
+    for (int i = 0; i < 64; ++i) {
+        const bool on = ((i % 8) / 4 + (i / 8) / 4) % 2 == 0;
+        const std::uint8_t rgba[4] = {static_cast<std::uint8_t>(on ? 255 : 0), 0, static_cast<std::uint8_t>(on ? 255 : 0), 255};
+        std::copy(rgba, rgba + 4, level.rgba.begin() + i * 4);
+    }
+    return level;
+}
+
+std::string imageName(const Scene& scene, ImageId id) {
+    const Image& image = scene.images.at(id);
+    return !image.uri.empty() ? image.uri : !image.name.empty() ? image.name : "image " + std::to_string(id.value);
+}
+
+// Level 0 of an image, or an error message.
+std::pair<TextureLevel, std::string> decodeBase(const Scene& scene, ImageId id, const ImageDecoder& decoder, int maxSize) {
+    if (!scene.images.contains(id)) return {{}, "a texture names no image"};
+    const Image& image = scene.images.at(id);
+    if (image.missing || image.encoded.empty()) return {{}, imageName(scene, id) + ": missing"};
+    DecodedImage<std::uint8_t> decoded = decoder.decode8(image.encoded, DecodeLimits{});
+    if (!decoded.ok()) return {{}, imageName(scene, id) + ": " + decoded.error};
+    TextureLevel level{decoded.width, decoded.height, std::move(decoded.rgba)};
+    while (level.width > maxSize || level.height > maxSize) level = buildMipChain(std::move(level), false).at(1);
+    return {std::move(level), {}};
+}
+
+// The (image, colour space) pairs that `materials` sample, in a fixed order.
+std::set<Use> texturesUsed(const Scene& scene, const std::set<MaterialId>& materials) {
+    std::set<Use> uses;
+    const auto add = [&](const TextureRef& ref, bool srgb) {
+        if (ref.valid() && scene.textures.contains(ref.texture)) uses.insert({scene.textures.at(ref.texture).image, srgb});
+    };
+    for (const MaterialId id : materials) {
+        if (!scene.materials.contains(id)) continue;
+        const Material& m = scene.materials.at(id);
+        add(m.baseColorTexture, true);
+        add(m.emissiveTexture, true);
+        add(m.metallicRoughnessTexture, false);
+        add(m.normalTexture, false);
+    }
+    return uses;
+}
+
+struct Group {
+    bool srgb;
+    int width, height;
+    std::vector<std::pair<Use, TextureLevel>> images;
+    long long area() const { return static_cast<long long>(width) * height; }
+};
+
+// Merges the smallest group of a colour space that has several into the next larger of that space.
+void mergeOnce(std::vector<Group>& groups, std::vector<std::string>& warnings) {
+    std::size_t smallest = groups.size();
+    for (std::size_t i = 0; i < groups.size(); ++i) {
+        const auto sameSpace = std::count_if(groups.begin(), groups.end(), [&](const Group& g) { return g.srgb == groups[i].srgb; });
+        if (sameSpace > 1 && (smallest == groups.size() || groups[i].area() < groups[smallest].area())) smallest = i;
+    }
+    if (smallest == groups.size()) throw std::runtime_error("the scene's textures need more sampler units than the path tracer has");
+    std::size_t target = groups.size();
+    for (std::size_t i = 0; i < groups.size(); ++i)
+        if (i != smallest && groups[i].srgb == groups[smallest].srgb &&
+            (target == groups.size() || groups[i].area() < groups[target].area()))
+            target = i;
+    Group& from = groups[smallest];
+    Group& to = groups[target];
+    warnings.push_back("textures of " + std::to_string(from.width) + "x" + std::to_string(from.height) + " resampled to " +
+                       std::to_string(to.width) + "x" + std::to_string(to.height) + " (too many texture sizes for the sampler units)");
+    for (auto& [use, level] : from.images) to.images.emplace_back(use, resampleLevel(level, to.width, to.height, from.srgb));
+    std::sort(to.images.begin(), to.images.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    groups.erase(groups.begin() + static_cast<std::ptrdiff_t>(smallest));
+}
+
+} // namespace
+
+TextureSlot TextureSet::find(ImageId image, bool srgb) const {
+    const auto it = slots.find({image, srgb});
+    return it == slots.end() ? TextureSlot{} : it->second;
+}
+
+std::set<MaterialId> meshMaterials(const Scene& scene) {
+    std::set<MaterialId> used;
+    for (const NodeId id : scene.depthFirst()) {
+        const Node& node = scene.at(id);
+        const auto* instance = node.get<MeshInstance>();
+        if (!instance || !visibleInWorld(scene, node) || !scene.meshes.contains(instance->mesh)) continue;
+        for (const Primitive& p : scene.meshes.at(instance->mesh).primitives) used.insert(p.material);
+    }
+    return used;
+}
+
+TextureSet buildTextureSet(const Scene& scene, const std::set<MaterialId>& materials, const ImageDecoder& decoder,
+                           const TextureLimits& limits) {
+    TextureSet set;
+    std::vector<Group> groups;
+    for (const Use& use : texturesUsed(scene, materials)) {
+        auto [level, problem] = decodeBase(scene, use.first, decoder, limits.maxSize);
+        if (!problem.empty()) {
+            set.warnings.push_back("texture " + problem + (use.second ? " (shown as a checker)" : " (ignored)"));
+            if (!use.second) continue;
+            level = placeholderChecker();
+        }
+        auto group = std::find_if(groups.begin(), groups.end(), [&](const Group& g) {
+            return g.srgb == use.second && g.width == level.width && g.height == level.height;
+        });
+        if (group == groups.end()) group = groups.insert(groups.end(), Group{use.second, level.width, level.height, {}});
+        group->images.emplace_back(use, std::move(level));
+    }
+    while (static_cast<int>(groups.size()) > limits.maxBuckets) mergeOnce(groups, set.warnings);
+    for (Group& group : groups) {
+        if (static_cast<int>(group.images.size()) > limits.maxLayers)
+            throw std::runtime_error(std::to_string(group.images.size()) + " textures of " + std::to_string(group.width) + "x" +
+                                     std::to_string(group.height) + " exceed the driver's limit of " +
+                                     std::to_string(limits.maxLayers) + " texture array layers");
+        TextureBucket bucket{group.srgb, group.width, group.height, {}};
+        for (auto& [use, level] : group.images) {
+            set.slots[use] = TextureSlot{static_cast<int>(set.buckets.size()), static_cast<int>(bucket.layers.size())};
+            bucket.layers.push_back(buildMipChain(std::move(level), group.srgb));
+        }
+        set.buckets.push_back(std::move(bucket));
+    }
+    return set;
+}
+
+} // namespace glint::renderer

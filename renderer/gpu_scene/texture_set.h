@@ -1,0 +1,58 @@
+#pragma once
+// The scene's material textures decoded, bucketed and mipmapped for upload (renderer/gpu_scene/
+// texture_arrays.h uploads them). A texture array holds images of one size and one colour space, so
+// images are grouped by (colour space, width, height): sRGB data (base colour, emission) goes to
+// GL_SRGB8_ALPHA8 arrays, linear data (metallic-roughness, normals) to GL_RGBA8 ones. Each bucket
+// costs a sampler unit; when a scene has more sizes than units, the smallest bucket of a colour
+// space is resampled to the next larger size of that space (with a warning) until it fits.
+// CPU only: no GL here.
+#include "renderer/gpu_scene/texture_mips.h"
+#include "scene/core/scene.h"
+#include "scene/io/image_decoder.h"
+
+#include <map>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace glint::renderer {
+
+struct TextureSlot {
+    int bucket = -1; // -1: no texture (the factor alone)
+    int layer = 0;
+};
+
+struct TextureBucket {
+    bool srgb = false;
+    int width = 0;
+    int height = 0;
+    std::vector<std::vector<TextureLevel>> layers; // each a full mip chain down to 1x1
+};
+
+struct TextureLimits {
+    int maxBuckets = 3;     // sampler units left for texture arrays
+    int maxLayers = 256;    // GL_MAX_ARRAY_TEXTURE_LAYERS (GL 4.1 guarantees 2048; 256 keeps uploads bounded)
+    int maxSize = 8192;     // GL_MAX_TEXTURE_SIZE; larger images use their first mip level that fits
+};
+
+struct TextureSet {
+    std::vector<TextureBucket> buckets;
+    std::map<std::pair<ImageId, bool>, TextureSlot> slots; // (image, sRGB) -> where it lives
+    std::vector<std::string> warnings;
+
+    TextureSlot find(ImageId image, bool srgb) const;
+    bool empty() const { return buckets.empty(); }
+};
+
+// Materials that visible mesh primitives use: only meshes carry texture coordinates.
+std::set<MaterialId> meshMaterials(const Scene& scene);
+
+// Textures that the path tracer samples for `materials` (base colour, metallic-roughness, normal,
+// emissive). Missing or undecodable images: an 8x8 magenta/black checker for colour data, nothing
+// (the factor alone) for linear data, and a warning either way. Throws std::runtime_error when a
+// bucket would exceed `limits.maxLayers` or the colour spaces outnumber `limits.maxBuckets`.
+TextureSet buildTextureSet(const Scene& scene, const std::set<MaterialId>& materials, const ImageDecoder& decoder,
+                           const TextureLimits& limits);
+
+} // namespace glint::renderer

@@ -1,0 +1,44 @@
+#include "trace_state.glsl"
+
+// The BVH's triangle filter (BVH_TRIANGLE_FILTER in bvh/traverse.glsl): which triangle hits count.
+// - Alpha (HAS_ALPHA): MASK drops a hit whose alpha (base colour factor x texture x COLOR_0) is below
+//   the cutoff; BLEND keeps it with probability alpha (stochastic transparency: unbiased on
+//   average, for camera, bounce and shadow rays alike, so shadows respect alpha).
+// - Single-sided materials (HAS_SINGLE_SIDED): camera rays pass through their back faces, as glTF's
+//   back-face culling shows them. Secondary rays see both sides (a closed single-sided object still
+//   casts shadows and refracts), and emitters, which emit from both sides, are never culled.
+float surfaceAlpha(int material, int slot, int instance, vec3 tuv, vec3 localDirection) {
+    float alpha = materialTexel(material, 0).w;
+#ifdef HAS_TEXTURES
+    mat3 worldFromLocal = inverse(meshLocalFromWorld(instance));
+    vec3 p0 = bvhTrianglePosition(slot, 0);
+    vec3 normal = bvhNormalToWorld(instance, cross(bvhTrianglePosition(slot, 1) - p0, bvhTrianglePosition(slot, 2) - p0));
+    MeshSurface s = meshSurface(slot, instance, tuv.yz, normalize(worldFromLocal * localDirection), normal,
+                                coneWidthAt(gFilterCone, tuv.x));
+    alpha *= s.color.a;
+    TextureRef r = fetchTextureRef(material, TEXREF_BASE_COLOR);
+    if (hasTexture(r)) alpha *= sampleSurfaceTexture(s, r).a;
+#endif
+    return alpha;
+}
+
+bool bvhAcceptTriangle(int instance, int slot, vec3 tuv, vec3 localDirection) {
+    uvec4 vertices = bvhTriangleVertices(slot);
+    int material = int(vertices.w);
+    vec4 mode = materialTexel(material, 5); // alpha mode, cutoff, double-sided
+#ifdef HAS_SINGLE_SIDED
+    if (gCullBackFaces && mode.z == 0.0 && maxComponent(materialTexel(material, 1).rgb) <= 0.0) {
+        vec3 p0 = bvhTrianglePosition(slot, 0);
+        if (dot(cross(bvhTrianglePosition(slot, 1) - p0, bvhTrianglePosition(slot, 2) - p0), localDirection) > 0.0) return false;
+    }
+#endif
+#ifdef HAS_ALPHA
+    if (mode.x == 0.0) return true;
+    float alpha = surfaceAlpha(material, slot, instance, tuv, localDirection);
+    if (mode.x == 1.0) return alpha >= mode.y;
+    uvec4 bits = pcg4d(gAlphaKey + uvec4(uint(slot), uint(instance), 0u, 0u));
+    return unitFloatFromBits(bits.x) < alpha;
+#else
+    return true;
+#endif
+}
