@@ -88,6 +88,8 @@ Camera readCamera(const GltfReadContext& ctx, int camera, const Json& node, cons
         c.lensRadius = json.number(*e, "lensRadius", c.lensRadius, where + ".extensions.GLINT_camera");
         c.focusDistance = json.number(*e, "focusDistance", c.focusDistance, where + ".extensions.GLINT_camera");
         c.exposure = json.number(*e, "exposure", c.exposure, where + ".extensions.GLINT_camera");
+        if (c.projection == Projection::Orthographic && json.boolean(*e, "infiniteFar", false, where + ".extensions.GLINT_camera"))
+            c.zfar = 0.0f;
     }
     if (const Json* e = json.extension(node, "GLINT_camera_path", nodeWhere)) c.path = readCameraPath(ctx, *e, nodeWhere + ".extensions.GLINT_camera_path");
     return c;

@@ -8,6 +8,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
+
 namespace glint {
 
 namespace {
@@ -104,6 +106,15 @@ nlohmann::json cameraPathJson(const CameraPath& path)
             {"keys", std::move(keys)}};
 }
 
+// glTF requires an orthographic zfar greater than znear, but Glint's orthographic cameras may
+// see without limit (zfar 0). Such a camera writes a far plane well past the near one for other
+// tools, and GLINT_camera.infiniteFar so that Glint reads the unbounded camera back.
+float orthographicFarForGltf(const Camera& camera)
+{
+    if (camera.zfar > camera.znear) return camera.zfar;
+    return std::max(1.0e4f, camera.znear * 2.0f + 1.0f);
+}
+
 void writeCamera(GltfWriteContext& ctx, nlohmann::json& node, const Camera& camera)
 {
     nlohmann::json out;
@@ -119,11 +130,13 @@ void writeCamera(GltfWriteContext& ctx, nlohmann::json& node, const Camera& came
         out["orthographic"] = {{"xmag", jsonFloat(camera.xmag)},
                                {"ymag", jsonFloat(camera.ymag)},
                                {"znear", jsonFloat(camera.znear)},
-                               {"zfar", jsonFloat(camera.zfar)}};
+                               {"zfar", jsonFloat(orthographicFarForGltf(camera))}};
     }
     out["extensions"]["GLINT_camera"] = {{"lensRadius", jsonFloat(camera.lensRadius)},
                                          {"focusDistance", jsonFloat(camera.focusDistance)},
                                          {"exposure", jsonFloat(camera.exposure)}};
+    if (camera.projection == Projection::Orthographic && camera.zfar <= camera.znear)
+        out["extensions"]["GLINT_camera"]["infiniteFar"] = true;
     nlohmann::json& cameras = ctx.root["cameras"];
     node["camera"] = cameras.size();
     cameras.push_back(std::move(out));

@@ -183,6 +183,9 @@ Scene featureScene()
     const NodeId camera = scene.addNode(node("shot", pathCamera()));
     Camera ortho{.projection = Projection::Orthographic, .znear = 0.1f, .zfar = 50.0f, .xmag = 2.0f, .ymag = 1.5f};
     scene.addNode(node("top", ortho, {.translation = {0.0f, 10.0f, 0.0f}}));
+    Camera unbounded = ortho;
+    unbounded.zfar = 0.0f; // sees without limit: glTF still needs zfar > znear
+    scene.addNode(node("plan", unbounded, {.translation = {0.0f, 20.0f, 0.0f}}));
     Node hidden = node("hidden", MeshInstance{quad});
     hidden.visible = false;
     hidden.unknown = {{"extensions", {{"EXT_glint_test_node", {{"payload", {1, 2, 3}}}}}}, {"extras", {{"tag", "keep me"}}}};
