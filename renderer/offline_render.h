@@ -1,7 +1,7 @@
 #pragma once
 // Headless rendering for the command line, tests and benchmarks: a scene and a request in, linear
 // radiance, AOVs and a tonemapped sRGB image out. Images are rows top-down, RGBA interleaved.
-#include "renderer/passes/path_trace_pass.h"
+#include "renderer/frame_renderer.h"
 #include "scene/core/scene.h"
 
 #include <cstdint>
@@ -15,9 +15,11 @@
 namespace glint::renderer {
 
 struct RenderRequest {
+    Configuration configuration = Configuration::Accumulate;
+    int frames = 1;                       // real-time configurations: frames of history (static view)
     int width = 640;
     int height = 360;
-    int spp = 16;
+    int spp = 16;                         // Accumulate/Reference: in all; real-time: per frame
     std::uint32_t seed = 0;
     int bounces = 4;
     std::string cameraName;               // empty: the project's active camera, else the first one
@@ -30,7 +32,7 @@ struct RenderRequest {
     bool independentSampler = false;
     DebugView view = DebugView::None;
     float aoDistance = 1.0f;              // metres, for DebugView::AmbientOcclusion
-    std::function<void(int done, int total)> progress; // after each sample; may be empty
+    std::function<void(int done, int total)> progress; // after each sample (real-time: frame); may be empty
 };
 
 struct RenderTimings {
@@ -39,21 +41,15 @@ struct RenderTimings {
     double msPerSample = 0.0;
 };
 
-struct RenderOutput {
-    int width = 0;
-    int height = 0;
-    std::vector<float> radiance;  // RGBA: linear Rec.709, A = coverage
-    std::vector<float> albedo;    // RGB
-    std::vector<float> normal;    // XYZ, world space
-    std::vector<float> depth;     // along the view axis in metres, +inf where nothing is hit
-    std::vector<float> objectId;  // node id, 0 where nothing is hit
-    std::vector<float> variance;  // RGB: unbiased sample variance of one sample's radiance (divide by spp for the mean's)
-    std::vector<std::uint8_t> tonemapped; // RGBA8, sRGB
+// FrameImages plus where and how long. variance: unbiased sample variance of one sample's radiance
+// (divide by spp for the mean's).
+struct RenderOutput : FrameImages {
     std::string glRenderer;
     RenderTimings timings;
 };
 
-// Owns a headless context and compiled programs, so many renders share their setup cost.
+// Owns a headless context and a FrameRenderer in it, so many renders share their setup cost (the
+// compiled programs). Every render goes through FrameRenderer: one code path with the editor.
 class OfflineRenderer {
 public:
     explicit OfflineRenderer(bool requireGpu = false);

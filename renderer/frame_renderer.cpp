@@ -1,0 +1,355 @@
+#include "renderer/frame_renderer.h"
+
+#include "renderer/gl/program_cache.h"
+#include "renderer/gl/render_target.h"
+#include "renderer/passes/accumulate_pass.h"
+#include "renderer/passes/reconstruction.h"
+#include "renderer/passes/tonemap_pass.h"
+#include "scene/anim/node_animation.h"
+#include "scene/anim/scene_at_time.h"
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <stdexcept>
+
+namespace glint::renderer {
+namespace {
+
+// Saves what the passes change and puts the caller's state back: a host (QOpenGLWidget) keeps its
+// own framebuffer, viewport and enables across our calls.
+class CallerGlState {
+public:
+    CallerGlState() {
+        glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFbo_);
+        glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFbo_);
+        glGetIntegerv(GL_VIEWPORT, viewport_);
+        glGetIntegerv(GL_CURRENT_PROGRAM, &program_);
+        glGetIntegerv(GL_ACTIVE_TEXTURE, &activeTexture_);
+        for (int i = 0; i < capabilityCount; ++i) {
+            enabled_[i] = glIsEnabled(capabilities[i]);
+            glDisable(capabilities[i]);
+        }
+    }
+    ~CallerGlState() {
+        for (int i = 0; i < capabilityCount; ++i)
+            if (enabled_[i]) glEnable(capabilities[i]);
+        glActiveTexture(static_cast<GLenum>(activeTexture_));
+        glUseProgram(static_cast<GLuint>(program_));
+        glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(drawFbo_));
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(readFbo_));
+    }
+    CallerGlState(const CallerGlState&) = delete;
+    CallerGlState& operator=(const CallerGlState&) = delete;
+
+private:
+    static constexpr int capabilityCount = 6;
+    static constexpr GLenum capabilities[capabilityCount] = {GL_BLEND, GL_DEPTH_TEST, GL_SCISSOR_TEST,
+                                                             GL_CULL_FACE, GL_STENCIL_TEST, GL_FRAMEBUFFER_SRGB};
+    GLint drawFbo_ = 0, readFbo_ = 0, program_ = 0, activeTexture_ = GL_TEXTURE0;
+    GLint viewport_[4] = {0, 0, 0, 0};
+    GLboolean enabled_[capabilityCount] = {};
+};
+
+// GL rows run bottom-up; images run top-down. Keeps `channels` of each RGBA texel.
+template <class T>
+std::vector<T> topDown(const std::vector<T>& rgba, int width, int height, int channels) {
+    std::vector<T> out;
+    out.reserve(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * static_cast<std::size_t>(channels));
+    for (int y = height - 1; y >= 0; --y)
+        for (int x = 0; x < width; ++x)
+            for (int c = 0; c < channels; ++c)
+                out.push_back(rgba[(static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)) * 4 + static_cast<std::size_t>(c)]);
+    return out;
+}
+
+// Per-pixel sample variance n/(n-1) (E[x^2] - E[x]^2), clamped at 0 against rounding.
+std::vector<float> sampleVariance(const std::vector<float>& mean, const std::vector<float>& meanSquared, int samples) {
+    std::vector<float> variance;
+    variance.reserve(mean.size() / 4 * 3);
+    const double correction = samples > 1 ? static_cast<double>(samples) / (samples - 1) : 0.0;
+    for (std::size_t i = 0; i < mean.size(); i += 4)
+        for (std::size_t c = 0; c < 3; ++c)
+            variance.push_back(static_cast<float>(
+                std::max(0.0, correction * (static_cast<double>(meanSquared[i + c]) - static_cast<double>(mean[i + c]) * mean[i + c]))));
+    return variance;
+}
+
+void readGBuffer(const gl::RenderTarget& gbuffer, FrameImages& out) {
+    const int w = out.width;
+    const int h = out.height;
+    out.albedo = topDown(gbuffer.readRgba(albedoAttachment), w, h, 3);
+    const auto normalDepth = topDown(gbuffer.readRgba(normalDepthAttachment), w, h, 4);
+    for (std::size_t i = 0; i < normalDepth.size(); i += 4) {
+        out.normal.insert(out.normal.end(), normalDepth.begin() + static_cast<std::ptrdiff_t>(i),
+                          normalDepth.begin() + static_cast<std::ptrdiff_t>(i + 3));
+        out.depth.push_back(normalDepth[i + 3] < 0.0f ? std::numeric_limits<float>::infinity() : normalDepth[i + 3]);
+    }
+    out.objectId = topDown(gbuffer.readRgba(objectIdAttachment), w, h, 1);
+}
+
+bool sameCamera(const CameraSetup& a, const CameraSetup& b) {
+    return a.worldFromCamera == b.worldFromCamera && a.orthographic == b.orthographic && a.halfExtent == b.halfExtent &&
+           a.lensRadius == b.lensRadius && a.focusDistance == b.focusDistance;
+}
+
+// World transforms of the nodes that carry geometry, for per-instance motion vectors.
+std::map<NodeId, glm::mat4> instanceTransforms(const Scene& scene) {
+    std::map<NodeId, glm::mat4> transforms;
+    for (const NodeId id : scene.depthFirst()) {
+        const Node& node = scene.at(id);
+        if (node.get<MeshInstance>() || node.get<Shape>()) transforms[id] = scene.worldFromNode(id);
+    }
+    return transforms;
+}
+
+bool hasAnimation(const Scene& scene) {
+    const auto [start, end] = sceneAnimationTimeSpan(scene);
+    return end > start || !scene.animations.empty();
+}
+
+// Samples per frame of real-time frames, and the bounce count the configuration allows.
+int framesSpp(const FrameSettings& s) { return s.spp > 0 ? s.spp : traitsOf(s.configuration).sppPerFrame; }
+int effectiveBounces(const FrameSettings& s) { return traitsOf(s.configuration).gi ? s.bounces : 0; }
+
+// Settings whose change makes a different picture (everything but exposure and tonemapper).
+bool sameImageSettings(const FrameSettings& a, const FrameSettings& b) {
+    return a.configuration == b.configuration && framesSpp(a) == framesSpp(b) && a.maxSamples == b.maxSamples &&
+           effectiveBounces(a) == effectiveBounces(b) && a.seed == b.seed && a.view == b.view && a.clamp == b.clamp &&
+           a.independentSampler == b.independentSampler && a.aoDistance == b.aoDistance && a.width == b.width &&
+           a.height == b.height;
+}
+
+} // namespace
+
+// Size-dependent targets, re-made on a resize.
+struct FrameTargets {
+    FrameTargets(gl::ProgramCache& programs, int width, int height)
+        : sample(makeGBuffer(width, height)), frameMean(programs, width, height), stillMean(programs, width, height),
+          display(width, height, {GL_RGBA8}), reconstruction(programs, width, height) {}
+    gl::RenderTarget sample;     // one path-traced sample
+    AccumulatePass frameMean;    // this frame's samples (real-time configurations with spp > 1)
+    AccumulatePass stillMean;    // every sample since the picture last changed
+    gl::RenderTarget display;    // tonemapped RGBA8
+    Reconstruction reconstruction;
+};
+
+struct FrameRenderer::State {
+    gl::ProgramCache programs; // before the passes that refer to it
+    PathTracePass pathTrace{programs};
+    TonemapPass tonemap{programs};
+    std::unique_ptr<FrameTargets> targets;
+
+    FrameSettings settings;
+    Scene document;
+    Scene posed; // the document at `time`
+    std::filesystem::path environmentFile;
+    std::unique_ptr<GpuScene> gpu;
+    double time = 0.0;
+    bool followSceneCamera = false;
+    std::string cameraName;
+    CameraSetup camera;
+    bool cameraSet = false;
+
+    // History bookkeeping.
+    CameraSetup previousCamera;
+    std::map<NodeId, glm::mat4> previousInstances;
+    std::map<NodeId, glm::mat4> instances;
+    bool pictureChanged = true; // the still mean must restart
+    bool historyValid = false;  // reprojection has a previous frame to read
+    int frames = 0;
+    std::uint32_t frameSampleIndex = 0; // real-time frames' sample counter: decorrelates frames
+    const gl::RenderTarget* result = nullptr; // linear radiance of the last frame (attachment 0)
+
+    void upload() {
+        gpu = std::make_unique<GpuScene>(posed, environmentFile);
+        instances = instanceTransforms(posed);
+    }
+    void pose() { posed = hasAnimation(document) ? sceneAt(document, time) : document; }
+    FrameTargets& sized() {
+        if (!targets || targets->sample.width() != settings.width || targets->sample.height() != settings.height) {
+            targets = std::make_unique<FrameTargets>(programs, settings.width, settings.height);
+            resetAll();
+        }
+        return *targets;
+    }
+    void resetAll() {
+        pictureChanged = true;
+        historyValid = false;
+        frames = 0;
+        frameSampleIndex = 0;
+        result = nullptr;
+    }
+    PathTraceSettings pathTraceSettings() const {
+        return {settings.seed, effectiveBounces(settings), settings.clamp, settings.independentSampler, settings.view,
+                settings.aoDistance};
+    }
+    void renderAccumulated();
+    void renderRealTime();
+};
+
+void FrameRenderer::State::renderAccumulated() {
+    FrameTargets& t = *targets;
+    if (pictureChanged) t.stillMean.reset();
+    pictureChanged = false;
+    const int limit = settings.maxSamples > 0 ? settings.maxSamples : std::numeric_limits<int>::max();
+    const PathTraceSettings pt = pathTraceSettings();
+    for (int i = 0; i < framesSpp(settings) && t.stillMean.sampleCount() < limit; ++i) {
+        pathTrace.render(*gpu, camera, pt, static_cast<std::uint32_t>(t.stillMean.sampleCount()), t.sample);
+        t.stillMean.add(t.sample);
+    }
+    result = &t.stillMean.mean();
+}
+
+void FrameRenderer::State::renderRealTime() {
+    FrameTargets& t = *targets;
+    if (pictureChanged) t.stillMean.reset();
+    pictureChanged = false;
+    const int spp = framesSpp(settings);
+    const PathTraceSettings pt = pathTraceSettings();
+    if (spp > 1) t.frameMean.reset();
+    for (int i = 0; i < spp; ++i) {
+        pathTrace.render(*gpu, camera, pt, frameSampleIndex++, t.sample);
+        t.stillMean.add(t.sample);
+        if (spp > 1) t.frameMean.add(t.sample);
+    }
+    const gl::RenderTarget& frame = spp > 1 ? t.frameMean.mean() : t.sample;
+    ReconstructionInputs in{frame, t.stillMean.mean(), t.stillMean.sampleCount(), camera, previousCamera,
+                            historyValid, traitsOf(settings.configuration), {}};
+    for (const auto& [id, worldFromNode] : instances) {
+        const auto previous = previousInstances.find(id);
+        if (previous != previousInstances.end() && previous->second != worldFromNode)
+            in.movedInstances.push_back({static_cast<float>(id.value), previous->second * glm::inverse(worldFromNode)});
+    }
+    result = &t.reconstruction.run(in);
+    historyValid = true;
+}
+
+FrameRenderer::FrameRenderer() : state_(std::make_unique<State>()) {}
+FrameRenderer::~FrameRenderer() = default;
+
+void FrameRenderer::setScene(const Scene& scene, const std::filesystem::path& environmentFile) {
+    CallerGlState guard;
+    state_->document = scene;
+    state_->environmentFile = environmentFile;
+    state_->pose();
+    state_->upload();
+    state_->previousInstances = state_->instances;
+    state_->resetAll();
+}
+
+void FrameRenderer::applyChanges(const Scene& scene, const ChangeSet& changes) {
+    State& s = *state_;
+    s.document = scene;
+    if (!affectsImage(changes)) return;
+    CallerGlState guard;
+    s.pose();
+    // GpuScene has no partial upload yet: every image change re-uploads it, and history survives
+    // everything but settings changes (moving and re-lit objects are reprojected and clipped).
+    s.upload();
+    s.pictureChanged = true;
+    if (changes.has(Change::Settings) || changes.has(Change::Structure)) s.historyValid = false;
+}
+
+void FrameRenderer::setSettings(const FrameSettings& settings) {
+    State& s = *state_;
+    const bool image = !sameImageSettings(s.settings, settings);
+    s.settings = settings;
+    if (image) s.resetAll();
+}
+
+void FrameRenderer::setCamera(const CameraSetup& camera) {
+    State& s = *state_;
+    s.followSceneCamera = false;
+    if (s.cameraSet && sameCamera(camera, s.camera)) return;
+    s.camera = camera;
+    s.cameraSet = true;
+    s.pictureChanged = true;
+}
+
+void FrameRenderer::useSceneCamera(const std::string& name) {
+    state_->followSceneCamera = true;
+    state_->cameraName = name;
+}
+
+void FrameRenderer::setTime(double seconds) {
+    State& s = *state_;
+    if (seconds == s.time) return;
+    s.time = seconds;
+    if (!hasAnimation(s.document)) return;
+    CallerGlState guard;
+    s.pose();
+    s.upload();
+    s.pictureChanged = true;
+}
+
+void FrameRenderer::cut() { state_->historyValid = false; state_->pictureChanged = true; }
+
+void FrameRenderer::resetHistory() { state_->resetAll(); }
+
+void FrameRenderer::renderFrame() {
+    State& s = *state_;
+    if (!s.gpu) throw std::runtime_error("FrameRenderer: no scene set");
+    CallerGlState guard;
+    s.sized();
+    if (s.followSceneCamera || !s.cameraSet) {
+        const CameraSetup camera = resolveCamera(s.posed, s.cameraName, s.settings.width, s.settings.height);
+        if (!s.cameraSet || !sameCamera(camera, s.camera)) s.pictureChanged = true;
+        s.camera = camera;
+        s.cameraSet = true;
+    }
+    if (!s.historyValid) s.previousCamera = s.camera;
+    if (traitsOf(s.settings.configuration).accumulate) s.renderAccumulated();
+    else s.renderRealTime();
+    s.previousCamera = s.camera;
+    s.previousInstances = s.instances;
+    ++s.frames;
+}
+
+void FrameRenderer::drawTo(unsigned int framebuffer, int width, int height) {
+    State& s = *state_;
+    if (!s.result) return;
+    CallerGlState guard;
+    const gl::RenderTarget& display = s.targets->display;
+    s.tonemap.render(*s.result, s.camera.exposure + s.settings.exposure,
+                     s.settings.tonemapper.value_or(s.document.settings.render.tonemapper), display);
+    display.bindForDrawing(); // the display target becomes the read framebuffer below
+    GLint displayFbo = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &displayFbo);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(displayFbo));
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
+    const bool sameSize = width == display.width() && height == display.height();
+    glBlitFramebuffer(0, 0, display.width(), display.height(), 0, 0, width, height, GL_COLOR_BUFFER_BIT,
+                      sameSize ? GL_NEAREST : GL_LINEAR);
+}
+
+FrameImages FrameRenderer::readImages() {
+    State& s = *state_;
+    FrameImages out;
+    if (!s.result) return out;
+    CallerGlState guard;
+    FrameTargets& t = *s.targets;
+    out.width = t.sample.width();
+    out.height = t.sample.height();
+    s.tonemap.render(*s.result, s.camera.exposure + s.settings.exposure,
+                     s.settings.tonemapper.value_or(s.document.settings.render.tonemapper), t.display);
+    out.tonemapped = topDown(t.display.readRgba8(0), out.width, out.height, 4);
+    out.radiance = topDown(s.result->readRgba(0), out.width, out.height, 4);
+    if (traitsOf(s.settings.configuration).accumulate) {
+        readGBuffer(t.stillMean.mean(), out);
+        out.variance = sampleVariance(out.radiance, topDown(t.stillMean.mean().readRgba(radianceSquaredAttachment), out.width, out.height, 4),
+                                      t.stillMean.sampleCount());
+    } else {
+        readGBuffer(framesSpp(s.settings) > 1 ? t.frameMean.mean() : t.sample, out);
+        out.motion = topDown(t.reconstruction.motion().readRgba(0), out.width, out.height, 2);
+    }
+    return out;
+}
+
+int FrameRenderer::sampleCount() const { return state_->targets ? state_->targets->stillMean.sampleCount() : 0; }
+int FrameRenderer::frameIndex() const { return state_->frames; }
+const FrameSettings& FrameRenderer::settings() const { return state_->settings; }
+
+} // namespace glint::renderer

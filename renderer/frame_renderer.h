@@ -1,0 +1,90 @@
+#pragma once
+// A frame-based renderer that lives inside any current OpenGL 4.1 core context: the headless EGL one
+// (OfflineRenderer, tests, bench) or a QOpenGLWidget's. It never creates, owns or switches a context,
+// draws only into its own targets and the framebuffer a caller names, and restores the caller's
+// framebuffer bindings and viewport after every call (it never assumes framebuffer 0).
+//
+// Each renderFrame() is one frame of the configuration: Accumulate/Reference add samples to a running
+// mean; the real-time configurations render a few samples and reconstruct them with history (motion
+// vectors, SVGF, TAA), fading into the running mean while nothing moves, so a still view converges to
+// the accumulated image. Exposure and tonemapper are applied in drawTo()/readImages() and never reset
+// anything. All methods must be called with the creating context current; no GL header is needed here.
+#include "renderer/configuration.h"
+#include "renderer/gpu_scene/camera_setup.h"
+#include "renderer/passes/path_trace_pass.h"
+#include "scene/core/scene.h"
+#include "scene/history/change_set.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace glint::renderer {
+
+struct FrameSettings {
+    Configuration configuration = Configuration::Accumulate;
+    int spp = 0;            // samples per pixel per frame; 0 = the configuration's own (traitsOf)
+    int maxSamples = 0;     // Accumulate/Reference stop adding samples here; 0 = no limit
+    int bounces = 4;        // the configuration may lower it (Baseline: 0)
+    std::uint32_t seed = 0;
+    float exposure = 0.0f;  // EV added to the camera's
+    std::optional<Tonemapper> tonemapper; // unset: the project's
+    DebugView view = DebugView::None;
+    float clamp = 0.0f;     // per-sample radiance clamp; 0 = off
+    bool independentSampler = false;
+    float aoDistance = 1.0f;
+    int width = 640;
+    int height = 360;
+};
+
+// Linear images read back from the last frame, rows top-down (as image files want them).
+struct FrameImages {
+    int width = 0;
+    int height = 0;
+    std::vector<float> radiance;  // RGBA: linear Rec.709, A = coverage (the reconstructed frame)
+    std::vector<float> albedo;    // RGB
+    std::vector<float> normal;    // XYZ, world space
+    std::vector<float> depth;     // along the view axis in metres, +inf where nothing is hit
+    std::vector<float> objectId;  // node id, 0 where nothing is hit
+    std::vector<float> variance;  // RGB sample variance of one sample (Accumulate/Reference; else empty)
+    std::vector<float> motion;    // RG: previous minus current position in pixels (real-time configs)
+    std::vector<std::uint8_t> tonemapped; // RGBA8, sRGB, as drawTo shows it
+};
+
+class FrameRenderer {
+public:
+    FrameRenderer();  // uses the current context; compiles lazily
+    ~FrameRenderer(); // the same context must be current
+    FrameRenderer(const FrameRenderer&) = delete;
+    FrameRenderer& operator=(const FrameRenderer&) = delete;
+
+    // Full upload. `environmentFile`: an equirectangular image or empty (the project's colour).
+    // Throws std::runtime_error when the scene exceeds GPU limits or a file cannot be read.
+    void setScene(const Scene& scene, const std::filesystem::path& environmentFile = {});
+    // Re-uploads what `changes` names and resets accumulation only if the picture changes.
+    void applyChanges(const Scene& scene, const ChangeSet& changes);
+    void setSettings(const FrameSettings& settings); // display-only changes keep all history
+    void setCamera(const CameraSetup& camera);       // a moving camera keeps reprojected history
+    // Follow the scene's camera (by name, empty = active) at the current time instead of setCamera.
+    void useSceneCamera(const std::string& name = {});
+    void setTime(double seconds); // node animations (and a followed camera) at this time
+    void cut();                   // camera cut: history is dropped, as after a resize
+
+    void renderFrame();
+    // Tonemaps the last frame into `framebuffer` (any id, 0 included) scaled to width x height.
+    void drawTo(unsigned int framebuffer, int width, int height);
+    FrameImages readImages();
+
+    int sampleCount() const;   // samples in the running mean behind the current frame
+    int frameIndex() const;    // frames rendered since the last reset
+    void resetHistory();
+    const FrameSettings& settings() const;
+
+private:
+    struct State;
+    std::unique_ptr<State> state_;
+};
+
+} // namespace glint::renderer

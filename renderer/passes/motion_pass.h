@@ -1,0 +1,34 @@
+#pragma once
+// Motion vectors (RG32F, previous minus current pixel position) from the G-buffer's depth and id,
+// the current and previous cameras, and the previous world transforms of instances that moved.
+// Input: G-buffer (normal + depth, id). Output: one RG32F target.
+#include "renderer/gpu_scene/camera_setup.h"
+#include "renderer/passes/fullscreen_stage.h"
+
+#include <glm/glm.hpp>
+
+#include <vector>
+
+namespace glint::renderer {
+
+struct MovedInstance {
+    float objectId = 0.0f;               // as the G-buffer's id target holds it
+    glm::mat4 previousFromCurrent{1.0f}; // world space: where a point of the instance was last frame
+};
+
+inline constexpr int maxMovedInstances = 32; // more fall back to camera motion (shader array size)
+
+class MotionPass {
+public:
+    MotionPass(gl::ProgramCache& programs, int width, int height);
+    const gl::RenderTarget& execute(const gl::RenderTarget& gbuffer, const CameraSetup& camera,
+                                    const CameraSetup& previousCamera, const std::vector<MovedInstance>& moved);
+    const gl::RenderTarget& output() const { return motion_; }
+
+private:
+    gl::ProgramCache& programs_;
+    gl::FullscreenTriangle triangle_;
+    gl::RenderTarget motion_;
+};
+
+} // namespace glint::renderer

@@ -1,0 +1,34 @@
+#pragma once
+// Temporal anti-aliasing (shaders/reconstruction/taa.frag.glsl). Inputs: this frame's linear
+// radiance, motion vectors, the current and previous G-buffers (disocclusion). Internal: two history
+// targets, swapped each frame. Output: the new history (linear radiance, alpha = history length).
+#include "renderer/passes/fullscreen_stage.h"
+
+namespace glint::renderer {
+
+struct TaaSettings {
+    float minBlend = 0.1f;  // current frame's weight on a long still history (~10 frames)
+    float clipGamma = 1.25f; // variance-clipping box half-size in standard deviations
+};
+
+struct TaaInputs {
+    const gl::RenderTarget& radiance; // attachment 0
+    const gl::RenderTarget& motion;
+    const gl::RenderTarget& gbuffer;          // path_trace_pass.h attachments
+    const gl::RenderTarget& previousGBuffer;  // attachments 0 normal + depth, 1 id
+    bool historyValid = false;
+};
+
+class TaaPass {
+public:
+    TaaPass(gl::ProgramCache& programs, int width, int height);
+    const gl::RenderTarget& execute(const TaaInputs& in, const TaaSettings& settings = {});
+
+private:
+    gl::ProgramCache& programs_;
+    gl::FullscreenTriangle triangle_;
+    gl::RenderTarget history_[2];
+    int current_ = 0;
+};
+
+} // namespace glint::renderer

@@ -1,0 +1,34 @@
+// Helpers shared by the reconstruction stages: luminance, YCoCg, the history guard, and the
+// disocclusion test that compares this frame's surface with the previous frame's.
+
+float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
+
+vec3 yCoCgFromRgb(vec3 c) {
+    return vec3(0.25 * c.r + 0.5 * c.g + 0.25 * c.b, 0.5 * c.r - 0.5 * c.b, -0.25 * c.r + 0.5 * c.g - 0.25 * c.b);
+}
+
+vec3 rgbFromYCoCg(vec3 c) { return vec3(c.x + c.y - c.z, c.x + c.z, c.x - c.y - c.z); }
+
+// NaN, Inf and negative values never enter history (they would persist for many frames).
+vec3 finiteRadiance(vec3 c) {
+    bvec3 bad = bvec3(isnan(c.x) || isinf(c.x), isnan(c.y) || isinf(c.y), isnan(c.z) || isinf(c.z));
+    return max(mix(c, vec3(0.0), bad), vec3(0.0));
+}
+
+// Reversible tone curve for blending in a perceptual space (Karis 2014): a firefly's weight is
+// bounded by 1 instead of by its energy.
+vec3 perceptualFromLinear(vec3 c) { return c / (1.0 + luminance(c)); }
+vec3 linearFromPerceptual(vec3 c) { return c / max(1.0 - luminance(c), 1.0e-4); }
+
+// Whether the previous frame saw the same surface at its reprojected position: same object id,
+// depth within a relative tolerance, normals within ~35 degrees. Misses (depth < 0) match misses.
+bool sameSurface(vec4 normalDepth, float id, vec4 previousNormalDepth, float previousId) {
+    if (abs(id - previousId) > 0.5) return false;
+    if (normalDepth.w < 0.0 || previousNormalDepth.w < 0.0) return normalDepth.w < 0.0 && previousNormalDepth.w < 0.0;
+    if (abs(normalDepth.w - previousNormalDepth.w) > 0.1 * max(normalDepth.w, 1.0e-3)) return false;
+    return dot(normalDepth.xyz, previousNormalDepth.xyz) > 0.8 * length(normalDepth.xyz) * length(previousNormalDepth.xyz);
+}
+
+bool insideImage(vec2 position, vec2 size) {
+    return all(greaterThanEqual(position, vec2(0.0))) && all(lessThan(position, size));
+}

@@ -1,0 +1,82 @@
+// Temporal anti-aliasing and accumulation: the history, reprojected by the motion vectors, is
+// clipped towards this frame's 3x3 neighbourhood (variance clipping in YCoCg, Salvi 2016) and
+// blended in a perceptual space. The blend weight grows with speed (less smear when moving) and is
+// 1 where the surface was not visible last frame (id/depth/normal test) or history is invalid.
+// History alpha holds its length in frames, so a still view averages up to 1 / uMinBlend frames.
+#include "reconstruction/common.glsl"
+
+uniform sampler2D uCurrent;      // linear radiance
+uniform sampler2D uHistory;      // linear radiance, a = history length
+uniform sampler2D uMotion;
+uniform sampler2D uNormalDepth;
+uniform sampler2D uObjectId;
+uniform sampler2D uPreviousNormalDepth;
+uniform sampler2D uPreviousObjectId;
+uniform int uHistoryValid;
+uniform float uMinBlend;         // weight of the current frame on a still, long history
+uniform float uClipGamma;        // box half-size in standard deviations
+
+out vec4 outColor;
+
+vec3 currentPerceptual(ivec2 p) {
+    ivec2 size = textureSize(uCurrent, 0);
+    return perceptualFromLinear(finiteRadiance(texelFetch(uCurrent, clamp(p, ivec2(0), size - 1), 0).rgb));
+}
+
+// Bilinear history fetch from nearest-filtered storage; taps on other surfaces are left out.
+vec4 historyAt(vec2 position, vec4 normalDepth, float id, out float weight) {
+    vec2 base = floor(position - 0.5);
+    vec2 f = position - 0.5 - base;
+    vec4 sum = vec4(0.0);
+    weight = 0.0;
+    ivec2 size = textureSize(uHistory, 0);
+    for (int j = 0; j <= 1; ++j)
+        for (int i = 0; i <= 1; ++i) {
+            ivec2 q = ivec2(base) + ivec2(i, j);
+            if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
+            if (!sameSurface(normalDepth, id, texelFetch(uPreviousNormalDepth, q, 0), texelFetch(uPreviousObjectId, q, 0).x)) continue;
+            float w = (i == 1 ? f.x : 1.0 - f.x) * (j == 1 ? f.y : 1.0 - f.y);
+            sum += w * texelFetch(uHistory, q, 0);
+            weight += w;
+        }
+    return weight > 1.0e-4 ? sum / weight : vec4(0.0);
+}
+
+// Moves `history` towards the box centre until it lies inside the box (clip, not clamp).
+vec3 clipToBox(vec3 history, vec3 centre, vec3 extent) {
+    vec3 offset = history - centre;
+    vec3 units = abs(offset / max(extent, vec3(1.0e-5)));
+    float scale = max(units.x, max(units.y, units.z));
+    return scale > 1.0 ? centre + offset / scale : history;
+}
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    vec3 m1 = vec3(0.0), m2 = vec3(0.0);
+    for (int y = -1; y <= 1; ++y)
+        for (int x = -1; x <= 1; ++x) {
+            vec3 c = yCoCgFromRgb(currentPerceptual(pixel + ivec2(x, y)));
+            m1 += c;
+            m2 += c * c;
+        }
+    vec3 mean = m1 / 9.0;
+    vec3 sigma = sqrt(max(m2 / 9.0 - mean * mean, vec3(0.0)));
+    vec3 current = currentPerceptual(pixel);
+
+    vec2 motion = texelFetch(uMotion, pixel, 0).xy;
+    vec2 previous = gl_FragCoord.xy + motion;
+    float found = 0.0;
+    vec4 history = vec4(0.0);
+    if (uHistoryValid != 0 && insideImage(previous, vec2(textureSize(uHistory, 0))))
+        history = historyAt(previous, texelFetch(uNormalDepth, pixel, 0), texelFetch(uObjectId, pixel, 0).x, found);
+    if (found < 0.5) {
+        outColor = vec4(linearFromPerceptual(current), 1.0);
+        return;
+    }
+    vec3 past = perceptualFromLinear(finiteRadiance(history.rgb));
+    past = rgbFromYCoCg(clipToBox(yCoCgFromRgb(past), mean, uClipGamma * sigma));
+    float frames = min(history.a + 1.0, 1.0 / uMinBlend);
+    float speed = clamp(length(motion) / 2.0, 0.0, 1.0); // pixels per frame
+    float blend = mix(1.0 / frames, max(1.0 / frames, 0.5), speed);
+    outColor = vec4(linearFromPerceptual(mix(past, current, blend)), frames);
+}
