@@ -25,13 +25,12 @@ std::string hashHex(const std::string& text) {
     return buf;
 }
 
-std::string configurationName(const Scene& scene, const CommonRenderOptions& o) {
-    std::string config = o.config.value_or(scene.settings.render.configuration);
-    if (config != "accumulate" && config != "reference")
-        throw std::runtime_error("configuration '" + config +
-                                 "' needs the real-time reconstruction passes, which this build does not have yet; "
-                                 "use --config accumulate or reference");
-    return config;
+renderer::Configuration configurationOf(const Scene& scene, const CommonRenderOptions& o) {
+    const std::string config = o.config.value_or(scene.settings.render.configuration);
+    const auto parsed = renderer::parseConfiguration(config);
+    if (!parsed)
+        throw std::runtime_error("unknown configuration '" + config + "' (use one of " + renderer::configurationNames() + ")");
+    return *parsed;
 }
 
 } // namespace
@@ -59,7 +58,8 @@ RenderPlan planRender(const Scene& scene, const std::string& sceneFile, const Co
     r.requireGpu = o.requireGpu;
     r.clamp = project.clamp;
 
-    const std::string config = configurationName(scene, o);
+    r.configuration = configurationOf(scene, o);
+    const std::string config(renderer::configurationName(r.configuration));
     plan.metadata = {{"scene", std::filesystem::path(sceneFile).filename().string()},
                      {"camera", r.cameraName.empty() ? "(active)" : r.cameraName},
                      {"spp", std::to_string(r.spp)},
