@@ -1,0 +1,230 @@
+#include "editor/timeline/timeline.h"
+
+#include "editor/document/document.h"
+#include "editor/timeline/time_ruler.h"
+#include "scene/history/camera_path_commands.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QToolBar>
+#include <QVBoxLayout>
+
+#include <cmath>
+#include <numbers>
+
+namespace glint::editor {
+
+namespace {
+
+constexpr double kDegrees = 180.0 / std::numbers::pi;
+
+} // namespace
+
+Timeline::Timeline(Document& document, QWidget* parent) : QWidget(parent), document_(document) {
+    setAccessibleName(tr("Timeline"));
+    createActions();
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(2, 2, 2, 2);
+    auto* bar = new QToolBar(this);
+    cameras_ = new QComboBox(bar);
+    cameras_->setAccessibleName(tr("Path camera"));
+    bar->addWidget(cameras_);
+    bar->addActions({addKey_, deleteKey_});
+    bar->addSeparator();
+    bar->addActions({play_, loop_, constantSpeed_});
+    timeLabel_ = new QLabel(bar);
+    bar->addWidget(timeLabel_);
+    layout->addWidget(bar);
+    ruler_ = new TimeRuler(document, this);
+    layout->addWidget(ruler_);
+    layout->addWidget(createKeyEditor());
+
+    timer_.setTimerType(Qt::PreciseTimer);
+    connect(&timer_, &QTimer::timeout, this, &Timeline::stepFrame);
+    connect(cameras_, &QComboBox::activated, this, [this](int i) { setCamera(NodeId{cameras_->itemData(i).toUInt()}); });
+    connect(ruler_, &TimeRuler::keySelected, this, [this] { refreshKeyEditor(); });
+    connect(&document_, &Document::changed, this, [this] {
+        refreshCameras();
+        refreshKeyEditor();
+    });
+    connect(&document_, &Document::fileChanged, this, [this] { refreshCameras(); });
+    connect(&document_, &Document::selectionChanged, this, [this] {
+        const NodeId node = document_.currentNode();
+        if (node.valid() && document_.scene().contains(node) && document_.scene().at(node).get<Camera>()) setCamera(node);
+    });
+    connect(&document_, &Document::timeChanged, this, [this](double t) {
+        timeLabel_->setText(tr("  %1 s  (frame %2)").arg(t, 0, 'f', 3).arg(std::lround((t - document_.scene().settings.timeline.start) * fps())));
+    });
+    refreshCameras();
+    refreshKeyEditor();
+}
+
+void Timeline::createActions() {
+    addKey_ = new QAction(tr("Add key"), this);
+    addKey_->setToolTip(tr("Add a camera-path key from the current view at the current time"));
+    connect(addKey_, &QAction::triggered, this, &Timeline::addKey);
+    deleteKey_ = new QAction(tr("Delete key"), this);
+    connect(deleteKey_, &QAction::triggered, this, &Timeline::deleteKey);
+    play_ = new QAction(tr("Play"), this);
+    play_->setCheckable(true);
+    play_->setShortcut(Qt::Key_Space);
+    play_->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    addAction(play_);
+    connect(play_, &QAction::toggled, this, &Timeline::setPlaying);
+    loop_ = new QAction(tr("Loop"), this);
+    loop_->setCheckable(true);
+    loop_->setChecked(true);
+    constantSpeed_ = new QAction(tr("Constant speed"), this);
+    constantSpeed_->setCheckable(true);
+    connect(constantSpeed_, &QAction::triggered, this, [this](bool on) {
+        const CameraPath* p = path();
+        if (!p || p->constantSpeed == on) return;
+        document_.push(std::make_unique<SetCameraPathMode>(camera_, p->rotation, on));
+    });
+}
+
+QWidget* Timeline::createKeyEditor() {
+    auto* editor = new QWidget(this);
+    auto* row = new QHBoxLayout(editor);
+    row->setContentsMargins(0, 0, 0, 0);
+    const QString names[7] = {tr("X"), tr("Y"), tr("Z"), tr("FOV"), tr("Focus"), tr("Lens"), tr("Time")};
+    for (int i = 0; i < 7; ++i) {
+        auto* field = new QDoubleSpinBox(editor);
+        field->setAccessibleName(tr("Key %1").arg(names[i]));
+        field->setDecimals(i == 3 ? 2 : 4);
+        field->setRange(i == 3 ? 0.1 : (i >= 4 ? 0.0 : -1e6), i == 3 ? 179.0 : 1e6);
+        field->setKeyboardTracking(false);
+        row->addWidget(new QLabel(names[i], editor));
+        row->addWidget(field);
+        keyFields_[i] = field;
+        if (i == 6) field->setReadOnly(true); // times change by dragging the key (MoveCameraKey)
+        else connect(field, &QDoubleSpinBox::valueChanged, this, &Timeline::editSelectedKey);
+    }
+    return editor;
+}
+
+double Timeline::fps() const {
+    const auto& t = document_.scene().settings.timeline;
+    return t.fpsDenominator > 0 && t.fpsNumerator > 0 ? double(t.fpsNumerator) / t.fpsDenominator : 24.0;
+}
+
+const CameraPath* Timeline::path() const {
+    if (!camera_.valid() || !document_.scene().contains(camera_)) return nullptr;
+    const auto* c = document_.scene().at(camera_).get<Camera>();
+    return c ? &c->path : nullptr;
+}
+
+void Timeline::setCamera(NodeId camera) {
+    if (camera == camera_) return;
+    camera_ = camera;
+    ruler_->setCamera(camera);
+    refreshCameras();
+    refreshKeyEditor();
+}
+
+void Timeline::refreshCameras() {
+    const Scene& scene = document_.scene();
+    if (camera_.valid() && !(scene.contains(camera_) && scene.at(camera_).get<Camera>())) camera_ = {};
+    QSignalBlocker block(cameras_);
+    cameras_->clear();
+    NodeId fallback{};
+    for (const NodeId id : scene.depthFirst()) {
+        const Node& node = scene.at(id);
+        const auto* camera = node.get<Camera>();
+        if (!camera) continue;
+        cameras_->addItem(QString::fromStdString(node.name), id.value);
+        if (!fallback.valid() || (id == scene.settings.activeCamera)) fallback = id;
+    }
+    if (!camera_.valid() && fallback.valid()) {
+        camera_ = fallback;
+        ruler_->setCamera(camera_);
+    }
+    cameras_->setCurrentIndex(cameras_->findData(camera_.value));
+    const CameraPath* p = path();
+    constantSpeed_->setChecked(p && p->constantSpeed);
+    constantSpeed_->setEnabled(p && !p->empty());
+}
+
+void Timeline::refreshKeyEditor() {
+    const CameraPath* p = path();
+    const auto key = ruler_->selectedKey();
+    const bool has = p && key && *key < p->keys.size();
+    deleteKey_->setEnabled(has);
+    refreshing_ = true;
+    for (QDoubleSpinBox* field : keyFields_) field->setEnabled(has);
+    if (has) {
+        const CameraKey& k = p->keys[*key];
+        const double values[7] = {k.position.x, k.position.y, k.position.z, k.yfov * kDegrees, k.focusDistance, k.lensRadius, k.time};
+        for (int i = 0; i < 7; ++i) keyFields_[i]->setValue(values[i]);
+    }
+    refreshing_ = false;
+}
+
+void Timeline::editSelectedKey() {
+    const CameraPath* p = path();
+    const auto key = ruler_->selectedKey();
+    if (refreshing_ || !p || !key || *key >= p->keys.size()) return;
+    CameraKey k = p->keys[*key];
+    k.position = {keyFields_[0]->value(), keyFields_[1]->value(), keyFields_[2]->value()};
+    k.yfov = static_cast<float>(keyFields_[3]->value() / kDegrees);
+    k.focusDistance = static_cast<float>(keyFields_[4]->value());
+    k.lensRadius = static_cast<float>(keyFields_[5]->value());
+    if (k == p->keys[*key]) return;
+    document_.push(std::make_unique<EditCameraKey>(camera_, *key, k));
+}
+
+void Timeline::addKey() {
+    if (!camera_.valid() && cameraMaker_) setCamera(cameraMaker_());
+    if (!camera_.valid() || !keySource_) return;
+    const double t = document_.currentTime();
+    const CameraPath* p = path();
+    // A key at an existing key's time replaces that key's pose instead.
+    for (std::size_t i = 0; p && i < p->keys.size(); ++i)
+        if (p->keys[i].time == t) {
+            CameraKey k = keySource_(t);
+            k.time = t;
+            document_.push(std::make_unique<EditCameraKey>(camera_, i, k));
+            ruler_->setSelectedKey(i);
+            return;
+        }
+    document_.push(std::make_unique<AddCameraKey>(camera_, keySource_(t)));
+    p = path();
+    for (std::size_t i = 0; p && i < p->keys.size(); ++i)
+        if (p->keys[i].time == t) ruler_->setSelectedKey(i);
+}
+
+void Timeline::deleteKey() {
+    const auto key = ruler_->selectedKey();
+    const CameraPath* p = path();
+    if (!p || !key || *key >= p->keys.size()) return;
+    ruler_->setSelectedKey(std::nullopt);
+    document_.push(std::make_unique<RemoveCameraKey>(camera_, *key));
+}
+
+void Timeline::setPlaying(bool on) {
+    if (on) timer_.start(std::max(1, int(std::lround(1000.0 / fps()))));
+    else timer_.stop();
+    QSignalBlocker block(play_);
+    play_->setChecked(on);
+}
+
+void Timeline::stepFrame() {
+    // Frames are t0 + k / fps exactly (CONTRACTS.md): step the frame number, not the clock.
+    const double t0 = document_.scene().settings.timeline.start;
+    const long long frame = std::llround((document_.currentTime() - t0) * fps()) + 1;
+    double t = t0 + double(frame) / fps();
+    const double end = ruler_->range().end;
+    if (t > end + 1e-9) {
+        if (!loop_->isChecked()) {
+            setPlaying(false);
+            return;
+        }
+        t = t0;
+    }
+    document_.setCurrentTime(t);
+}
+
+} // namespace glint::editor

@@ -1,0 +1,95 @@
+#include "editor/viewport/overlay_painter.h"
+
+#include "editor/document/document.h"
+#include "editor/viewport/render_view.h"
+#include "scene/anim/camera_path_sampling.h"
+
+#include <QPainter>
+#include <QPainterPath>
+
+#include <cmath>
+#include <numbers>
+
+namespace glint::editor {
+
+namespace {
+
+constexpr int kCurveSamples = 96;
+constexpr int kRingSegments = 48;
+
+QColor axisColour(int axis, bool active) {
+    static const QColor colours[3] = {QColor(230, 70, 70), QColor(90, 200, 80), QColor(70, 120, 240)};
+    return active ? QColor(255, 220, 60) : colours[axis];
+}
+
+} // namespace
+
+void OverlayPainter::drawCameraPaths(NodeId lookingThrough) {
+    painter_.setRenderHint(QPainter::Antialiasing);
+    for (const auto& [id, node] : document_.scene().nodes()) {
+        const auto* camera = node.get<Camera>();
+        if (!camera || camera->path.empty() || id == lookingThrough) continue;
+        const CameraPath& path = camera->path;
+        const double t0 = path.keys.front().time, t1 = path.keys.back().time;
+        std::vector<double> times;
+        for (int i = 0; i <= kCurveSamples; ++i) times.push_back(t0 + (t1 - t0) * i / kCurveSamples);
+        QPainterPath curve;
+        bool open = false;
+        for (const CameraKey& k : sampleCameraPath(path, times)) {
+            const auto p = view_.project(k.position);
+            if (!p) { open = false; continue; }
+            if (open) curve.lineTo(*p); else curve.moveTo(*p);
+            open = true;
+        }
+        const bool selected = document_.isSelected(id);
+        painter_.setPen(QPen(selected ? QColor(255, 170, 40) : QColor(200, 200, 200), selected ? 2.0 : 1.0));
+        painter_.setBrush(Qt::NoBrush);
+        painter_.drawPath(curve);
+        painter_.setBrush(selected ? QColor(255, 170, 40) : QColor(230, 230, 230));
+        for (const CameraKey& key : path.keys)
+            if (const auto p = view_.project(key.position)) painter_.drawEllipse(*p, 4.0, 4.0);
+        // The camera's position at the current time.
+        if (const auto p = view_.project(sampleCameraPath(path, document_.currentTime()).position)) {
+            painter_.setBrush(QColor(255, 80, 80));
+            painter_.drawEllipse(*p, 5.0, 5.0);
+        }
+    }
+}
+
+void OverlayPainter::drawGizmo(const GizmoFrame& frame, GizmoMode mode, int activeAxis) {
+    painter_.setRenderHint(QPainter::Antialiasing);
+    const auto origin = view_.project(frame.origin);
+    if (!origin) return;
+    for (int a = 0; a < 3; ++a) {
+        painter_.setPen(QPen(axisColour(a, a == activeAxis), 2.5));
+        painter_.setBrush(axisColour(a, a == activeAxis));
+        if (mode == GizmoMode::Rotate) {
+            // A ring about the axis, in the plane of the other two.
+            const glm::dvec3 u = frame.axes[(a + 1) % 3], v = frame.axes[(a + 2) % 3];
+            QPainterPath ring;
+            bool open = false;
+            for (int i = 0; i <= kRingSegments; ++i) {
+                const double angle = 2.0 * std::numbers::pi * i / kRingSegments;
+                const auto p = view_.project(frame.origin + frame.size * (std::cos(angle) * u + std::sin(angle) * v));
+                if (!p) { open = false; continue; }
+                if (open) ring.lineTo(*p); else ring.moveTo(*p);
+                open = true;
+            }
+            painter_.setBrush(Qt::NoBrush);
+            painter_.drawPath(ring);
+            continue;
+        }
+        const auto tip = view_.project(frame.origin + frame.size * frame.axes[a]);
+        if (!tip) continue;
+        painter_.drawLine(*origin, *tip);
+        if (mode == GizmoMode::Scale) painter_.drawRect(QRectF(*tip - QPointF(4, 4), QSizeF(8, 8)));
+        else painter_.drawEllipse(*tip, 4.0, 4.0);
+    }
+}
+
+void OverlayPainter::drawMessage(const QString& text) {
+    painter_.setPen(QColor(255, 120, 120));
+    painter_.drawText(QRectF(8, 8, view_.width() - 16, view_.height() - 16), Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap, text);
+}
+
+} // namespace glint::editor

@@ -1,0 +1,32 @@
+#pragma once
+// The viewport's 2D overlays, drawn with QPainter over the rendered image: the gizmo of the
+// current node, camera-path curves with their keys, and messages. Geometry is projected with the
+// view camera, so overlays and the path-traced image line up.
+#include "editor/viewport/gizmo_math.h"
+#include "scene/core/ids.h"
+
+#include <QString>
+
+class QPainter;
+
+namespace glint::editor {
+
+class Document;
+class RenderView;
+
+class OverlayPainter {
+public:
+    OverlayPainter(QPainter& painter, const RenderView& view, const Document& document)
+        : painter_(painter), view_(view), document_(document) {}
+    // Every camera's path (the one looked through is skipped: it would sit on the image centre).
+    void drawCameraPaths(NodeId lookingThrough);
+    void drawGizmo(const GizmoFrame& frame, GizmoMode mode, int activeAxis);
+    void drawMessage(const QString& text);
+
+private:
+    QPainter& painter_;
+    const RenderView& view_;
+    const Document& document_;
+};
+
+} // namespace glint::editor

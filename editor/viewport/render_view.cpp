@@ -1,0 +1,471 @@
+// The FrameRenderer (epoxy GL) comes before any Qt OpenGL header in this translation unit.
+#include "renderer/frame_renderer.h"
+#include "renderer/raster/gpu_sync.h"
+
+#include "editor/viewport/render_view.h"
+
+#include "editor/document/document.h"
+#include "editor/viewport/debug_image.h"
+#include "editor/viewport/gizmo_drag.h"
+#include "editor/viewport/overlay_painter.h"
+#include "editor/viewport/scene_picker.h"
+#include "renderer/configuration.h"
+#include "scene/anim/scene_at_time.h"
+
+#include <QFileInfo>
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QOpenGLContext>
+#include <QPainter>
+#include <QToolTip>
+#include <QWheelEvent>
+
+#include <cmath>
+
+namespace glint::editor {
+
+namespace {
+
+constexpr int kSettleMs = 150;     // the view counts as moving this long after the last change
+constexpr int kFlyIntervalMs = 16;
+constexpr double kClickSlopPixels = 4.0;
+
+renderer::CameraSetup setupFrom(const ViewCamera& camera, int width, int height) {
+    renderer::CameraSetup setup;
+    setup.worldFromCamera = camera.worldFromCamera();
+    const float t = std::tan(0.5f * camera.yfov);
+    setup.halfExtent = {t * float(width) / float(std::max(1, height)), t};
+    setup.focusDistance = static_cast<float>(camera.distance);
+    return setup;
+}
+
+std::filesystem::path environmentPath(const Document& document) {
+    const std::string& file = document.scene().settings.environment.file;
+    if (file.empty() || document.filePath().isEmpty()) return {};
+    return std::filesystem::path(QFileInfo(document.filePath()).absolutePath().toStdString()) / file;
+}
+
+} // namespace
+
+RenderView::RenderView(Document& document, QWidget* parent) : QOpenGLWidget(parent), document_(document) {
+    setFocusPolicy(Qt::StrongFocus);
+    setMouseTracking(true);
+    setAccessibleName(tr("Viewport"));
+    setMinimumSize(64, 64);
+    settleTimer_.setSingleShot(true);
+    connect(&settleTimer_, &QTimer::timeout, this, qOverload<>(&QWidget::update));
+    flyTimer_.setInterval(kFlyIntervalMs);
+    connect(&flyTimer_, &QTimer::timeout, this, &RenderView::flyStep);
+    connect(&document_, &Document::changed, this, [this](const ChangeSet& changes) {
+        pending_.merge(changes);
+        picker_.reset();
+        followLookThrough();
+        update();
+    });
+    connect(&document_, &Document::fileChanged, this, [this] {
+        fullUpload_ = true;
+        picker_.reset();
+        update();
+    });
+    connect(&document_, &Document::timeChanged, this, [this] {
+        timeDirty_ = true;
+        picker_.reset();
+        followLookThrough();
+        update();
+    });
+    connect(&document_, &Document::selectionChanged, this, qOverload<>(&QWidget::update));
+    sinceMotion_.start();
+}
+
+RenderView::~RenderView() {
+    if (renderer_ && context()) {
+        makeCurrent();
+        renderer_.reset();
+        doneCurrent();
+    }
+}
+
+void RenderView::releaseGl() {
+    // The context is about to go (re-docking, floating, closing): GL objects die with it.
+    makeCurrent();
+    renderer_.reset();
+    doneCurrent();
+    fullUpload_ = true;
+}
+
+void RenderView::initializeGL() {
+    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &RenderView::releaseGl, Qt::UniqueConnection);
+    renderer_ = std::make_unique<renderer::FrameRenderer>();
+    fullUpload_ = true;
+    timeDirty_ = true;
+}
+
+void RenderView::resizeGL(int, int) { stillDivisor_ = 0; }
+
+void RenderView::uploadScene() {
+    stats_.error.clear();
+    try {
+        renderer_->setScene(document_.scene(), environmentPath(document_));
+    } catch (const std::exception& e) {
+        stats_.error = QString::fromStdString(e.what());
+    }
+    fullUpload_ = false;
+    pending_ = {};
+    timeDirty_ = true;
+}
+
+void RenderView::applyPending() {
+    if (fullUpload_) uploadScene();
+    if (pending_.flags != 0) {
+        try {
+            renderer_->applyChanges(document_.scene(), pending_);
+        } catch (const std::exception& e) {
+            stats_.error = QString::fromStdString(e.what());
+        }
+        pending_ = {};
+    }
+    if (timeDirty_) {
+        renderer_->setTime(document_.currentTime());
+        timeDirty_ = false;
+    }
+}
+
+void RenderView::configure(bool moving, int divisor) {
+    const qreal dpr = devicePixelRatioF();
+    const RenderSettings& project = document_.scene().settings.render;
+    renderer::FrameSettings s = renderer_->settings();
+    s.configuration = moving ? renderer::Configuration::Full : renderer::Configuration::Accumulate;
+    s.spp = 1;
+    s.maxSamples = std::max(1, project.spp);
+    s.bounces = project.bounces;
+    s.seed = project.seed;
+    s.exposure = project.exposure;
+    s.clamp = project.clamp;
+    s.view = mode_ == ViewMode::AmbientOcclusion ? renderer::DebugView::AmbientOcclusion : renderer::DebugView::None;
+    s.width = std::max(1, int(std::lround(width() * dpr)) / divisor);
+    s.height = std::max(1, int(std::lround(height() * dpr)) / divisor);
+    const renderer::FrameSettings& old = renderer_->settings();
+    const bool same = old.configuration == s.configuration && old.spp == s.spp && old.maxSamples == s.maxSamples &&
+                      old.bounces == s.bounces && old.seed == s.seed && old.exposure == s.exposure && old.clamp == s.clamp &&
+                      old.view == s.view && old.width == s.width && old.height == s.height;
+    if (!same) renderer_->setSettings(s);
+    if (lookThrough_.valid() && document_.scene().contains(lookThrough_))
+        renderer_->useSceneCamera(document_.scene().at(lookThrough_).name);
+    else
+        renderer_->setCamera(setupFrom(camera_, s.width, s.height));
+}
+
+bool RenderView::moving() const {
+    return drag_ == Drag::Orbit || drag_ == Drag::Pan || drag_ == Drag::Zoom || drag_ == Drag::Fly ||
+           drag_ == Drag::Gizmo || sinceMotion_.elapsed() < kSettleMs;
+}
+
+bool RenderView::converged() const {
+    return renderer_->settings().configuration == renderer::Configuration::Accumulate &&
+           renderer_->sampleCount() >= renderer_->settings().maxSamples;
+}
+
+void RenderView::renderSlice(bool moving, int divisor) {
+    QElapsedTimer paint;
+    paint.start();
+    stats_.framesThisPaint = 0;
+    double last = 0.0;
+    do {
+        QElapsedTimer frame;
+        frame.start();
+        renderer_->renderFrame();
+        renderer::raster::finishGpuWork();
+        last = double(frame.nsecsElapsed()) / 1e6;
+        budget_.report(last, divisor);
+        ++stats_.framesThisPaint;
+    } while (!moving && !converged() && budget_.anotherFits(double(paint.nsecsElapsed()) / 1e6, last));
+    stats_.frameMs = last;
+    stats_.paintMs = double(paint.nsecsElapsed()) / 1e6;
+}
+
+void RenderView::paintGL() {
+    if (!renderer_) return;
+    const bool isMoving = moving();
+    if (isMoving || stillDivisor_ == 0) stillDivisor_ = budget_.resolutionDivisor(false);
+    const int divisor = isMoving ? budget_.resolutionDivisor(true) : stillDivisor_;
+    stats_.divisor = divisor;
+    try {
+        applyPending();
+        configure(isMoving, divisor);
+        if (stats_.error.isEmpty() && !paused_ && !converged()) renderSlice(isMoving, divisor);
+        const qreal dpr = devicePixelRatioF();
+        renderer_->drawTo(defaultFramebufferObject(), int(std::lround(width() * dpr)), int(std::lround(height() * dpr)));
+        readBack_ = showsReadBack(mode_) ? debugImage(renderer_->readImages(), mode_) : QImage();
+    } catch (const std::exception& e) {
+        stats_.error = QString::fromStdString(e.what());
+    }
+    stats_.samples = renderer_->sampleCount();
+    ++stats_.paints;
+    drawOverlays();
+    emit statsChanged();
+    if (isMoving) settleTimer_.start(kSettleMs);
+    scheduleNextPaint();
+}
+
+void RenderView::scheduleNextPaint() {
+    // Yield to the event loop between paints: the next slice is a queued update, not a loop.
+    if (!paused_ && stats_.error.isEmpty() && !converged()) QTimer::singleShot(0, this, qOverload<>(&QWidget::update));
+}
+
+void RenderView::drawOverlays() {
+    QPainter painter(this);
+    if (!readBack_.isNull()) painter.drawImage(rect(), readBack_);
+    if (comparing_ && !snapshot_.isNull()) {
+        const int half = width() / 2;
+        painter.drawImage(QRect(0, 0, half, height()), snapshot_, QRect(0, 0, snapshot_.width() / 2, snapshot_.height()));
+        painter.setPen(QPen(Qt::white, 1));
+        painter.drawLine(half, 0, half, height());
+        painter.drawText(QRect(4, 4, half - 8, 20), Qt::AlignLeft, tr("A"));
+        painter.drawText(QRect(half + 4, 4, half - 8, 20), Qt::AlignLeft, tr("B"));
+    }
+    OverlayPainter overlays(painter, *this, document_);
+    overlays.drawCameraPaths(lookThrough_);
+    if (const NodeId node = document_.currentNode(); node.valid() && document_.scene().contains(node))
+        overlays.drawGizmo(gizmoFrame(node), gizmoMode_, gizmoDrag_ ? gizmoDrag_->axis() : -1);
+    if (!stats_.error.isEmpty()) overlays.drawMessage(stats_.error);
+}
+
+// --- camera and modes ----------------------------------------------------------------------
+
+void RenderView::setCamera(const ViewCamera& camera) {
+    camera_ = camera;
+    noteMotion();
+}
+
+void RenderView::noteMotion() {
+    sinceMotion_.restart();
+    emit cameraMoved();
+    update();
+}
+
+void RenderView::setMode(ViewMode mode) {
+    mode_ = mode;
+    update();
+}
+
+void RenderView::setGizmoMode(GizmoMode mode) {
+    gizmoMode_ = mode;
+    update();
+}
+
+void RenderView::setLookThrough(NodeId camera) {
+    const NodeId previous = lookThrough_;
+    lookThrough_ = camera;
+    // Leaving a scene camera (or entering one): the viewport camera continues from its view.
+    placeAtCamera(camera.valid() ? camera : previous);
+    noteMotion();
+}
+
+void RenderView::followLookThrough() {
+    if (lookThrough_.valid()) placeAtCamera(lookThrough_);
+}
+
+void RenderView::placeAtCamera(NodeId camera) {
+    if (!camera.valid() || !document_.scene().contains(camera)) return;
+    const Scene posed = sceneAt(document_.scene(), document_.currentTime());
+    const auto* lens = posed.at(camera).get<Camera>();
+    setFromWorld(camera_, posed.worldFromNode(camera), lens ? lens->yfov : camera_.yfov);
+}
+
+void RenderView::setPaused(bool paused) {
+    paused_ = paused;
+    update();
+}
+
+void RenderView::takeSnapshot() {
+    snapshot_ = grabFramebuffer();
+    update();
+}
+
+void RenderView::setComparing(bool on) {
+    comparing_ = on;
+    update();
+}
+
+// --- picking and framing -------------------------------------------------------------------
+
+const ScenePicker& RenderView::picker() {
+    if (!picker_) {
+        const Scene& scene = document_.scene();
+        picker_ = std::make_unique<ScenePicker>(scene.animations.empty() ? scene : sceneAt(scene, document_.currentTime()));
+    }
+    return *picker_;
+}
+
+bvh::Ray RenderView::rayAt(QPointF p) const { return pixelRay(camera_, p.x(), p.y(), width(), height()); }
+
+NodeId RenderView::pickAt(QPointF p) { return picker().pick(rayAt(p)).node; }
+
+std::optional<QPointF> RenderView::project(const glm::dvec3& world) const {
+    const glm::dvec3 p = projectToPixels(camera_, world, width(), height());
+    if (p.z <= 0.0) return std::nullopt;
+    return QPointF(p.x, p.y);
+}
+
+GizmoFrame RenderView::gizmoFrame(NodeId node) const {
+    GizmoFrame frame;
+    const glm::dmat4 world(document_.scene().worldFromNode(node));
+    frame.origin = glm::dvec3(world[3]);
+    if (gizmoMode_ == GizmoMode::Scale)
+        for (int a = 0; a < 3; ++a) frame.axes[a] = glm::normalize(glm::dvec3(world[a]));
+    frame.size = 0.15 * std::max(1e-3, glm::length(frame.origin - camera_.position())) * std::tan(0.5 * camera_.yfov) * 2.0;
+    return frame;
+}
+
+void RenderView::frameSelection() {
+    bvh::Aabb box;
+    for (const NodeId id : document_.selection()) box.grow(picker().worldBounds(id));
+    if (box.empty())
+        for (const auto& [id, node] : document_.scene().nodes()) box.grow(picker().worldBounds(id));
+    if (box.empty()) return;
+    const glm::dvec3 centre(box.centre());
+    const double radius = 0.5 * glm::length(glm::dvec3(box.extent()));
+    frameSphere(camera_, centre, radius, double(width()) / std::max(1, height()));
+    lookThrough_ = {};
+    noteMotion();
+}
+
+void RenderView::selectAt(QPointF p, bool extend) {
+    const NodeId hit = pickAt(p);
+    std::vector<NodeId> selection = extend ? document_.selection() : std::vector<NodeId>{};
+    if (hit.valid()) {
+        std::erase(selection, hit);
+        selection.push_back(hit);
+    }
+    document_.setSelection(selection);
+}
+
+void RenderView::inspectPixel(QPointF p) {
+    if (!renderer_) return;
+    makeCurrent();
+    const renderer::FrameImages images = renderer_->readImages();
+    doneCurrent();
+    if (images.width <= 0 || images.height <= 0) return;
+    const int x = std::clamp(int(p.x() * images.width / std::max(1, width())), 0, images.width - 1);
+    const int y = std::clamp(int(p.y() * images.height / std::max(1, height())), 0, images.height - 1);
+    const float* v = images.radiance.data() + 4 * (std::size_t(y) * std::size_t(images.width) + std::size_t(x));
+    emit pixelInspected(QPoint(x, y), v[0], v[1], v[2], v[3]);
+    QToolTip::showText(mapToGlobal(p.toPoint()), tr("Pixel %1, %2\nR %3  G %4  B %5 (linear)")
+                                                     .arg(x).arg(y).arg(double(v[0]), 0, 'g', 5)
+                                                     .arg(double(v[1]), 0, 'g', 5).arg(double(v[2]), 0, 'g', 5), this);
+}
+
+// --- input ---------------------------------------------------------------------------------
+
+void RenderView::mousePressEvent(QMouseEvent* event) {
+    lastMouse_ = pressMouse_ = event->position();
+    const auto mods = event->modifiers();
+    if (event->button() == Qt::LeftButton && !(mods & Qt::AltModifier)) {
+        const NodeId node = document_.currentNode();
+        if (node.valid() && document_.scene().contains(node) && !lookThrough_.valid()) {
+            auto drag = std::make_unique<GizmoDrag>(document_, node, gizmoFrame(node), gizmoMode_, rayAt(event->position()));
+            if (drag->active()) {
+                gizmoDrag_ = std::move(drag);
+                drag_ = Drag::Gizmo;
+                return;
+            }
+        }
+        drag_ = Drag::Click;
+    } else if (event->button() == Qt::LeftButton || (event->button() == Qt::MiddleButton && !(mods & (Qt::ShiftModifier | Qt::ControlModifier)))) {
+        drag_ = Drag::Orbit;
+    } else if (event->button() == Qt::MiddleButton) {
+        drag_ = (mods & Qt::ShiftModifier) ? Drag::Pan : Drag::Zoom;
+    } else if (event->button() == Qt::RightButton) {
+        drag_ = Drag::Fly;
+        flyTimer_.start();
+    }
+    if (drag_ != Drag::Click && drag_ != Drag::Gizmo && lookThrough_.valid()) setLookThrough({});
+}
+
+void RenderView::mouseMoveEvent(QMouseEvent* event) {
+    const QPointF d = event->position() - lastMouse_;
+    lastMouse_ = event->position();
+    switch (drag_) {
+    case Drag::Orbit: orbit(camera_, d.x(), d.y()); break;
+    case Drag::Pan: pan(camera_, d.x(), d.y(), height()); break;
+    case Drag::Zoom: zoom(camera_, -d.y() / 20.0); break;
+    case Drag::Fly: look(camera_, d.x(), d.y()); break;
+    case Drag::Gizmo:
+    {
+        GizmoSnap snap = snap_; // Ctrl inverts snapping for this move
+        snap.enabled = snap.enabled != bool(event->modifiers() & Qt::ControlModifier);
+        gizmoDrag_->moveTo(rayAt(event->position()), snap);
+    }
+        sinceMotion_.restart();
+        update();
+        return;
+    default: return;
+    }
+    noteMotion();
+}
+
+void RenderView::mouseReleaseEvent(QMouseEvent* event) {
+    if (drag_ == Drag::Click) {
+        const QPointF moved = event->position() - pressMouse_;
+        if (std::hypot(moved.x(), moved.y()) <= kClickSlopPixels) {
+            if (inspecting_) inspectPixel(event->position());
+            else selectAt(event->position(), event->modifiers() & Qt::ShiftModifier);
+        }
+    }
+    gizmoDrag_.reset();
+    flyTimer_.stop();
+    flyKeys_.clear();
+    drag_ = Drag::None;
+    update();
+}
+
+void RenderView::wheelEvent(QWheelEvent* event) {
+    zoom(camera_, event->angleDelta().y() / 120.0);
+    if (lookThrough_.valid()) setLookThrough({});
+    noteMotion();
+}
+
+void RenderView::keyPressEvent(QKeyEvent* event) {
+    if (drag_ == Drag::Fly && !event->isAutoRepeat()) {
+        flyKeys_.insert(event->key());
+        return;
+    }
+    if (drag_ == Drag::Gizmo && event->key() == Qt::Key_Escape) {
+        gizmoDrag_->cancel();
+        gizmoDrag_.reset();
+        drag_ = Drag::None;
+        update();
+        return;
+    }
+    switch (event->key()) {
+    case Qt::Key_W: setGizmoMode(GizmoMode::Translate); break;
+    case Qt::Key_E: setGizmoMode(GizmoMode::Rotate); break;
+    case Qt::Key_R: setGizmoMode(GizmoMode::Scale); break;
+    default: QOpenGLWidget::keyPressEvent(event);
+    }
+}
+
+void RenderView::keyReleaseEvent(QKeyEvent* event) {
+    if (!event->isAutoRepeat()) flyKeys_.erase(event->key());
+    QOpenGLWidget::keyReleaseEvent(event);
+}
+
+void RenderView::focusOutEvent(QFocusEvent* event) {
+    flyKeys_.clear();
+    QOpenGLWidget::focusOutEvent(event);
+}
+
+void RenderView::flyStep() {
+    glm::dvec3 move(0.0);
+    const auto held = [&](int key) { return flyKeys_.count(key) != 0; };
+    move.z += held(Qt::Key_W) - held(Qt::Key_S);
+    move.x += held(Qt::Key_D) - held(Qt::Key_A);
+    move.y += held(Qt::Key_E) - held(Qt::Key_Q);
+    if (move == glm::dvec3(0.0)) return;
+    // Speed follows the orbit distance: a metre is slow in a city and fast on a table.
+    const double speed = std::max(0.1, camera_.distance) * kFlyIntervalMs / 1000.0;
+    fly(camera_, move * speed);
+    noteMotion();
+}
+
+} // namespace glint::editor

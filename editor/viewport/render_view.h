@@ -1,0 +1,137 @@
+#pragma once
+// The viewport's GL surface: hosts a renderer::FrameRenderer in the QOpenGLWidget's context and
+// time-slices it (each paint renders as many frames as fit its budget, then yields to the event
+// loop), draws the overlays, and turns mouse and keys into navigation, picks and gizmo drags.
+// The GPU scene is rebuilt from the document whenever Qt re-creates the context (re-docking or
+// floating the viewport).
+#include "editor/viewport/frame_budget.h"
+#include "editor/viewport/gizmo_math.h"
+#include "editor/viewport/view_camera.h"
+#include "editor/viewport/view_modes.h"
+#include "scene/history/change_set.h"
+
+#include <QElapsedTimer>
+#include <QImage>
+#include <QOpenGLWidget>
+#include <QPoint>
+#include <QTimer>
+
+#include <memory>
+#include <optional>
+#include <set>
+
+namespace glint::renderer {
+class FrameRenderer;
+}
+
+namespace glint::editor {
+
+class Document;
+class ScenePicker;
+class GizmoDrag;
+
+// Figures of the last paint, for the status bar and the tests.
+struct ViewportStats {
+    int samples = 0;        // in the running mean behind the shown image
+    int framesThisPaint = 0;
+    double paintMs = 0.0;   // GL work of the last paint (frames finished on the GPU)
+    double frameMs = 0.0;   // the last frame alone
+    int divisor = 1;        // resolution divisor of the last frame
+    long long paints = 0;
+    QString error;          // why nothing is drawn (scene too big for the GPU, ...), or empty
+};
+
+class RenderView : public QOpenGLWidget {
+    Q_OBJECT
+public:
+    RenderView(Document& document, QWidget* parent = nullptr);
+    ~RenderView() override;
+
+    ViewCamera& camera() { return camera_; }
+    void setCamera(const ViewCamera& camera);
+    ViewMode mode() const { return mode_; }
+    void setMode(ViewMode mode);
+    GizmoMode gizmoMode() const { return gizmoMode_; }
+    void setGizmoMode(GizmoMode mode);
+    GizmoSnap& snap() { return snap_; }
+    void setLookThrough(NodeId camera); // none: the viewport's own camera
+    NodeId lookThrough() const { return lookThrough_; }
+    void setPaused(bool paused);        // exports pause the viewport: it stops adding samples
+    bool paused() const { return paused_; }
+    void setInspecting(bool on) { inspecting_ = on; }
+    void takeSnapshot();                // A/B: the current image becomes A
+    void setComparing(bool on);         // A on the left of a divider, the live view on the right
+    bool hasSnapshot() const { return !snapshot_.isNull(); }
+    const ViewportStats& stats() const { return stats_; }
+
+    void frameSelection();
+    NodeId pickAt(QPointF widgetPos);   // the node under a widget position (no selection change)
+    const ScenePicker& picker();
+    GizmoFrame gizmoFrame(NodeId node) const;
+    std::optional<QPointF> project(const glm::dvec3& world) const; // world -> widget coordinates
+    bvh::Ray rayAt(QPointF widgetPos) const;
+
+signals:
+    void statsChanged();
+    void pixelInspected(QPoint pixel, float r, float g, float b, float a);
+    void cameraMoved();
+
+protected:
+    void initializeGL() override;
+    void resizeGL(int w, int h) override;
+    void paintGL() override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+    void keyReleaseEvent(QKeyEvent* event) override;
+    void focusOutEvent(QFocusEvent* event) override;
+
+private:
+    void releaseGl();
+    void followLookThrough();
+    void placeAtCamera(NodeId camera);
+    void uploadScene();
+    void applyPending();
+    void configure(bool moving, int divisor);
+    void renderSlice(bool moving, int divisor);
+    void drawOverlays();
+    void inspectPixel(QPointF widgetPos);
+    void noteMotion();
+    bool moving() const;
+    bool converged() const;
+    void scheduleNextPaint();
+    void flyStep();
+    void selectAt(QPointF widgetPos, bool extend);
+
+    Document& document_;
+    std::unique_ptr<renderer::FrameRenderer> renderer_;
+    std::unique_ptr<ScenePicker> picker_;
+    std::unique_ptr<GizmoDrag> gizmoDrag_;
+    ViewCamera camera_;
+    ViewMode mode_ = ViewMode::PathTraced;
+    GizmoMode gizmoMode_ = GizmoMode::Translate;
+    GizmoSnap snap_;
+    NodeId lookThrough_{};
+    FrameBudget budget_;
+    ViewportStats stats_;
+    ChangeSet pending_;
+    bool fullUpload_ = true;
+    bool timeDirty_ = true;
+    bool paused_ = false;
+    bool inspecting_ = false;
+    bool comparing_ = false;
+    int stillDivisor_ = 0; // locked while the view is still, so accumulation is not reset
+    QImage snapshot_;
+    QImage readBack_;      // the G-buffer views' image
+    QElapsedTimer sinceMotion_;
+    QTimer settleTimer_;   // one paint after motion stops: switch to the still configuration
+    QTimer flyTimer_;
+    std::set<int> flyKeys_;
+    enum class Drag { None, Orbit, Pan, Zoom, Fly, Gizmo, Click } drag_ = Drag::None;
+    QPointF lastMouse_;
+    QPointF pressMouse_;
+};
+
+} // namespace glint::editor

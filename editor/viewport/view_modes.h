@@ -1,0 +1,22 @@
+#pragma once
+// What the viewport shows. The path-traced view is the default; the others are preview and debug
+// views: ambient occlusion comes from the path tracer, the G-buffer views from its read-back
+// images (shading normal, albedo, motion vectors, variance, depth, object ids), and the raster
+// ones (solid, wireframe) from renderer/raster.
+#include <array>
+
+namespace glint::editor {
+
+enum class ViewMode { PathTraced, Solid, Wireframe, Normals, Albedo, AmbientOcclusion, Motion, Variance, Depth };
+
+inline constexpr std::array<ViewMode, 9> kViewModes{ViewMode::PathTraced, ViewMode::Solid,  ViewMode::Wireframe,
+                                                    ViewMode::Normals,    ViewMode::Albedo, ViewMode::AmbientOcclusion,
+                                                    ViewMode::Motion,     ViewMode::Variance, ViewMode::Depth};
+
+// Views that show a read-back G-buffer image instead of the tonemapped frame.
+inline bool showsReadBack(ViewMode mode) {
+    return mode == ViewMode::Normals || mode == ViewMode::Albedo || mode == ViewMode::Motion || mode == ViewMode::Variance ||
+           mode == ViewMode::Depth;
+}
+
+} // namespace glint::editor

@@ -1,0 +1,159 @@
+#include "editor/viewport/viewport.h"
+
+#include "editor/document/document.h"
+#include "editor/viewport/render_view.h"
+#include "scene/history/node_commands.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QVBoxLayout>
+
+namespace glint::editor {
+
+namespace {
+
+QString modeName(ViewMode mode) {
+    switch (mode) {
+    case ViewMode::PathTraced: return Viewport::tr("Path traced");
+    case ViewMode::Solid: return Viewport::tr("Solid");
+    case ViewMode::Wireframe: return Viewport::tr("Wireframe");
+    case ViewMode::Normals: return Viewport::tr("Normals");
+    case ViewMode::Albedo: return Viewport::tr("Albedo");
+    case ViewMode::AmbientOcclusion: return Viewport::tr("Ambient occlusion");
+    case ViewMode::Motion: return Viewport::tr("Motion vectors");
+    case ViewMode::Variance: return Viewport::tr("Variance");
+    case ViewMode::Depth: return Viewport::tr("Depth");
+    }
+    return {};
+}
+
+QAction* checkable(QObject* parent, const QString& text, const QKeySequence& key) {
+    auto* action = new QAction(text, parent);
+    action->setCheckable(true);
+    action->setShortcut(key);
+    action->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    return action;
+}
+
+} // namespace
+
+Viewport::Viewport(Document& document, QWidget* parent) : QWidget(parent), document_(document) {
+    setAccessibleName(tr("Viewport"));
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    view_ = new RenderView(document, this);
+    layout->addWidget(view_);
+    createActions();
+    connect(view_, &RenderView::statsChanged, this, [this] { emit statusMessage(statusText()); });
+}
+
+void Viewport::createActions() {
+    modes_ = new QActionGroup(this);
+    int number = 1;
+    for (const ViewMode mode : kViewModes) {
+        QAction* action = checkable(this, modeName(mode), QKeySequence(Qt::Key_0 + number++));
+        action->setChecked(mode == ViewMode::PathTraced);
+        action->setData(int(mode));
+        modes_->addAction(action);
+        addAction(action);
+        connect(action, &QAction::triggered, this, [this, mode] { view_->setMode(mode); });
+    }
+    // Solid and wireframe need the raster passes, which this build does not have yet.
+    for (QAction* action : modes_->actions())
+        if (action->data().toInt() == int(ViewMode::Solid) || action->data().toInt() == int(ViewMode::Wireframe)) action->setEnabled(false);
+
+    gizmos_ = new QActionGroup(this);
+    const std::pair<GizmoMode, QString> gizmoModes[] = {
+        {GizmoMode::Translate, tr("Move")}, {GizmoMode::Rotate, tr("Rotate")}, {GizmoMode::Scale, tr("Scale")}};
+    const Qt::Key gizmoKeys[] = {Qt::Key_W, Qt::Key_E, Qt::Key_R};
+    for (int i = 0; i < 3; ++i) {
+        const GizmoMode mode = gizmoModes[i].first;
+        QAction* action = checkable(this, gizmoModes[i].second, QKeySequence(gizmoKeys[i]));
+        action->setShortcut({}); // the view handles W/E/R itself so that fly navigation can use them
+        action->setChecked(i == 0);
+        gizmos_->addAction(action);
+        connect(action, &QAction::triggered, this, [this, mode] { view_->setGizmoMode(mode); });
+    }
+
+    frameSelection_ = new QAction(tr("Frame selection"), this);
+    frameSelection_->setShortcut(Qt::Key_F);
+    frameSelection_->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    addAction(frameSelection_);
+    connect(frameSelection_, &QAction::triggered, view_, &RenderView::frameSelection);
+
+    makeSceneCamera_ = new QAction(tr("Make scene camera from view"), this);
+    connect(makeSceneCamera_, &QAction::triggered, this, &Viewport::makeSceneCamera);
+
+    lookThrough_ = checkable(this, tr("Look through selected camera"), QKeySequence(Qt::Key_0));
+    addAction(lookThrough_);
+    connect(lookThrough_, &QAction::triggered, this, &Viewport::toggleLookThrough);
+
+    snap_ = checkable(this, tr("Snap (Ctrl inverts while dragging)"), QKeySequence());
+    connect(snap_, &QAction::toggled, this, [this](bool on) { view_->snap().enabled = on; });
+
+    inspect_ = checkable(this, tr("Pixel inspector"), QKeySequence(Qt::Key_I));
+    addAction(inspect_);
+    connect(inspect_, &QAction::toggled, view_, &RenderView::setInspecting);
+
+    snapshot_ = new QAction(tr("Take snapshot A"), this);
+    connect(snapshot_, &QAction::triggered, this, [this] {
+        view_->takeSnapshot();
+        compare_->setEnabled(true);
+    });
+    compare_ = checkable(this, tr("Compare A | B"), QKeySequence());
+    compare_->setEnabled(false);
+    connect(compare_, &QAction::toggled, view_, &RenderView::setComparing);
+}
+
+QList<QAction*> Viewport::viewModeActions() const { return modes_->actions(); }
+QList<QAction*> Viewport::gizmoActions() const { return gizmos_->actions(); }
+
+QList<QAction*> Viewport::allActions() const {
+    QList<QAction*> all = viewModeActions();
+    all << gizmoActions() << frameSelection_ << makeSceneCamera_ << lookThrough_ << snap_ << inspect_ << snapshot_ << compare_;
+    return all;
+}
+
+void Viewport::setPaused(bool paused) { view_->setPaused(paused); }
+
+NodeId Viewport::makeSceneCamera() {
+    const ViewCamera& view = view_->camera();
+    Node node;
+    node.name = "Camera";
+    node.local.translation = glm::vec3(view.position());
+    node.local.rotation = glm::quat(view.orientation());
+    Camera camera;
+    camera.yfov = view.yfov;
+    camera.focusDistance = static_cast<float>(view.distance);
+    node.component = camera;
+    auto command = std::make_unique<AddNode>(std::move(node));
+    AddNode* add = command.get();
+    document_.push(std::move(command));
+    const NodeId id = add->nodeId();
+    document_.setSelection({id});
+    return id;
+}
+
+void Viewport::toggleLookThrough() {
+    const NodeId current = document_.currentNode();
+    const bool isCamera = current.valid() && document_.scene().contains(current) && document_.scene().at(current).get<Camera>();
+    if (view_->lookThrough().valid() || !isCamera) {
+        view_->setLookThrough({});
+        lookThrough_->setChecked(false);
+        return;
+    }
+    view_->setLookThrough(current);
+    lookThrough_->setChecked(true);
+}
+
+QString Viewport::statusText() const {
+    const ViewportStats& s = view_->stats();
+    if (!s.error.isEmpty()) return s.error;
+    return tr("%1 spp  |  %2 ms/frame  |  1/%3 resolution%4")
+        .arg(s.samples)
+        .arg(s.frameMs, 0, 'f', 1)
+        .arg(s.divisor)
+        .arg(view_->paused() ? tr("  |  paused") : QString());
+}
+
+} // namespace glint::editor
