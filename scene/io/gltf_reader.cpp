@@ -47,6 +47,7 @@ LoadResult loadGltfFromMemory(std::span<const std::uint8_t> bytes, const std::fi
     readNodes(ctx);
     readAnimations(ctx);
     noteUnsupportedTopLevel(ctx);
+    noteDroppedMembers(ctx);
     ctx.scene.unknown = documentUnknown(doc);
     return {std::move(ctx.scene), std::move(ctx.warnings)};
 }

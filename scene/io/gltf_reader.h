@@ -73,5 +73,6 @@ void readMaterials(GltfReadContext& ctx);
 void readMeshes(GltfReadContext& ctx);
 void readNodes(GltfReadContext& ctx);
 void readAnimations(GltfReadContext& ctx);
+void noteDroppedMembers(GltfReadContext& ctx);
 
 } // namespace glint

@@ -3,6 +3,8 @@
 
 #include <QTest>
 
+#include <algorithm>
+
 #include <glm/gtc/epsilon.hpp>
 
 using namespace glint;
@@ -289,6 +291,36 @@ private slots:
         QCOMPARE(jsonText(scene.at(NodeId{1}).unknown), jsonText(Json::parse(R"({"extensions": {"EXT_node": {"b": 2}}, "extras": "n"})")));
         QCOMPARE(jsonText(scene.meshes.begin()->second.unknown), jsonText(Json::parse(R"({"extras": {"m": 1}})")));
         QCOMPARE(jsonText(scene.meshes.begin()->second.primitives[0].unknown), jsonText(Json::parse(R"({"extensions": {"EXT_prim": {}}})")));
+    }
+
+    void extensionsOnRebuiltObjectsAreNamedAsDropped()
+    {
+        Json doc = withLights(triangle().finish(), Json::array({{{"type", "point"}, {"extras", {{"rig", 1}}}}}));
+        doc["cameras"] = Json::array({{{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.1}, {"extensions", {{"EXT_lens", Json::object()}}}}}}});
+        doc["materials"] = Json::array({{{"pbrMetallicRoughness", {{"extras", {{"baked", true}}}}}}});
+        doc["nodes"].push_back({{"camera", 0}});
+        doc["scenes"][0]["nodes"].push_back(1);
+        const LoadResult r = loadJson(doc);
+        std::vector<std::string> messages;
+        for (const Warning& w : r.scene.unsupported)
+            if (w.code == "extension-dropped") messages.push_back(w.message);
+        std::sort(messages.begin(), messages.end());
+        QCOMPARE(messages.size(), std::size_t(3));
+        QCOMPARE(QString::fromStdString(messages[0]), QStringLiteral("cameras[0].perspective has extension EXT_lens, which Glint does not keep"));
+        QCOMPARE(QString::fromStdString(messages[1]), QStringLiteral("extensions.KHR_lights_punctual.lights[0] has extras, which Glint does not keep"));
+        QCOMPARE(QString::fromStdString(messages[2]), QStringLiteral("materials[0].pbrMetallicRoughness has extras, which Glint does not keep"));
+        QVERIFY(hasWarning(r.warnings, "extension-dropped"));
+    }
+
+    void manyDroppedPlacesAreSummedUp()
+    {
+        Json doc = triangle().finish();
+        for (int i = 0; i < 20; ++i) doc["accessors"].push_back(doc["accessors"][0]);
+        for (Json& accessor : doc["accessors"]) accessor["extras"] = {{"x", 1}};
+        const LoadResult r = loadJson(doc);
+        const auto dropped = std::count_if(r.scene.unsupported.begin(), r.scene.unsupported.end(), [](const Warning& w) { return w.code == "extension-dropped"; });
+        QCOMPARE(dropped, 17); // 16 named, then one line for the rest
+        QVERIFY(QString::fromStdString(r.scene.unsupported.back().message).startsWith(QStringLiteral("6 more objects")));
     }
 
     void trsAnimationsAreKept()
