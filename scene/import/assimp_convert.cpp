@@ -1,6 +1,7 @@
 #include "assimp_convert.h"
 
 #include "assimp_axes.h"
+#include "assimp_cameras_lights.h"
 #include "assimp_materials.h"
 #include "assimp_meshes.h"
 #include "assimp_textures.h"
@@ -25,6 +26,8 @@ struct Dropped {
     std::size_t nonFiniteTriangles = 0;
     std::size_t skinnedMeshes = 0;
     std::size_t morphedMeshes = 0;
+    std::size_t lights = 0;   // area and ambient lights, and lights or cameras on no node
+    std::size_t cameras = 0;
 };
 
 class SceneBuilder {
@@ -45,13 +48,59 @@ public:
 
 private:
     void addNodes() {
+        collectCamerasAndLights();
         std::vector<std::pair<const aiNode*, NodeId>> stack{{ai_.mRootNode, NodeId{}}};
         while (!stack.empty()) {
             auto [source, parent] = stack.back();
             stack.pop_back();
-            const NodeId id = result_.scene.addNode(convertNode(*source, !parent), parent);
+            Node node = convertNode(*source, !parent);
+            std::vector<ImportedComponent> extras = takeCamerasAndLights(*source);
+            // A node without a mesh takes its one camera or light itself, as glTF files have it;
+            // otherwise each goes to a child, as the glTF reader splits such nodes.
+            if (std::holds_alternative<std::monostate>(node.component) && extras.size() == 1) {
+                node.local = fromMatrix(toMatrix(node.local) * extras.front().nodeFromComponent);
+                node.component = extras.front().component;
+                extras.clear();
+            }
+            const std::string name = node.name;
+            const NodeId id = result_.scene.addNode(std::move(node), parent);
+            for (const ImportedComponent& extra : extras) {
+                Node child;
+                child.name = name + (std::holds_alternative<Camera>(extra.component) ? ".camera" : ".light");
+                child.local = fromMatrix(extra.nodeFromComponent);
+                child.component = extra.component;
+                result_.scene.addNode(std::move(child), id);
+            }
             for (unsigned i = source->mNumChildren; i-- > 0;) stack.emplace_back(source->mChildren[i], id);
         }
+        dropped_.cameras += cameraByName_.size();
+        dropped_.lights += lightByName_.size();
+    }
+
+    void collectCamerasAndLights() {
+        for (unsigned i = 0; i < ai_.mNumCameras; ++i) cameraByName_.emplace(ai_.mCameras[i]->mName.C_Str(), ai_.mCameras[i]);
+        for (unsigned i = 0; i < ai_.mNumLights; ++i) lightByName_.emplace(ai_.mLights[i]->mName.C_Str(), ai_.mLights[i]);
+    }
+
+    // Each camera and light goes to a node of its name (Assimp links them by name), in file order;
+    // what finds no node is reported.
+    std::vector<ImportedComponent> takeCamerasAndLights(const aiNode& node) {
+        std::vector<ImportedComponent> found;
+        const std::string name = node.mName.C_Str();
+        if (auto it = cameraByName_.find(name); it != cameraByName_.end()) {
+            found.push_back(convertCamera(*it->second));
+            cameraByName_.erase(it);
+        }
+        if (auto it = lightByName_.find(name); it != lightByName_.end()) {
+            if (auto light = convertLight(*it->second)) {
+                found.push_back(*light);
+                ++lightsKept_;
+            } else {
+                ++dropped_.lights;
+            }
+            lightByName_.erase(it);
+        }
+        return found;
     }
 
     Node convertNode(const aiNode& source, bool isRoot) {
@@ -104,8 +153,10 @@ private:
         warnIf(dropped_.skinnedMeshes > 0, "skin-dropped", std::to_string(dropped_.skinnedMeshes) + " skinned meshes imported as static geometry");
         warnIf(dropped_.morphedMeshes > 0, "morph-targets-dropped", std::to_string(dropped_.morphedMeshes) + " meshes lost their morph targets");
         warnIf(ai_.mNumAnimations > 0, "animation-dropped", std::to_string(ai_.mNumAnimations) + " animations dropped");
-        warnIf(ai_.mNumLights > 0, "lights-dropped", std::to_string(ai_.mNumLights) + " lights dropped");
-        warnIf(ai_.mNumCameras > 0, "cameras-dropped", std::to_string(ai_.mNumCameras) + " cameras dropped");
+        warnIf(dropped_.lights > 0, "lights-dropped", std::to_string(dropped_.lights) + " lights dropped (area, ambient, or on no node)");
+        warnIf(dropped_.cameras > 0, "cameras-dropped", std::to_string(dropped_.cameras) + " cameras dropped (on no node)");
+        warnIf(lightsKept_ > 0, "light-units-unknown",
+               "light intensities are taken as given: Assimp does not say their units, so check the brightness");
     }
 
     const aiScene& ai_;
@@ -117,6 +168,9 @@ private:
     std::map<std::vector<unsigned>, MeshId> meshes_;
     std::uint64_t triangles_ = 0;
     Dropped dropped_;
+    std::multimap<std::string, const aiCamera*> cameraByName_;
+    std::multimap<std::string, const aiLight*> lightByName_;
+    std::size_t lightsKept_ = 0;
 };
 
 } // namespace

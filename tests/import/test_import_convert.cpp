@@ -7,12 +7,15 @@
 #include "scene/import/assimp_materials.h"
 #include "scene/import/assimp_read.h"
 
+#include <assimp/camera.h>
+#include <assimp/light.h>
 #include <assimp/material.h>
 #include <assimp/scene.h>
 
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -67,6 +70,29 @@ std::unique_ptr<aiScene> zUpCentimetreTriangle() {
     scene->mMetaData->Set(5, "CoordAxisSign", std::int32_t(1));
     scene->mMetaData->Set(6, "UnitScaleFactor", 1.0);
     return scene;
+}
+
+// meshScene plus a child node "rig" that holds `cameras` and `lights` (linked by name, as Assimp does).
+void addRig(aiScene& scene, std::vector<aiCamera*> cameras, std::vector<aiLight*> lights) {
+    auto* rig = new aiNode("rig");
+    rig->mTransformation = aiMatrix4x4(aiVector3D(1, 1, 1), aiQuaternion(), aiVector3D(0, 0, 5));
+    rig->mParent = scene.mRootNode;
+    scene.mRootNode->mNumChildren = 1;
+    scene.mRootNode->mChildren = new aiNode*[1]{rig};
+    for (aiCamera* c : cameras) c->mName = "rig";
+    for (aiLight* l : lights) l->mName = "rig";
+    scene.mNumCameras = static_cast<unsigned>(cameras.size());
+    scene.mCameras = cameras.empty() ? nullptr : new aiCamera*[cameras.size()];
+    std::copy(cameras.begin(), cameras.end(), scene.mCameras);
+    scene.mNumLights = static_cast<unsigned>(lights.size());
+    scene.mLights = lights.empty() ? nullptr : new aiLight*[lights.size()];
+    std::copy(lights.begin(), lights.end(), scene.mLights);
+}
+
+const Node& nodeNamed(const Scene& scene, const std::string& name) { return scene.at(*scene.findByName(name)); }
+
+glm::vec3 worldAxis(const Scene& scene, const std::string& name, glm::vec4 axis) {
+    return glm::normalize(glm::vec3(scene.worldFromNode(*scene.findByName(name)) * axis));
 }
 
 } // namespace
@@ -330,6 +356,69 @@ private slots:
         QCOMPARE(p.normals[1], glm::vec3(0, 1, 0));
         QCOMPARE(p.normals[2], glm::vec3(0, 1, 0));
         QVERIFY(hasWarning(r.warnings, "non-finite-position"));
+    }
+
+    void cameraLooksWhereAssimpSaysWithTheVerticalFov() {
+        auto ai = meshScene({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}});
+        auto* camera = new aiCamera;
+        camera->mPosition = aiVector3D(0, 1, 0);
+        camera->mLookAt = aiVector3D(1, 0, 0); // along +X
+        camera->mUp = aiVector3D(0, 1, 0);
+        camera->mHorizontalFOV = 0.5f;        // half angle
+        camera->mAspect = 2.0f;
+        camera->mClipPlaneNear = 0.5f;
+        camera->mClipPlaneFar = 200.0f;
+        addRig(*ai, {camera}, {});
+        LoadResult r = convertAssimpScene(*ai, {"rig.dae"});
+        const Camera* c = nodeNamed(r.scene, "rig").get<Camera>();
+        QVERIFY(c);
+        QCOMPARE(c->projection, Projection::Perspective);
+        QVERIFY(std::abs(c->yfov - 2.0f * std::atan(std::tan(0.5f) / 2.0f)) < 1e-6f);
+        QCOMPARE(c->aspectRatio, 2.0f);
+        QCOMPARE(c->znear, 0.5f);
+        QCOMPARE(c->zfar, 200.0f);
+        QVERIFY(near(worldAxis(r.scene, "rig", {0, 0, -1, 0}), {1, 0, 0}));
+        QVERIFY(near(worldAxis(r.scene, "rig", {0, 1, 0, 0}), {0, 1, 0}));
+        QVERIFY(near(glm::vec3(r.scene.worldFromNode(*r.scene.findByName("rig"))[3]), {0, 1, 5}));
+        QVERIFY(!hasWarning(r.warnings, "cameras-dropped"));
+    }
+
+    void spotLightShinesAlongItsDirectionWithItsCone() {
+        auto ai = meshScene({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}});
+        auto* spot = new aiLight;
+        spot->mType = aiLightSource_SPOT;
+        spot->mDirection = aiVector3D(0, -1, 0);
+        spot->mColorDiffuse = aiColor3D(20, 10, 5);
+        spot->mAngleInnerCone = 0.2f;
+        spot->mAngleOuterCone = 0.4f;
+        addRig(*ai, {}, {spot});
+        LoadResult r = convertAssimpScene(*ai, {"rig.fbx"});
+        const Light* l = nodeNamed(r.scene, "rig").get<Light>();
+        QVERIFY(l);
+        QCOMPARE(l->type, LightType::Spot);
+        QCOMPARE(l->intensity, 20.0f);
+        QVERIFY(near(l->color, {1.0f, 0.5f, 0.25f}));
+        QCOMPARE(l->innerConeAngle, 0.2f);
+        QCOMPARE(l->outerConeAngle, 0.4f);
+        QVERIFY(near(worldAxis(r.scene, "rig", {0, 0, -1, 0}), {0, -1, 0}));
+        QVERIFY(hasWarning(r.warnings, "light-units-unknown"));
+    }
+
+    void cameraAndLightOnOneNodeBecomeChildren() {
+        auto ai = meshScene({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}});
+        auto* area = new aiLight;
+        area->mType = aiLightSource_AREA;
+        auto* point = new aiLight;
+        point->mType = aiLightSource_POINT;
+        point->mColorDiffuse = aiColor3D(1, 1, 1);
+        addRig(*ai, {new aiCamera}, {point, area});
+        LoadResult r = convertAssimpScene(*ai, {"rig.fbx"});
+        QVERIFY(nodeNamed(r.scene, "rig.camera").get<Camera>());
+        QVERIFY(nodeNamed(r.scene, "rig.light").get<Light>());
+        QVERIFY(!nodeNamed(r.scene, "rig").get<Camera>());
+        const auto dropped = std::find_if(r.warnings.begin(), r.warnings.end(), [](const Warning& w) { return w.code == "lights-dropped"; });
+        QVERIFY(dropped != r.warnings.end());
+        QCOMPARE(QString::fromStdString(dropped->message), QStringLiteral("1 lights dropped (area, ambient, or on no node)"));
     }
 
     void pointsOnlyIsNoGeometry() {
