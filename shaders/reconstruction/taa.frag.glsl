@@ -23,23 +23,32 @@ vec3 currentPerceptual(ivec2 p) {
     return perceptualFromLinear(finiteRadiance(texelFetch(uCurrent, clamp(p, ivec2(0), size - 1), 0).rgb));
 }
 
-// Bilinear history fetch from nearest-filtered storage; taps on other surfaces are left out.
-vec4 historyAt(vec2 position, vec4 normalDepth, float id, out float weight) {
+// Disocclusion: the surface is new unless some pixel of the previous frame's 3x3 neighbourhood
+// around the reprojected position saw it. (A per-tap test would reject the jittered edges that TAA
+// exists to anti-alias: their id and depth flip from frame to frame.)
+bool seenLastFrame(vec2 position, vec4 normalDepth, float id) {
+    ivec2 size = textureSize(uPreviousNormalDepth, 0);
+    ivec2 centre = ivec2(floor(position));
+    for (int y = -1; y <= 1; ++y)
+        for (int x = -1; x <= 1; ++x) {
+            ivec2 q = clamp(centre + ivec2(x, y), ivec2(0), size - 1);
+            if (sameSurface(normalDepth, id, texelFetch(uPreviousNormalDepth, q, 0), texelFetch(uPreviousObjectId, q, 0).x)) return true;
+        }
+    return false;
+}
+
+// Bilinear history fetch from nearest-filtered storage.
+vec4 historyAt(vec2 position) {
     vec2 base = floor(position - 0.5);
     vec2 f = position - 0.5 - base;
-    vec4 sum = vec4(0.0);
-    weight = 0.0;
     ivec2 size = textureSize(uHistory, 0);
+    vec4 sum = vec4(0.0);
     for (int j = 0; j <= 1; ++j)
         for (int i = 0; i <= 1; ++i) {
-            ivec2 q = ivec2(base) + ivec2(i, j);
-            if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
-            if (!sameSurface(normalDepth, id, texelFetch(uPreviousNormalDepth, q, 0), texelFetch(uPreviousObjectId, q, 0).x)) continue;
-            float w = (i == 1 ? f.x : 1.0 - f.x) * (j == 1 ? f.y : 1.0 - f.y);
-            sum += w * texelFetch(uHistory, q, 0);
-            weight += w;
+            ivec2 q = clamp(ivec2(base) + ivec2(i, j), ivec2(0), size - 1);
+            sum += (i == 1 ? f.x : 1.0 - f.x) * (j == 1 ? f.y : 1.0 - f.y) * texelFetch(uHistory, q, 0);
         }
-    return weight > 1.0e-4 ? sum / weight : vec4(0.0);
+    return sum;
 }
 
 // Moves `history` towards the box centre until it lies inside the box (clip, not clamp).
@@ -65,14 +74,13 @@ void main() {
 
     vec2 motion = texelFetch(uMotion, pixel, 0).xy;
     vec2 previous = gl_FragCoord.xy + motion;
-    float found = 0.0;
-    vec4 history = vec4(0.0);
-    if (uHistoryValid != 0 && insideImage(previous, vec2(textureSize(uHistory, 0))))
-        history = historyAt(previous, texelFetch(uNormalDepth, pixel, 0), texelFetch(uObjectId, pixel, 0).x, found);
-    if (found < 0.5) {
+    bool found = uHistoryValid != 0 && insideImage(previous, vec2(textureSize(uHistory, 0))) &&
+                 seenLastFrame(previous, texelFetch(uNormalDepth, pixel, 0), texelFetch(uObjectId, pixel, 0).x);
+    if (!found) {
         outColor = vec4(linearFromPerceptual(current), 1.0);
         return;
     }
+    vec4 history = historyAt(previous);
     vec3 past = perceptualFromLinear(finiteRadiance(history.rgb));
     past = rgbFromYCoCg(clipToBox(yCoCgFromRgb(past), mean, uClipGamma * sigma));
     float frames = min(history.a + 1.0, 1.0 / uMinBlend);
