@@ -2,6 +2,8 @@
 #include "cli/command.h"
 #include "cli/exit_codes.h"
 #include "cli/report.h"
+#include "editor/main_window/editor_app.h"
+#include "app/version.h"
 
 #include <cstring>
 #include <string_view>
@@ -19,7 +21,11 @@ bool wantsCommandLine(int argc, char** argv) {
 
 int main(int argc, char** argv) {
     if (wantsCommandLine(argc, argv)) return glint::cli::runCommandLine(argc, argv);
-    // The editor is not part of this build yet; say so instead of pretending.
-    glint::cli::printError("the editor is not available in this build; use a subcommand (glint --help)");
-    return glint::cli::kUsage;
+    if (!glint::editor::haveDisplay()) {
+        // Without a window system Qt would abort; point at what works instead.
+        glint::cli::printError("no display for the editor (DISPLAY is not set); run it under xvfb-run, "
+                               "or use a subcommand such as `glint info FILE` (glint --help)");
+        return glint::cli::kUsage;
+    }
+    return glint::editor::runEditor(argc, argv, glint::kVersion);
 }

@@ -103,6 +103,8 @@ void Document::setCurrentTime(double seconds) {
 
 void Document::newScene() {
     replaceScene(Scene{});
+    recovered_ = false;
+    onHistoryIndex();
     path_.clear();
     reportWarnings({});
     emit fileChanged();
@@ -112,8 +114,25 @@ QString Document::open(const QString& path) {
     try {
         LoadResult result = readAnyScene(path);
         replaceScene(std::move(result.scene));
+        recovered_ = false;
+        onHistoryIndex();
         // Imported formats are not saved back in place: the document starts untitled.
         path_ = isNativeScene(path) ? QFileInfo(path).absoluteFilePath() : QString();
+        reportWarnings(warningLines(result.warnings));
+        emit fileChanged();
+        return {};
+    } catch (const std::exception& e) {
+        return QString::fromStdString(e.what());
+    }
+}
+
+QString Document::recover(const QString& autosaveFile, const QString& originalPath) {
+    try {
+        LoadResult result = loadScene(toPath(autosaveFile));
+        replaceScene(std::move(result.scene));
+        path_ = originalPath.isEmpty() ? QString() : QFileInfo(originalPath).absoluteFilePath();
+        recovered_ = true;
+        onHistoryIndex();
         reportWarnings(warningLines(result.warnings));
         emit fileChanged();
         return {};
@@ -137,6 +156,8 @@ QString Document::saveAs(const QString& path) {
         return QString::fromStdString(e.what());
     }
     history_.setClean();
+    recovered_ = false;
+    onHistoryIndex();
     const QString absolute = QFileInfo(target).absoluteFilePath();
     if (absolute != path_) {
         path_ = absolute;
@@ -186,7 +207,7 @@ void Document::onHistoryChanged(const ChangeSet& changes) {
 void Document::onHistoryIndex() {
     // Selections recorded for commands that no longer exist must not come back.
     selectionBefore_.erase(selectionBefore_.upper_bound(history_.count()), selectionBefore_.end());
-    const bool clean = history_.isClean();
+    const bool clean = !isModified();
     if (clean == lastClean_) return;
     lastClean_ = clean;
     emit cleanChanged(clean);

@@ -52,10 +52,13 @@ public:
     QString save();
     QString saveAs(const QString& path);
     QString importFile(const QString& path); // merged into the scene as one undoable step
+    // Loads an autosaved copy in place of `originalPath` (empty: untitled); the document stays
+    // modified until it is saved, since the copy is newer than the file.
+    QString recover(const QString& autosaveFile, const QString& originalPath);
 
     const QString& filePath() const { return path_; }
     QString displayName() const;  // the scene name, else the file name, else "Untitled"
-    bool isModified() const { return !history_.isClean(); }
+    bool isModified() const { return recovered_ || !history_.isClean(); }
     // Warnings of the last open, import or save, as "FILE: message" lines.
     const QStringList& lastWarnings() const { return warnings_; }
 
@@ -82,6 +85,7 @@ private:
     std::map<std::size_t, std::vector<NodeId>> selectionBefore_;
     double time_ = 0.0;
     bool lastClean_ = true;
+    bool recovered_ = false;
     QStringList warnings_;
     History::ListenerId changeListener_ = 0;
     History::ListenerId indexListener_ = 0;

@@ -1,0 +1,289 @@
+#include "main_window.h"
+
+#include "autosave.h"
+#include "recent_files.h"
+#include "theme.h"
+
+#include "editor/document/document.h"
+#include "editor/history_view/history_panel.h"
+#include "editor/log/log_panel.h"
+#include "editor/outliner/outliner_panel.h"
+#include "editor/properties/properties_panel.h"
+
+#if defined(GLINT_HAVE_VIEWPORT)
+#include "editor/viewport/viewport.h"
+#endif
+
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QSettings>
+#include <QStatusBar>
+
+namespace glint::editor {
+
+MainWindow::MainWindow(Options options, QWidget* parent) : QMainWindow(parent), options_(std::move(options)) {
+    setObjectName("MainWindow");
+    setAcceptDrops(true);
+    setDockNestingEnabled(true);
+    document_ = new Document(this);
+    autosave_ = new Autosave(*document_, options_.autosaveFolder, this);
+    preferences_ = Preferences::load();
+
+    createCentralView();
+    createDocks();
+    createActions();
+    createMenus();
+    createToolBar();
+    createStatusBar();
+    applyPreferences();
+    restoreLayout();
+
+    connect(document_, &Document::fileChanged, this, &MainWindow::updateTitle);
+    connect(document_, &Document::cleanChanged, this, &MainWindow::updateTitle);
+    connect(document_, &Document::changed, this, &MainWindow::updateStatus);
+    connect(document_, &Document::changed, this, &MainWindow::updateUndoActions);
+    connect(document_, &Document::selectionChanged, this, &MainWindow::updateStatus);
+    connect(document_, &Document::selectionChanged, this, &MainWindow::updateUndoActions);
+    connect(document_, &Document::warningsReported, log_, &LogPanel::warnings);
+    connect(autosave_, &Autosave::failed, this, [this](const QString& m) { log_->warning(tr("Autosave failed: %1").arg(m)); });
+    updateTitle();
+    updateStatus();
+    updateUndoActions();
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::createCentralView() {
+#if defined(GLINT_HAVE_VIEWPORT)
+    auto* viewport = new Viewport(*document_, this);
+    viewport->setAccessibleName(tr("Viewport"));
+    viewportActions_ = viewport->allActions();
+    connect(viewport, &Viewport::statusMessage, this, [this](const QString& text) { renderLabel_->setText(text); });
+    setCentralWidget(viewport);
+#else
+    // The viewport is not part of this build: say so where it would be.
+    auto* placeholder = new QLabel(tr("The viewport is not available in this build."), this);
+    placeholder->setAlignment(Qt::AlignCenter);
+    placeholder->setAccessibleName(tr("Viewport"));
+    setCentralWidget(placeholder);
+#endif
+}
+
+QDockWidget* MainWindow::addDock(QWidget* widget, const QString& title, const QString& name, Qt::DockWidgetArea area) {
+    auto* dock = new QDockWidget(title, this);
+    dock->setObjectName(name); // saveState() keys the layout by object name
+    dock->setWidget(widget);
+    widget->setAccessibleName(title);
+    addDockWidget(area, dock);
+    return dock;
+}
+
+void MainWindow::createDocks() {
+    outliner_ = new OutlinerPanel(*document_, this);
+    properties_ = new PropertiesPanel(*document_, false, this);
+    sceneSettings_ = new PropertiesPanel(*document_, true, this);
+    history_ = new HistoryPanel(*document_, this);
+    log_ = new LogPanel(this);
+    auto* outlinerDock = addDock(outliner_, tr("Outliner"), "OutlinerDock", Qt::LeftDockWidgetArea);
+    auto* historyDock = addDock(history_, tr("Undo history"), "HistoryDock", Qt::LeftDockWidgetArea);
+    auto* propertiesDock = addDock(properties_, tr("Properties"), "PropertiesDock", Qt::RightDockWidgetArea);
+    auto* sceneDock = addDock(sceneSettings_, tr("Scene"), "SceneDock", Qt::RightDockWidgetArea);
+    addDock(log_, tr("Log"), "LogDock", Qt::BottomDockWidgetArea);
+    splitDockWidget(outlinerDock, historyDock, Qt::Vertical);
+    tabifyDockWidget(propertiesDock, sceneDock);
+    propertiesDock->raise();
+    for (auto* panel : {static_cast<QObject*>(outliner_), static_cast<QObject*>(properties_),
+                        static_cast<QObject*>(sceneSettings_), static_cast<QObject*>(history_)})
+        connect(panel, SIGNAL(message(QString)), log_, SLOT(warning(QString)));
+}
+
+void MainWindow::restoreLayout() {
+    QSettings settings;
+    restoreGeometry(settings.value("window/geometry").toByteArray());
+    restoreState(settings.value("window/state").toByteArray());
+}
+
+void MainWindow::saveLayout() {
+    QSettings settings;
+    settings.setValue("window/geometry", saveGeometry());
+    settings.setValue("window/state", saveState());
+}
+
+void MainWindow::applyPreferences() {
+    if (auto* app = qobject_cast<QApplication*>(QCoreApplication::instance()))
+        applyTheme(*app, themeFromName(preferences_.theme), options_.systemPalette);
+    autosave_->setIntervalMinutes(preferences_.autosaveMinutes);
+    for (QAction* action : keymapActions()) {
+        auto it = preferences_.keymap.find(action->objectName());
+        if (it != preferences_.keymap.end()) action->setShortcut(it.value());
+    }
+}
+
+void MainWindow::updateTitle() {
+    // "[*]" is where Qt puts the modified marker; the file name follows the scene name.
+    QString title = document_->displayName() + QStringLiteral("[*]");
+    if (!document_->filePath().isEmpty()) title += QStringLiteral(" (%1)").arg(QFileInfo(document_->filePath()).fileName());
+    setWindowTitle(title + QStringLiteral(" - Glint"));
+    setWindowModified(document_->isModified());
+}
+
+void MainWindow::updateStatus() {
+    const Scene& scene = document_->scene();
+    std::size_t triangles = 0;
+    for (const auto& [id, mesh] : scene.meshes) triangles += mesh.triangleCount();
+    const std::size_t selected = document_->selection().size();
+    if (selected == 0) selectionLabel_->setText(tr("Nothing selected"));
+    else if (selected == 1) selectionLabel_->setText(tr("Selected: %1").arg(QString::fromStdString(scene.at(document_->currentNode()).name)));
+    else selectionLabel_->setText(tr("%n nodes selected", nullptr, static_cast<int>(selected)));
+    sceneLabel_->setText(tr("%1 nodes, %2 triangles, configuration: %3")
+                             .arg(scene.nodeCount())
+                             .arg(triangles)
+                             .arg(QString::fromStdString(scene.settings.render.configuration)));
+}
+
+void MainWindow::createStatusBar() {
+    selectionLabel_ = new QLabel(this);
+    sceneLabel_ = new QLabel(this);
+    renderLabel_ = new QLabel(this);
+    selectionLabel_->setAccessibleName(tr("Selection"));
+    sceneLabel_->setAccessibleName(tr("Scene statistics"));
+    renderLabel_->setAccessibleName(tr("Render progress"));
+    statusBar()->addWidget(selectionLabel_);
+    statusBar()->addWidget(sceneLabel_);
+    statusBar()->addPermanentWidget(renderLabel_);
+}
+
+void MainWindow::report(const QString& message) {
+    log_->error(message);
+    statusBar()->showMessage(message, 8000);
+}
+
+bool MainWindow::maybeSave() {
+    if (!document_->isModified()) return true;
+    const auto answer = QMessageBox::warning(
+        this, tr("Unsaved changes"), tr("\"%1\" has unsaved changes. Save them first?").arg(document_->displayName()),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Cancel) return false;
+    if (answer == QMessageBox::Save) return save();
+    return true;
+}
+
+bool MainWindow::openFile(const QString& path) {
+    const QString error = document_->open(path);
+    if (!error.isEmpty()) {
+        report(tr("Cannot open %1: %2").arg(path, error));
+        QMessageBox::warning(this, tr("Open"), error);
+        return false;
+    }
+    RecentFiles().add(path);
+    rebuildRecentMenu();
+    log_->info(tr("Opened %1").arg(path));
+    statusBar()->showMessage(tr("Opened %1").arg(QFileInfo(path).fileName()), 4000);
+    return true;
+}
+
+bool MainWindow::importFile(const QString& path) {
+    const QString error = document_->importFile(path);
+    if (!error.isEmpty()) {
+        report(tr("Cannot import %1: %2").arg(path, error));
+        return false;
+    }
+    log_->info(tr("Imported %1").arg(path));
+    return true;
+}
+
+bool MainWindow::save() {
+    if (document_->filePath().isEmpty()) return saveAs();
+    const QString error = document_->save();
+    if (!error.isEmpty()) {
+        report(tr("Cannot save: %1").arg(error));
+        return false;
+    }
+    statusBar()->showMessage(tr("Saved %1").arg(document_->filePath()), 4000);
+    return true;
+}
+
+bool MainWindow::saveAs(const QString& path) {
+    QString target = path;
+    if (target.isEmpty())
+        target = QFileDialog::getSaveFileName(this, tr("Save scene"), document_->filePath(),
+                                              tr("glTF scenes (*.gltf *.glb)"));
+    if (target.isEmpty()) return false;
+    const QString error = document_->saveAs(target);
+    if (!error.isEmpty()) {
+        report(tr("Cannot save %1: %2").arg(target, error));
+        return false;
+    }
+    RecentFiles().add(document_->filePath());
+    rebuildRecentMenu();
+    statusBar()->showMessage(tr("Saved %1").arg(document_->filePath()), 4000);
+    return true;
+}
+
+bool MainWindow::offerRecovery() {
+    const auto leftover = autosave_->leftover();
+    if (!leftover) return false;
+    const QString name = leftover->original.isEmpty() ? tr("an untitled scene") : leftover->original;
+    if (options_.askBeforeRecovery) {
+        const auto answer = QMessageBox::question(
+            this, tr("Recover unsaved work"),
+            tr("Glint did not close normally last time. Recover the autosaved copy of %1?").arg(name),
+            QMessageBox::Yes | QMessageBox::No, QMessageBox::Yes);
+        if (answer != QMessageBox::Yes) {
+            autosave_->discard();
+            return false;
+        }
+    }
+    const QString error = document_->recover(leftover->copy, leftover->original);
+    if (!error.isEmpty()) {
+        report(tr("Cannot recover the autosaved copy: %1").arg(error));
+        return false;
+    }
+    log_->info(tr("Recovered the autosaved copy of %1").arg(name));
+    return true;
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    if (!maybeSave()) {
+        event->ignore();
+        return;
+    }
+    saveLayout();
+    autosave_->discard(); // a normal exit: nothing to recover next time
+    event->accept();
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+    if (event->mimeData()->hasUrls()) event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+    // A scene file replaces the document (after asking about unsaved changes); with Ctrl held,
+    // or for formats Glint only imports, the files are merged into it.
+    const bool merge = event->modifiers().testFlag(Qt::ControlModifier);
+    for (const QUrl& url : event->mimeData()->urls()) {
+        if (!url.isLocalFile()) continue;
+        const QString path = url.toLocalFile();
+        const QString lower = path.toLower();
+        const bool native = lower.endsWith(".gltf") || lower.endsWith(".glb") || lower.endsWith(".glint.json");
+        if (native && !merge) {
+            if (maybeSave()) openFile(path);
+        } else {
+            importFile(path);
+        }
+    }
+    event->acceptProposedAction();
+}
+
+void MainWindow::changeEvent(QEvent* event) {
+    QMainWindow::changeEvent(event);
+    if (event->type() == QEvent::LanguageChange) updateTitle();
+}
+
+} // namespace glint::editor

@@ -1,0 +1,103 @@
+#pragma once
+// The editor's main window: the viewport in the middle, dockable panels around it (outliner,
+// properties, scene settings, undo history, log), menus, a toolbar and a status bar. The window
+// owns the Document; every panel edits it through commands and follows its signals.
+#include "editor/preferences/preferences.h"
+
+#include <QMainWindow>
+#include <QPalette>
+
+class QAction;
+class QDockWidget;
+class QLabel;
+class QMenu;
+
+namespace glint::editor {
+
+class Autosave;
+class Document;
+class HistoryPanel;
+class LogPanel;
+class OutlinerPanel;
+class PropertiesPanel;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    struct Options {
+        QString autosaveFolder;      // empty: the standard place
+        bool askBeforeRecovery = true; // false: recover without asking (tests)
+        QPalette systemPalette;
+    };
+    explicit MainWindow(Options options, QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    Document& document() { return *document_; }
+    OutlinerPanel& outliner() { return *outliner_; }
+    PropertiesPanel& properties() { return *properties_; }
+    PropertiesPanel& sceneSettings() { return *sceneSettings_; }
+    HistoryPanel& historyPanel() { return *history_; }
+    LogPanel& log() { return *log_; }
+    Autosave& autosave() { return *autosave_; }
+    QWidget* centralView() const { return centralWidget(); }
+
+    // Every action with a shortcut the keymap may change.
+    QList<QAction*> keymapActions() const;
+
+    bool openFile(const QString& path);  // reports failures in the log and a message box
+    bool importFile(const QString& path);
+    bool save();
+    bool saveAs(const QString& path = {});
+    // Offers a copy an earlier session left behind; returns whether it was recovered.
+    bool offerRecovery();
+    // Asks about unsaved changes; false when the user cancels.
+    bool maybeSave();
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
+    void changeEvent(QEvent* event) override;
+
+private:
+    void createCentralView();
+    void createDocks();
+    QDockWidget* addDock(QWidget* widget, const QString& title, const QString& name, Qt::DockWidgetArea area);
+    void createActions();
+    void createMenus();
+    void createToolBar();
+    void createStatusBar();
+    void applyPreferences();
+    void showPreferences();
+    void restoreLayout();
+    void saveLayout();
+    void updateTitle();
+    void updateStatus();
+    void updateUndoActions();
+    void rebuildRecentMenu();
+    void report(const QString& message);
+    QAction* makeAction(const QString& name, const QString& text, const QKeySequence& shortcut = {});
+
+    Options options_;
+    Document* document_ = nullptr;
+    Autosave* autosave_ = nullptr;
+    OutlinerPanel* outliner_ = nullptr;
+    PropertiesPanel* properties_ = nullptr;
+    PropertiesPanel* sceneSettings_ = nullptr;
+    HistoryPanel* history_ = nullptr;
+    LogPanel* log_ = nullptr;
+    QMenu* recentMenu_ = nullptr;
+    QMenu* viewMenu_ = nullptr;
+    QLabel* selectionLabel_ = nullptr;
+    QLabel* sceneLabel_ = nullptr;
+    QLabel* renderLabel_ = nullptr;
+    QList<QAction*> actions_;
+    QList<QAction*> viewportActions_;
+    QAction* undo_ = nullptr;
+    QAction* redo_ = nullptr;
+    QAction* delete_ = nullptr;
+    QAction* duplicate_ = nullptr;
+    Preferences preferences_;
+};
+
+} // namespace glint::editor

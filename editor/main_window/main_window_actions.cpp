@@ -1,0 +1,218 @@
+// The main window's actions, menus and toolbar.
+#include "main_window.h"
+
+#include "recent_files.h"
+#include "theme.h"
+
+#include "editor/document/document.h"
+#include "editor/document/edit_operations.h"
+#include "editor/outliner/outliner_panel.h"
+#include "editor/preferences/preferences_dialog.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QApplication>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QStatusBar>
+#include <QStyle>
+#include <QToolBar>
+
+#include <exception>
+
+namespace glint::editor {
+
+QAction* MainWindow::makeAction(const QString& name, const QString& text, const QKeySequence& shortcut) {
+    auto* action = new QAction(text, this);
+    action->setObjectName(name);
+    action->setShortcut(shortcut);
+    action->setShortcutContext(Qt::WindowShortcut);
+    addAction(action); // shortcuts work even when the menu bar is hidden
+    actions_ << action;
+    return action;
+}
+
+QList<QAction*> MainWindow::keymapActions() const { return actions_ + viewportActions_; }
+
+void MainWindow::createActions() {
+    QStyle* s = style();
+    auto* newScene = makeAction("file.new", tr("&New"), QKeySequence::New);
+    connect(newScene, &QAction::triggered, this, [this] {
+        if (maybeSave()) document_->newScene();
+    });
+    auto* open = makeAction("file.open", tr("&Open..."), QKeySequence::Open);
+    open->setIcon(s->standardIcon(QStyle::SP_DialogOpenButton));
+    connect(open, &QAction::triggered, this, [this] {
+        if (!maybeSave()) return;
+        const QString path = QFileDialog::getOpenFileName(this, tr("Open scene"), {},
+                                                          tr("Scenes (*.gltf *.glb *.glint.json);;All files (*)"));
+        if (!path.isEmpty()) openFile(path);
+    });
+    auto* import = makeAction("file.import", tr("&Import..."), QKeySequence(Qt::CTRL | Qt::Key_I));
+    connect(import, &QAction::triggered, this, [this] {
+        const QString path = QFileDialog::getOpenFileName(
+            this, tr("Import into the scene"), {},
+            tr("Scenes and models (*.gltf *.glb *.obj *.ply *.stl *.fbx *.dae *.3ds);;All files (*)"));
+        if (!path.isEmpty()) importFile(path);
+    });
+    auto* saveAction = makeAction("file.save", tr("&Save"), QKeySequence::Save);
+    saveAction->setIcon(s->standardIcon(QStyle::SP_DialogSaveButton));
+    connect(saveAction, &QAction::triggered, this, [this] { save(); });
+    auto* saveAsAction = makeAction("file.save_as", tr("Save &As..."), QKeySequence::SaveAs);
+    connect(saveAsAction, &QAction::triggered, this, [this] { saveAs(); });
+    auto* prefs = makeAction("edit.preferences", tr("&Preferences..."), QKeySequence::Preferences);
+    connect(prefs, &QAction::triggered, this, &MainWindow::showPreferences);
+    auto* quit = makeAction("file.quit", tr("&Quit"), QKeySequence::Quit);
+    connect(quit, &QAction::triggered, this, &QWidget::close);
+
+    undo_ = makeAction("edit.undo", tr("&Undo"), QKeySequence::Undo);
+    undo_->setIcon(s->standardIcon(QStyle::SP_ArrowBack));
+    connect(undo_, &QAction::triggered, this, [this] {
+        try {
+            document_->undo();
+        } catch (const std::exception& e) {
+            report(QString::fromStdString(e.what()));
+        }
+    });
+    redo_ = makeAction("edit.redo", tr("&Redo"), QKeySequence::Redo);
+    redo_->setIcon(s->standardIcon(QStyle::SP_ArrowForward));
+    connect(redo_, &QAction::triggered, this, [this] {
+        try {
+            document_->redo();
+        } catch (const std::exception& e) {
+            report(QString::fromStdString(e.what()));
+        }
+    });
+    delete_ = makeAction("edit.delete", tr("&Delete"), QKeySequence::Delete);
+    connect(delete_, &QAction::triggered, this, [this] {
+        const QString error = deleteSelection(*document_);
+        if (!error.isEmpty()) statusBar()->showMessage(error, 4000);
+    });
+    duplicate_ = makeAction("edit.duplicate", tr("D&uplicate"), QKeySequence(Qt::CTRL | Qt::Key_D));
+    connect(duplicate_, &QAction::triggered, this, [this] {
+        const QString error = duplicateSelection(*document_);
+        if (!error.isEmpty()) statusBar()->showMessage(error, 4000);
+    });
+    auto* selectAll = makeAction("edit.select_all", tr("Select &All"), QKeySequence::SelectAll);
+    connect(selectAll, &QAction::triggered, this, [this] { document_->setSelection(document_->scene().depthFirst()); });
+    auto* selectNone = makeAction("edit.select_none", tr("Select &None"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_A));
+    connect(selectNone, &QAction::triggered, this, [this] { document_->setSelection({}); });
+}
+
+void MainWindow::createMenus() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    auto find = [this](const char* name) { return findChild<QAction*>(name, Qt::FindDirectChildrenOnly); };
+    file->addAction(find("file.new"));
+    file->addAction(find("file.open"));
+    recentMenu_ = file->addMenu(tr("Open &Recent"));
+    rebuildRecentMenu();
+    file->addAction(find("file.import"));
+    file->addSeparator();
+    file->addAction(find("file.save"));
+    file->addAction(find("file.save_as"));
+    file->addSeparator();
+    file->addAction(find("file.quit"));
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    edit->addAction(undo_);
+    edit->addAction(redo_);
+    edit->addSeparator();
+    edit->addAction(duplicate_);
+    edit->addAction(delete_);
+    edit->addSeparator();
+    edit->addAction(find("edit.select_all"));
+    edit->addAction(find("edit.select_none"));
+    edit->addSeparator();
+    edit->addAction(find("edit.preferences"));
+
+    menuBar()->addMenu(outliner_->addMenu());
+
+    viewMenu_ = menuBar()->addMenu(tr("&View"));
+    for (QAction* action : viewportActions_) viewMenu_->addAction(action);
+    if (!viewportActions_.isEmpty()) viewMenu_->addSeparator();
+    QMenu* panels = viewMenu_->addMenu(tr("&Panels"));
+    for (QDockWidget* dock : findChildren<QDockWidget*>()) panels->addAction(dock->toggleViewAction());
+    QMenu* theme = viewMenu_->addMenu(tr("&Theme"));
+    auto* themes = new QActionGroup(this);
+    for (const auto& [value, label] : {std::pair{Theme::System, tr("System")}, std::pair{Theme::Light, tr("Light")},
+                                       std::pair{Theme::Dark, tr("Dark")}}) {
+        QAction* action = theme->addAction(label);
+        action->setCheckable(true);
+        action->setChecked(themeFromName(preferences_.theme) == value);
+        themes->addAction(action);
+        connect(action, &QAction::triggered, this, [this, value = value] {
+            preferences_.theme = themeName(value);
+            preferences_.save();
+            applyPreferences();
+        });
+    }
+
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&About Glint"), this, [this] {
+        QMessageBox::about(this, tr("About Glint"),
+                           tr("Glint %1: a scene editor with a built-in OpenGL 4.1 path tracer.")
+                               .arg(QCoreApplication::applicationVersion()));
+    });
+    help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
+}
+
+void MainWindow::createToolBar() {
+    QToolBar* bar = addToolBar(tr("Main"));
+    bar->setObjectName("MainToolBar");
+    bar->setAccessibleName(tr("Main toolbar"));
+    auto find = [this](const char* name) { return findChild<QAction*>(name, Qt::FindDirectChildrenOnly); };
+    bar->addAction(find("file.open"));
+    bar->addAction(find("file.save"));
+    bar->addSeparator();
+    bar->addAction(undo_);
+    bar->addAction(redo_);
+    if (!viewportActions_.isEmpty()) {
+        QToolBar* view = addToolBar(tr("View"));
+        view->setObjectName("ViewToolBar");
+        view->setAccessibleName(tr("View toolbar"));
+        view->addActions(viewportActions_);
+    }
+}
+
+void MainWindow::rebuildRecentMenu() {
+    recentMenu_->clear();
+    const QStringList files = RecentFiles().list();
+    for (const QString& path : files) {
+        recentMenu_->addAction(QFileInfo(path).fileName(), this, [this, path] {
+            if (maybeSave()) openFile(path);
+        })->setToolTip(path);
+    }
+    if (!files.isEmpty()) recentMenu_->addSeparator();
+    QAction* clear = recentMenu_->addAction(tr("Clear the list"), this, [this] {
+        RecentFiles().clear();
+        rebuildRecentMenu();
+    });
+    clear->setEnabled(!files.isEmpty());
+}
+
+void MainWindow::updateUndoActions() {
+    const History& history = document_->history();
+    undo_->setEnabled(history.canUndo());
+    redo_->setEnabled(history.canRedo());
+    undo_->setText(history.canUndo() ? tr("&Undo %1").arg(tr(history.label(history.index() - 1).c_str())) : tr("&Undo"));
+    redo_->setText(history.canRedo() ? tr("&Redo %1").arg(tr(history.label(history.index()).c_str())) : tr("&Redo"));
+    const bool selected = !document_->selection().empty();
+    delete_->setEnabled(selected);
+    duplicate_->setEnabled(selected);
+}
+
+void MainWindow::showPreferences() {
+    PreferencesDialog dialog(preferences_, keymapActions(), this);
+    if (dialog.exec() != QDialog::Accepted) return;
+    const QString oldLanguage = preferences_.language;
+    preferences_ = dialog.result();
+    preferences_.save();
+    applyPreferences();
+    if (preferences_.language != oldLanguage)
+        statusBar()->showMessage(tr("The new language applies after a restart."), 8000);
+}
+
+} // namespace glint::editor

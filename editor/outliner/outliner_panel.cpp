@@ -1,0 +1,154 @@
+#include "outliner_panel.h"
+
+#include "outliner_model.h"
+
+#include "editor/document/document.h"
+#include "editor/document/edit_operations.h"
+
+#include <QHeaderView>
+#include <QItemSelectionModel>
+#include <QLineEdit>
+#include <QMenu>
+#include <QSortFilterProxyModel>
+#include <QToolButton>
+#include <QTreeView>
+#include <QVBoxLayout>
+
+namespace glint::editor {
+
+OutlinerPanel::OutlinerPanel(Document& document, QWidget* parent) : QWidget(parent), document_(document) {
+    model_ = new OutlinerModel(document_, this);
+    proxy_ = new QSortFilterProxyModel(this);
+    proxy_->setSourceModel(model_);
+    proxy_->setRecursiveFilteringEnabled(true); // keep the parents of a match, so it stays in place
+    proxy_->setFilterCaseSensitivity(Qt::CaseInsensitive);
+    proxy_->setFilterKeyColumn(OutlinerModel::NameColumn);
+
+    filter_ = new QLineEdit(this);
+    filter_->setPlaceholderText(tr("Filter by name"));
+    filter_->setAccessibleName(tr("Outliner filter"));
+    filter_->setClearButtonEnabled(true);
+    connect(filter_, &QLineEdit::textChanged, this, [this](const QString& text) {
+        proxy_->setFilterFixedString(text);
+        view_->expandAll();
+        syncFromDocument();
+    });
+
+    auto* addButton = new QToolButton(this);
+    addButton->setText(tr("Add"));
+    addButton->setAccessibleName(tr("Add a shape, light or camera"));
+    addButton->setPopupMode(QToolButton::InstantPopup);
+    buildAddMenu();
+    addButton->setMenu(addMenu_);
+
+    view_ = new QTreeView(this);
+    view_->setModel(proxy_);
+    view_->setAccessibleName(tr("Scene outliner"));
+    view_->setSelectionMode(QAbstractItemView::ExtendedSelection);
+    view_->setSelectionBehavior(QAbstractItemView::SelectRows);
+    view_->setDragDropMode(QAbstractItemView::DragDrop);
+    view_->setDefaultDropAction(Qt::MoveAction);
+    view_->setDragEnabled(true);
+    view_->setAcceptDrops(true);
+    view_->setDropIndicatorShown(true);
+    view_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
+    view_->setContextMenuPolicy(Qt::CustomContextMenu);
+    view_->header()->setStretchLastSection(false);
+    view_->header()->setSectionResizeMode(OutlinerModel::NameColumn, QHeaderView::Stretch);
+    view_->header()->setSectionResizeMode(OutlinerModel::VisibleColumn, QHeaderView::ResizeToContents);
+    connect(view_, &QWidget::customContextMenuRequested, this, &OutlinerPanel::showContextMenu);
+    connect(view_->selectionModel(), &QItemSelectionModel::selectionChanged, this, &OutlinerPanel::syncToDocument);
+    connect(model_, &OutlinerModel::modelReset, this, [this] {
+        view_->expandAll();
+        syncFromDocument();
+    });
+    connect(model_, &OutlinerModel::editFailed, this, &OutlinerPanel::message);
+    connect(&document_, &Document::selectionChanged, this, &OutlinerPanel::syncFromDocument);
+
+    auto* top = new QHBoxLayout;
+    top->addWidget(filter_);
+    top->addWidget(addButton);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(2, 2, 2, 2);
+    layout->addLayout(top);
+    layout->addWidget(view_);
+    view_->expandAll();
+}
+
+void OutlinerPanel::buildAddMenu() {
+    addMenu_ = new QMenu(tr("Add"), this);
+    auto add = [this](QMenu* menu, const QString& name, Component component) {
+        QAction* action = menu->addAction(name);
+        connect(action, &QAction::triggered, this, [this, name, component] {
+            const QString error = addNode(document_, name, component);
+            if (!error.isEmpty()) emit message(error);
+        });
+    };
+    QMenu* shapes = addMenu_->addMenu(tr("Shape"));
+    add(shapes, tr("Sphere"), defaultShape(ShapeKind::Sphere));
+    add(shapes, tr("Box"), defaultShape(ShapeKind::Box));
+    add(shapes, tr("Quad"), defaultShape(ShapeKind::Quad));
+    add(shapes, tr("Disk"), defaultShape(ShapeKind::Disk));
+    add(shapes, tr("Cylinder"), defaultShape(ShapeKind::Cylinder));
+    add(shapes, tr("Ground plane"), defaultShape(ShapeKind::GroundPlane));
+    QMenu* lights = addMenu_->addMenu(tr("Light"));
+    add(lights, tr("Point light"), defaultLight(LightType::Point));
+    add(lights, tr("Spot light"), defaultLight(LightType::Spot));
+    add(lights, tr("Sun"), defaultLight(LightType::Sun));
+    add(addMenu_, tr("Camera"), defaultCamera());
+    add(addMenu_, tr("Empty group"), Component{});
+}
+
+void OutlinerPanel::syncFromDocument() {
+    if (syncing_) return;
+    syncing_ = true;
+    QItemSelection selection;
+    QModelIndex current;
+    for (NodeId id : document_.selection()) {
+        const QModelIndex index = proxy_->mapFromSource(model_->indexOf(id));
+        if (!index.isValid()) continue;
+        selection.select(index, index.siblingAtColumn(OutlinerModel::VisibleColumn));
+        current = index;
+    }
+    view_->selectionModel()->select(selection, QItemSelectionModel::ClearAndSelect);
+    if (current.isValid()) {
+        view_->selectionModel()->setCurrentIndex(current, QItemSelectionModel::NoUpdate);
+        view_->scrollTo(current);
+    }
+    syncing_ = false;
+}
+
+void OutlinerPanel::syncToDocument() {
+    if (syncing_) return;
+    syncing_ = true;
+    std::vector<NodeId> nodes;
+    for (const QModelIndex& index : view_->selectionModel()->selectedRows(OutlinerModel::NameColumn))
+        nodes.push_back(model_->nodeAt(proxy_->mapToSource(index)));
+    // The current item is the one the user clicked last: it becomes the document's current node.
+    const NodeId current = model_->nodeAt(proxy_->mapToSource(view_->selectionModel()->currentIndex()));
+    auto it = std::find(nodes.begin(), nodes.end(), current);
+    if (it != nodes.end()) std::rotate(it, it + 1, nodes.end());
+    document_.setSelection(std::move(nodes));
+    syncing_ = false;
+}
+
+void OutlinerPanel::showContextMenu(const QPoint& pos) {
+    QMenu menu(this);
+    const QModelIndex index = view_->indexAt(pos);
+    if (index.isValid()) {
+        menu.addAction(tr("Rename"), this, [this, index] { view_->edit(index.siblingAtColumn(0)); });
+        menu.addAction(tr("Duplicate"), this, [this] {
+            const QString error = duplicateSelection(document_);
+            if (!error.isEmpty()) emit message(error);
+        });
+        menu.addAction(tr("Delete"), this, [this] {
+            const QString error = deleteSelection(document_);
+            if (!error.isEmpty()) emit message(error);
+        });
+        menu.addSeparator();
+    }
+    menu.addMenu(addMenu_);
+    menu.exec(view_->viewport()->mapToGlobal(pos));
+}
+
+} // namespace glint::editor

@@ -1,0 +1,41 @@
+#include "preferences.h"
+
+#include <QCoreApplication>
+#include <QSettings>
+
+namespace glint::editor {
+
+Preferences Preferences::load() {
+    QSettings s;
+    Preferences p;
+    p.theme = s.value("ui/theme", p.theme).toString();
+    p.language = s.value("ui/language", p.language).toString();
+    p.autosaveMinutes = s.value("autosave/minutes", p.autosaveMinutes).toInt();
+    s.beginGroup("keymap");
+    for (const QString& key : s.childKeys()) p.keymap[key] = QKeySequence(s.value(key).toString());
+    s.endGroup();
+    return p;
+}
+
+void Preferences::save() const {
+    QSettings s;
+    s.setValue("ui/theme", theme);
+    s.setValue("ui/language", language);
+    s.setValue("autosave/minutes", autosaveMinutes);
+    s.remove("keymap");
+    s.beginGroup("keymap");
+    for (auto it = keymap.begin(); it != keymap.end(); ++it)
+        s.setValue(it.key(), it.value().toString(QKeySequence::PortableText));
+    s.endGroup();
+}
+
+QList<QPair<QString, QString>> availableLanguages() {
+    return {{"system", QCoreApplication::translate("glint::editor::Preferences", "System language")},
+            {"en", QStringLiteral("English")},
+            {"it", QStringLiteral("Italiano")},
+            {"de", QStringLiteral("Deutsch")},
+            {"fr", QStringLiteral("Français")},
+            {"es", QStringLiteral("Español")}};
+}
+
+} // namespace glint::editor

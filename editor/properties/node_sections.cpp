@@ -1,0 +1,243 @@
+// Node, transform, shape, light and camera sections.
+#include "sections.h"
+
+#include "property_edits.h"
+
+#include "editor/document/edit_operations.h"
+
+#include <glm/gtc/quaternion.hpp>
+
+#include <cmath>
+
+namespace glint::editor {
+namespace {
+
+constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+
+template <class T>
+const T* componentOf(const Document& document, NodeId node) {
+    const Node* n = document.scene().node(node);
+    return n ? n->get<T>() : nullptr;
+}
+
+// Reads one float of a component (0 when the node or component is gone, e.g. mid-undo).
+template <class T>
+std::function<double()> readComponent(const Document& document, NodeId node, std::function<double(const T&)> read) {
+    return [&document, node, read] {
+        const T* c = componentOf<T>(document, node);
+        return c ? read(*c) : 0.0;
+    };
+}
+
+template <class T>
+PropertyForm::FloatSetter writeComponent(Document& document, NodeId node, const Report& report,
+                                         std::function<void(T&, double)> write) {
+    return [&document, node, report, write](double v, std::uint64_t interaction) {
+        const QString error = editComponent(
+            document, node,
+            [&](Component& c) {
+                if (T* t = std::get_if<T>(&c)) write(*t, v);
+            },
+            interaction);
+        if (!error.isEmpty()) report(error);
+    };
+}
+
+// Adds a float field bound to one member of component T.
+template <class T>
+void addComponentFloat(PropertyForm* form, Document& document, NodeId node, const Report& report, const QString& label,
+                       double min, double max, int decimals, float T::*member, double scale = 1.0) {
+    form->addFloat(
+        label, min, max, decimals, readComponent<T>(document, node, [member, scale](const T& c) { return c.*member * scale; }),
+        writeComponent<T>(document, node, report,
+                          [member, scale](T& c, double v) { c.*member = static_cast<float>(v / scale); }));
+}
+
+} // namespace
+
+PropertyForm* makeNodeForm(Document& document, NodeId node, const Report& report, QWidget* parent) {
+    auto* form = new PropertyForm(document, PropertyForm::tr("Node"), parent);
+    form->addText(
+        PropertyForm::tr("Name"),
+        [&document, node] {
+            const Node* n = document.scene().node(node);
+            return n ? QString::fromStdString(n->name) : QString();
+        },
+        [&document, node, report](const QString& name) {
+            const QString error = renameNode(document, node, name);
+            if (!error.isEmpty()) report(error);
+        });
+    form->addCheck(
+        PropertyForm::tr("Visible"),
+        [&document, node] {
+            const Node* n = document.scene().node(node);
+            return n && n->visible;
+        },
+        [&document, node, report](bool on) {
+            const QString error = setVisible(document, node, on);
+            if (!error.isEmpty()) report(error);
+        });
+    return form;
+}
+
+PropertyForm* makeTransformForm(Document& document, NodeId node, const Report& report, QWidget* parent) {
+    auto* form = new PropertyForm(document, PropertyForm::tr("Transform"), parent);
+    auto local = [&document, node] {
+        const Node* n = document.scene().node(node);
+        return n ? n->local : Transform{};
+    };
+    auto edit = [&document, node, report](std::function<void(Transform&)> change, std::uint64_t interaction) {
+        const QString error = editTransform(document, node, change, interaction);
+        if (!error.isEmpty()) report(error);
+    };
+    const char* axes[] = {"X", "Y", "Z"};
+    for (int axis = 0; axis < 3; ++axis) {
+        form->addFloat(
+            PropertyForm::tr("Position %1").arg(axes[axis]), -10.0, 10.0, 3,
+            [local, axis] { return double(local().translation[axis]); },
+            [edit, axis](double v, std::uint64_t i) { edit([&](Transform& t) { t.translation[axis] = float(v); }, i); });
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+        form->addFloat(
+            PropertyForm::tr("Rotation %1 (degrees)").arg(axes[axis]), -180.0, 180.0, 2,
+            [local, axis] { return glm::eulerAngles(local().rotation)[axis] * kDegrees; },
+            [edit, axis](double v, std::uint64_t i) {
+                edit(
+                    [&](Transform& t) {
+                        glm::vec3 euler = glm::eulerAngles(t.rotation);
+                        euler[axis] = float(v / kDegrees);
+                        t.rotation = glm::quat(euler);
+                    },
+                    i);
+            });
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+        form->addFloat(
+            PropertyForm::tr("Scale %1").arg(axes[axis]), 0.01, 10.0, 3, [local, axis] { return double(local().scale[axis]); },
+            [edit, axis](double v, std::uint64_t i) { edit([&](Transform& t) { t.scale[axis] = float(v); }, i); });
+    }
+    return form;
+}
+
+PropertyForm* makeShapeForm(Document& document, NodeId node, const Report& report, QWidget* parent) {
+    auto* form = new PropertyForm(document, PropertyForm::tr("Shape"), parent);
+    form->addChoice(
+        PropertyForm::tr("Kind"),
+        {PropertyForm::tr("Sphere"), PropertyForm::tr("Quad"), PropertyForm::tr("Disk"), PropertyForm::tr("Box"),
+         PropertyForm::tr("Cylinder"), PropertyForm::tr("Ground plane")},
+        [&document, node] {
+            const Shape* s = componentOf<Shape>(document, node);
+            return s ? static_cast<int>(s->kind) : 0;
+        },
+        [&document, node, report](int i) {
+            const QString error = editComponent(
+                document, node,
+                [i](Component& c) {
+                    if (auto* s = std::get_if<Shape>(&c)) s->kind = static_cast<ShapeKind>(i);
+                },
+                0);
+            if (!error.isEmpty()) report(error);
+        });
+    addComponentFloat<Shape>(form, document, node, report, PropertyForm::tr("Radius (m)"), 0.01, 10.0, 3, &Shape::radius);
+    addComponentFloat<Shape>(form, document, node, report, PropertyForm::tr("Height (m)"), 0.01, 10.0, 3, &Shape::height);
+    const char* axes[] = {"X", "Y", "Z"};
+    for (int axis = 0; axis < 3; ++axis) {
+        form->addFloat(PropertyForm::tr("Size %1 (m)").arg(axes[axis]), 0.01, 10.0, 3,
+                       readComponent<Shape>(document, node, [axis](const Shape& s) { return double(s.size[axis]); }),
+                       writeComponent<Shape>(document, node, report,
+                                             [axis](Shape& s, double v) { s.size[axis] = float(v); }));
+    }
+    return form;
+}
+
+PropertyForm* makeLightForm(Document& document, NodeId node, const Report& report, QWidget* parent) {
+    auto* form = new PropertyForm(document, PropertyForm::tr("Light"), parent);
+    const Light* light = componentOf<Light>(document, node);
+    const bool sun = light && light->type == LightType::Sun;
+    form->addChoice(
+        PropertyForm::tr("Type"), {PropertyForm::tr("Sun"), PropertyForm::tr("Point"), PropertyForm::tr("Spot")},
+        [&document, node] {
+            const Light* l = componentOf<Light>(document, node);
+            return l ? static_cast<int>(l->type) : 0;
+        },
+        [&document, node, report](int i) {
+            const QString error = editComponent(
+                document, node,
+                [i](Component& c) {
+                    if (auto* l = std::get_if<Light>(&c)) l->type = static_cast<LightType>(i);
+                },
+                0);
+            if (!error.isEmpty()) report(error);
+        });
+    form->addColor(
+        PropertyForm::tr("Colour"),
+        [&document, node] {
+            const Light* l = componentOf<Light>(document, node);
+            return l ? toQColor(l->color.x, l->color.y, l->color.z) : QColor();
+        },
+        [&document, node, report](const QColor& c) {
+            const QString error = editComponent(
+                document, node,
+                [&](Component& comp) {
+                    if (auto* l = std::get_if<Light>(&comp)) l->color = {c.redF(), c.greenF(), c.blueF()};
+                },
+                0);
+            if (!error.isEmpty()) report(error);
+        });
+    // The file stores photometric units (KHR_lights_punctual); the project's light-unit mode
+    // decides how they become radiance, so the label names both.
+    const bool blender = document.scene().settings.lightUnits == LightUnits::Blender;
+    const QString units = sun ? PropertyForm::tr("lux") : PropertyForm::tr("cd");
+    const QString mode = blender ? PropertyForm::tr("Blender units") : PropertyForm::tr("raw units");
+    addComponentFloat<Light>(form, document, node, report, PropertyForm::tr("Intensity (%1, %2)").arg(units, mode), 0.0,
+                             sun ? 20.0 : 1000.0, 3, &Light::intensity);
+    addComponentFloat<Light>(form, document, node, report, PropertyForm::tr("Range (m, 0 = infinite)"), 0.0, 100.0, 2,
+                             &Light::range);
+    addComponentFloat<Light>(form, document, node, report, PropertyForm::tr("Radius (m)"), 0.0, 2.0, 3, &Light::radius);
+    addComponentFloat<Light>(form, document, node, report, PropertyForm::tr("Inner cone (degrees)"), 0.0, 90.0, 1,
+                             &Light::innerConeAngle, kDegrees);
+    addComponentFloat<Light>(form, document, node, report, PropertyForm::tr("Outer cone (degrees)"), 0.0, 90.0, 1,
+                             &Light::outerConeAngle, kDegrees);
+    addComponentFloat<Light>(form, document, node, report, PropertyForm::tr("Sun angular diameter (degrees)"), 0.0, 10.0,
+                             2, &Light::angularDiameter, kDegrees);
+    return form;
+}
+
+PropertyForm* makeCameraForm(Document& document, NodeId node, const Report& report, QWidget* parent) {
+    auto* form = new PropertyForm(document, PropertyForm::tr("Camera"), parent);
+    form->addChoice(
+        PropertyForm::tr("Projection"), {PropertyForm::tr("Perspective"), PropertyForm::tr("Orthographic")},
+        [&document, node] {
+            const Camera* c = componentOf<Camera>(document, node);
+            return c ? static_cast<int>(c->projection) : 0;
+        },
+        [&document, node, report](int i) {
+            const QString error = editComponent(
+                document, node,
+                [i](Component& c) {
+                    if (auto* cam = std::get_if<Camera>(&c)) cam->projection = static_cast<Projection>(i);
+                },
+                0);
+            if (!error.isEmpty()) report(error);
+        });
+    addComponentFloat<Camera>(form, document, node, report, PropertyForm::tr("Vertical field of view (degrees)"), 1.0,
+                              170.0, 2, &Camera::yfov, kDegrees);
+    addComponentFloat<Camera>(form, document, node, report, PropertyForm::tr("Lens radius (m)"), 0.0, 0.5, 4,
+                              &Camera::lensRadius);
+    addComponentFloat<Camera>(form, document, node, report, PropertyForm::tr("Focus distance (m)"), 0.01, 100.0, 3,
+                              &Camera::focusDistance);
+    addComponentFloat<Camera>(form, document, node, report, PropertyForm::tr("Exposure (EV)"), -10.0, 10.0, 2,
+                              &Camera::exposure);
+    addComponentFloat<Camera>(form, document, node, report, PropertyForm::tr("Near clip (m)"), 0.001, 10.0, 3,
+                              &Camera::znear);
+    form->addCheck(
+        PropertyForm::tr("Active camera"), [&document, node] { return document.scene().settings.activeCamera == node; },
+        [&document, node, report](bool on) {
+            const QString error = editSettings(
+                document, [&](ProjectSettings& s) { s.activeCamera = on ? node : NodeId{}; }, 0);
+            if (!error.isEmpty()) report(error);
+        });
+    return form;
+}
+
+} // namespace glint::editor

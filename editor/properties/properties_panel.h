@@ -1,0 +1,52 @@
+#pragma once
+// The properties dock for the current node: node, transform, its component and its material.
+// The forms are rebuilt only when what they show changes kind (another node, another component
+// or material); otherwise they re-read the document, so a slider being dragged survives the
+// document's changed() signal its own edits cause.
+#include "scene/core/ids.h"
+#include "scene/history/change_set.h"
+
+#include <QScrollArea>
+
+#include <vector>
+
+class QVBoxLayout;
+
+namespace glint::editor {
+
+class Document;
+class PropertyForm;
+
+class PropertiesPanel : public QScrollArea {
+    Q_OBJECT
+public:
+    // scene = true: the environment and render-settings panel instead of the node's.
+    PropertiesPanel(Document& document, bool scene, QWidget* parent = nullptr);
+
+    const std::vector<PropertyForm*>& forms() const { return forms_; }
+
+signals:
+    void message(const QString& text);
+
+private:
+    struct Key {
+        NodeId node;
+        std::size_t component = 0;
+        MaterialId material;
+        int lightType = -1;
+        bool operator==(const Key&) const = default;
+    };
+    Key currentKey() const;
+    void update();
+    void rebuild();
+
+    Document& document_;
+    bool scene_;
+    QWidget* content_ = nullptr;
+    QVBoxLayout* layout_ = nullptr;
+    std::vector<PropertyForm*> forms_;
+    Key shown_;
+    bool built_ = false;
+};
+
+} // namespace glint::editor

@@ -1,0 +1,190 @@
+#include "property_form.h"
+
+#include "editor/document/document.h"
+
+#include <QCheckBox>
+#include <QColorDialog>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QSlider>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+
+namespace glint::editor {
+namespace {
+constexpr int kSliderSteps = 1000;
+}
+
+QColor toQColor(float r, float g, float b) {
+    return QColor::fromRgbF(std::clamp(r, 0.0f, 1.0f), std::clamp(g, 0.0f, 1.0f), std::clamp(b, 0.0f, 1.0f));
+}
+
+FloatField::FloatField(double min, double max, int decimals, QWidget* parent)
+    : QWidget(parent), min_(min), max_(max) {
+    slider_ = new QSlider(Qt::Horizontal, this);
+    slider_->setRange(0, kSliderSteps);
+    spin_ = new QDoubleSpinBox(this);
+    spin_->setDecimals(decimals);
+    spin_->setRange(-1e9, 1e9); // typing may go past the slider's range
+    spin_->setSingleStep((max - min) / 100.0);
+    spin_->setKeyboardTracking(false);
+    auto* layout = new QHBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(slider_, 2);
+    layout->addWidget(spin_, 1);
+
+    connect(slider_, &QSlider::sliderPressed, this, &FloatField::dragStarted);
+    connect(slider_, &QSlider::sliderReleased, this, &FloatField::dragFinished);
+    connect(slider_, &QSlider::valueChanged, this, [this](int position) {
+        if (updating_) return;
+        const double v = fromSlider(position);
+        {
+            QSignalBlocker block(spin_);
+            spin_->setValue(v);
+        }
+        emit edited(v);
+    });
+    connect(spin_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        if (updating_) return;
+        {
+            QSignalBlocker block(slider_);
+            slider_->setValue(toSlider(v));
+        }
+        emit edited(v);
+    });
+}
+
+int FloatField::toSlider(double value) const {
+    const double t = (value - min_) / (max_ - min_);
+    return static_cast<int>(std::lround(std::clamp(t, 0.0, 1.0) * kSliderSteps));
+}
+
+double FloatField::fromSlider(int position) const { return min_ + (max_ - min_) * position / kSliderSteps; }
+
+void FloatField::setValue(double value) {
+    updating_ = true;
+    if (!slider_->isSliderDown()) slider_->setValue(toSlider(value));
+    spin_->setValue(value);
+    updating_ = false;
+}
+
+double FloatField::value() const { return spin_->value(); }
+
+ColorField::ColorField(QWidget* parent) : QWidget(parent) {
+    button_ = new QPushButton(this);
+    button_->setMinimumWidth(60);
+    auto* layout = new QHBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(button_);
+    layout->addStretch();
+    connect(button_, &QPushButton::clicked, this, &ColorField::pick);
+}
+
+void ColorField::setColor(const QColor& color) {
+    color_ = color;
+    button_->setStyleSheet(QStringLiteral("background-color: %1").arg(color.name()));
+    button_->setToolTip(QStringLiteral("%1, %2, %3").arg(color.redF(), 0, 'f', 3).arg(color.greenF(), 0, 'f', 3).arg(color.blueF(), 0, 'f', 3));
+}
+
+void ColorField::pick() {
+    const QColor chosen = QColorDialog::getColor(color_, this, tr("Choose a colour"));
+    if (!chosen.isValid() || chosen == color_) return;
+    setColor(chosen);
+    emit edited(chosen);
+}
+
+PropertyForm::PropertyForm(Document& document, const QString& title, QWidget* parent)
+    : QWidget(parent), document_(document) {
+    auto* box = new QGroupBox(title, this);
+    layout_ = new QFormLayout(box);
+    layout_->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    auto* outer = new QVBoxLayout(this);
+    outer->setContentsMargins(0, 0, 0, 0);
+    outer->addWidget(box);
+}
+
+void PropertyForm::addWidget(const QString& label, QWidget* widget, std::function<void()> refresh) {
+    widget->setAccessibleName(label);
+    layout_->addRow(label, widget);
+    if (refresh) {
+        refresh();
+        refreshers_.push_back(std::move(refresh));
+    }
+}
+
+FloatField* PropertyForm::addFloat(const QString& label, double min, double max, int decimals,
+                                   std::function<double()> get, FloatSetter set) {
+    auto* field = new FloatField(min, max, decimals, this);
+    field->slider()->setAccessibleName(label);
+    field->spinBox()->setAccessibleName(label);
+    // The drag's serial lives with the field: every value of one drag carries it.
+    auto interaction = std::make_shared<std::uint64_t>(0);
+    connect(field, &FloatField::dragStarted, this, [this, interaction] { *interaction = document_.beginInteraction(); });
+    connect(field, &FloatField::dragFinished, this, [interaction] { *interaction = 0; });
+    connect(field, &FloatField::edited, this, [set, interaction](double v) { set(v, *interaction); });
+    addWidget(label, field, [field, get] { field->setValue(get()); });
+    return field;
+}
+
+ColorField* PropertyForm::addColor(const QString& label, std::function<QColor()> get,
+                                   std::function<void(const QColor&)> set) {
+    auto* field = new ColorField(this);
+    connect(field, &ColorField::edited, this, [set](const QColor& c) { set(c); });
+    addWidget(label, field, [field, get] { field->setColor(get()); });
+    return field;
+}
+
+void PropertyForm::addCheck(const QString& label, std::function<bool()> get, std::function<void(bool)> set) {
+    auto* box = new QCheckBox(this);
+    connect(box, &QCheckBox::toggled, this, [set](bool on) { set(on); });
+    addWidget(label, box, [box, get] {
+        QSignalBlocker block(box);
+        box->setChecked(get());
+    });
+}
+
+void PropertyForm::addChoice(const QString& label, const QStringList& items, std::function<int()> get,
+                             std::function<void(int)> set) {
+    auto* combo = new QComboBox(this);
+    combo->addItems(items);
+    connect(combo, &QComboBox::activated, this, [set](int i) { set(i); });
+    addWidget(label, combo, [combo, get] {
+        QSignalBlocker block(combo);
+        combo->setCurrentIndex(get());
+    });
+}
+
+void PropertyForm::addText(const QString& label, std::function<QString()> get, std::function<void(const QString&)> set) {
+    auto* edit = new QLineEdit(this);
+    connect(edit, &QLineEdit::editingFinished, this, [edit, set] { set(edit->text()); });
+    addWidget(label, edit, [edit, get] {
+        if (!edit->hasFocus()) edit->setText(get());
+    });
+}
+
+void PropertyForm::addInt(const QString& label, int min, int max, std::function<int()> get, std::function<void(int)> set) {
+    auto* spin = new QSpinBox(this);
+    spin->setRange(min, max);
+    spin->setKeyboardTracking(false);
+    connect(spin, &QSpinBox::valueChanged, this, [set](int v) { set(v); });
+    addWidget(label, spin, [spin, get] {
+        QSignalBlocker block(spin);
+        spin->setValue(get());
+    });
+}
+
+void PropertyForm::refresh() {
+    for (const auto& r : refreshers_) r();
+}
+
+} // namespace glint::editor

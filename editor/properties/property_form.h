@@ -1,0 +1,93 @@
+#pragma once
+// One line per field (Tungsten's PropertyForm::addFloatProperty): a label, an editor, a getter
+// that reads the document and a setter that pushes a command. refresh() re-reads every getter,
+// so undo and redo show up in every panel. A slider drag takes one History interaction serial,
+// so the whole drag merges into one undo step.
+#include <QColor>
+#include <QWidget>
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+class QFormLayout;
+class QSlider;
+class QDoubleSpinBox;
+class QPushButton;
+
+namespace glint::editor {
+
+class Document;
+
+// A float edited with a slider and a spin box side by side.
+class FloatField : public QWidget {
+    Q_OBJECT
+public:
+    FloatField(double min, double max, int decimals, QWidget* parent = nullptr);
+    void setValue(double value); // from the document: emits nothing
+    double value() const;
+    QSlider* slider() const { return slider_; }
+    QDoubleSpinBox* spinBox() const { return spin_; }
+
+signals:
+    void dragStarted();
+    void edited(double value); // while dragging and after typing
+    void dragFinished();
+
+private:
+    int toSlider(double value) const;
+    double fromSlider(int position) const;
+
+    QSlider* slider_ = nullptr;
+    QDoubleSpinBox* spin_ = nullptr;
+    double min_;
+    double max_;
+    bool updating_ = false;
+};
+
+// A colour swatch; clicking opens a colour dialog. Colours are linear RGB in [0, 1].
+class ColorField : public QWidget {
+    Q_OBJECT
+public:
+    explicit ColorField(QWidget* parent = nullptr);
+    void setColor(const QColor& color);
+    QColor color() const { return color_; }
+
+signals:
+    void edited(const QColor& color);
+
+private:
+    void pick();
+    QPushButton* button_ = nullptr;
+    QColor color_;
+};
+
+class PropertyForm : public QWidget {
+    Q_OBJECT
+public:
+    // `interaction` is the drag's serial, or 0 for a one-off edit.
+    using FloatSetter = std::function<void(double value, std::uint64_t interaction)>;
+
+    PropertyForm(Document& document, const QString& title, QWidget* parent = nullptr);
+
+    FloatField* addFloat(const QString& label, double min, double max, int decimals, std::function<double()> get,
+                         FloatSetter set);
+    ColorField* addColor(const QString& label, std::function<QColor()> get, std::function<void(const QColor&)> set);
+    void addCheck(const QString& label, std::function<bool()> get, std::function<void(bool)> set);
+    void addChoice(const QString& label, const QStringList& items, std::function<int()> get, std::function<void(int)> set);
+    void addText(const QString& label, std::function<QString()> get, std::function<void(const QString&)> set);
+    void addInt(const QString& label, int min, int max, std::function<int()> get, std::function<void(int)> set);
+    void addWidget(const QString& label, QWidget* widget, std::function<void()> refresh);
+
+    void refresh();
+
+private:
+    Document& document_;
+    QFormLayout* layout_ = nullptr;
+    std::vector<std::function<void()>> refreshers_;
+};
+
+// Linear colour <-> QColor (the swatches show the stored values, like glTF's factors).
+QColor toQColor(float r, float g, float b);
+
+} // namespace glint::editor
