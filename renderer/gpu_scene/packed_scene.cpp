@@ -24,7 +24,8 @@ void packLight(PackedScene& out, const Light& light, const glm::mat4& worldFromL
     const glm::vec3 position(worldFromLight[3]);
     const glm::vec3 shine = glm::normalize(glm::vec3(worldFromLight * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f)));
     const float cosSunRadius = light.angularDiameter > 0.0f ? std::cos(0.5f * light.angularDiameter) : 1.0f;
-    out.lights.push_back({static_cast<float>(light.type), 0.0f, 0.0f, 0.0f});
+    const float radius = light.type == LightType::Sun ? 0.0f : std::max(light.radius, 0.0f);
+    out.lights.push_back({static_cast<float>(light.type), radius, 0.0f, 0.0f});
     out.lights.push_back(glm::vec4(radiometricIntensity(light, units), cosSunRadius));
     out.lights.push_back(glm::vec4(position, std::cos(light.outerConeAngle)));
     out.lights.push_back(glm::vec4(shine, std::cos(light.innerConeAngle)));

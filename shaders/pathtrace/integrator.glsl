@@ -43,7 +43,8 @@ ShadowCandidate punctualCandidate(Vertex v, int light, INOUT(Rng) rng) {
     LightSample ls = sampleLight(light, v.position, rand2(rng));
     float pdf;
     vec3 f = bsdfEval(v.material, v.wo, localFromWorld(v.frame, ls.direction), pdf);
-    return ShadowCandidate(ls.direction, ls.distance, f * ls.irradiance);
+    float misWeight = ls.pdf > 0.0 ? powerHeuristic(ls.pdf, pdf) : 1.0; // sun disks: BSDF rays see them too
+    return ShadowCandidate(ls.direction, ls.distance, f * ls.irradiance * misWeight);
 }
 
 // One emissive triangle, weighted against BSDF sampling by the power heuristic. The shadow ray stops
@@ -107,7 +108,8 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng) {
         Hit hit = traceClosest(ray);
         if (hit.material < 0) {
             vec3 environment = environmentRadiance(ray.direction);
-            result.radiance += throughput * environment * environmentMisWeight(ray.direction, lastBsdfPdf);
+            result.radiance += throughput * (environment * environmentMisWeight(ray.direction, lastBsdfPdf) +
+                                             sunDiskRadiance(ray.direction, lastBsdfPdf, depth == 0));
             if (depth == 0) result.albedo = environment;
             break;
         }

@@ -1,6 +1,11 @@
-// Next-event estimation to the sun, point and spot lights (delta lights: no MIS partner). Light
-// buffer texels: 0 type; 1 rgb intensity (W/m^2 sun, W/sr point/spot), cos of the sun's angular
-// radius; 2 position, cos outer cone; 3 direction the light shines along, cos inner cone.
+// Next-event estimation to the sun, point and spot lights. Light buffer texels: 0 type, radius
+// (metres, point/spot; 0: a delta light); 1 rgb intensity (W/m^2 sun, W/sr point/spot), cos of the
+// sun's angular radius; 2 position, cos outer cone; 3 direction the light shines along, cos inner cone.
+// - A sun with an angular diameter is a disk of uniform radiance E / (solid angle) that camera and
+//   BSDF-sampled rays see (sunDiskRadiance), weighted against light sampling by MIS.
+// - A point or spot light with a radius is a sphere of uniform radiance I / (pi r^2) (the same
+//   intensity far away), sampled by the cone it subtends: soft shadows. Rays do not hit the sphere
+//   (no highlight of its shape in mirrors), as for delta lights.
 const int LIGHT_SUN = 0;
 const int LIGHT_POINT = 1;
 const int LIGHT_SPOT = 2;
@@ -9,7 +14,11 @@ struct LightSample {
     vec3 direction; // towards the light
     float distance;
     vec3 irradiance; // at a surface facing the light (before cos)
+    float pdf;       // solid angle, for MIS with BSDF sampling; 0: nothing else finds this light
 };
+
+// 1 - cos(asin(sqrt(sin2))) without cancellation for small sin2.
+float oneMinusCosFromSin2(float sin2) { return sin2 / (1.0 + sqrt(max(1.0 - sin2, 0.0))); }
 
 // KHR_lights_punctual's recommended smooth spot falloff.
 float spotFalloff(vec3 shineDirection, vec3 toSurface, float cosOuter, float cosInner) {
@@ -24,14 +33,43 @@ LightSample sampleLight(int light, vec3 p, vec2 u) {
     vec4 position = lightTexel(light, 2);
     vec4 shine = lightTexel(light, 3);
     if (type == LIGHT_SUN) {
-        vec3 towardsSun = intensity.w < 1.0 ? worldFromLocal(frameFromNormal(-shine.xyz), uniformCone(u, intensity.w)) : -shine.xyz;
-        return LightSample(towardsSun, RAY_MAX, intensity.rgb);
+        if (!(intensity.w < 1.0)) return LightSample(-shine.xyz, RAY_MAX, intensity.rgb, 0.0);
+        vec3 towardsSun = worldFromLocal(frameFromNormal(-shine.xyz), uniformCone(u, intensity.w));
+        return LightSample(towardsSun, RAY_MAX, intensity.rgb, uniformConePdf(intensity.w));
     }
     vec3 offset = position.xyz - p;
     float distance2 = max(dot(offset, offset), 1e-12);
     float distance = sqrt(distance2);
     vec3 direction = offset / distance;
-    vec3 irradiance = intensity.rgb / distance2;
-    if (type == LIGHT_SPOT) irradiance *= spotFalloff(shine.xyz, -direction, position.w, shine.w);
-    return LightSample(direction, distance, irradiance);
+    float falloff = type == LIGHT_SPOT ? spotFalloff(shine.xyz, -direction, position.w, shine.w) : 1.0;
+    float radius = lightTexel(light, 0).y;
+    if (!(radius > 0.0) || distance2 <= radius * radius) return LightSample(direction, distance, falloff * intensity.rgb / distance2, 0.0);
+    // The sphere's cone: irradiance = L x solid angle, L = I / (pi r^2).
+    float sin2 = radius * radius / distance2;
+    float oneMinusCos = oneMinusCosFromSin2(sin2);
+    vec3 towards = worldFromLocal(frameFromNormal(direction), uniformCone(u, 1.0 - oneMinusCos));
+    float along = dot(towards, offset);
+    float t = along - sqrt(max(radius * radius - (distance2 - along * along), 0.0));
+    vec3 radiance = falloff * intensity.rgb / (PI * radius * radius);
+    return LightSample(towards, max(t, 0.0), radiance * (TWO_PI * oneMinusCos), 0.0);
+}
+
+// Radiance of the suns' disks in `direction`, for rays that left a surface by BSDF sampling with
+// `bsdfPdf` (power heuristic against the sun's cone sampling). With bsdfPdf 0 (a delta lobe, which
+// light sampling cannot produce, or a camera ray) the disk counts only for camera rays: a sun of a
+// degree or less has a radiance of 10^3..10^5, and its image in a curved mirror or glass is a
+// sub-pixel spot that a unidirectional tracer finds by chance; test_render_statistics' convergence
+// check on a scene with a chrome and a glass sphere fails with it. That is a bias: no sun in
+// mirrors or glass, and no sun caustics (as before disks were seen at all).
+vec3 sunDiskRadiance(vec3 direction, float bsdfPdf, bool cameraRay) {
+    if (!(bsdfPdf > 0.0) && !cameraRay) return vec3(0.0);
+    vec3 sum = vec3(0.0);
+    for (int light = 0; light < uLightCount; ++light) {
+        vec4 intensity = lightTexel(light, 1);
+        if (int(lightTexel(light, 0).x) != LIGHT_SUN || !(intensity.w < 1.0)) continue;
+        if (dot(direction, -lightTexel(light, 3).xyz) < intensity.w) continue;
+        float pdf = uniformConePdf(intensity.w);
+        sum += intensity.rgb * pdf * (bsdfPdf > 0.0 ? powerHeuristic(bsdfPdf, pdf) : 1.0);
+    }
+    return sum;
 }
