@@ -20,6 +20,7 @@ void configureParser(CLI::App& app, Action& action) {
     addInfoCommand(app, action);
     addConvertCommand(app, action);
     addRenderCommand(app, action);
+    addBenchCommand(app, action);
 }
 
 // CLI11 messages are already specific ("The following argument was not expected: --x");

@@ -1,0 +1,95 @@
+#include "speed_accuracy_chart.h"
+
+#include <QtCharts/QChart>
+#include <QtCharts/QChartView>
+#include <QtCharts/QLegend>
+#include <QtCharts/QLineSeries>
+#include <QtCharts/QLogValueAxis>
+#include <QtCharts/QScatterSeries>
+#include <QImage>
+#include <QPainter>
+#include <QSvgGenerator>
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+namespace glint::bench {
+namespace {
+
+constexpr int chartWidth = 900;
+constexpr int chartHeight = 600;
+
+QLogValueAxis* logAxis(const QString& title, double low, double high) {
+    auto* axis = new QLogValueAxis;
+    axis->setTitleText(title);
+    axis->setBase(10.0);
+    axis->setLabelFormat("%g");
+    axis->setMinorTickCount(8);
+    axis->setRange(low, high);
+    return axis;
+}
+
+// Chart and view own each other's parts; the view owns the chart.
+QChartView* buildChart(const std::vector<ChartCurve>& curves, const std::string& title) {
+    auto* chart = new QChart;
+    chart->setTitle(QString::fromStdString(title));
+    chart->setAnimationOptions(QChart::NoAnimation);
+    double minMs = std::numeric_limits<double>::max(), maxMs = 0.0;
+    double minErr = std::numeric_limits<double>::max(), maxErr = 0.0;
+    for (const ChartCurve& curve : curves) {
+        auto* line = new QLineSeries;
+        line->setName(QString::fromStdString(curve.name));
+        for (const ChartPoint& p : curve.points) {
+            if (p.ms <= 0.0 || p.relmse <= 0.0) continue; // log axes
+            line->append(p.ms, p.relmse);
+            minMs = std::min(minMs, p.ms);
+            maxMs = std::max(maxMs, p.ms);
+            minErr = std::min(minErr, p.relmse);
+            maxErr = std::max(maxErr, p.relmse);
+        }
+        chart->addSeries(line);
+    }
+    if (maxMs <= 0.0) minMs = 1.0, maxMs = 10.0, minErr = 1e-3, maxErr = 1.0;
+    QLogValueAxis* x = logAxis("time (ms, cumulative)", minMs / 1.5, maxMs * 1.5);
+    QLogValueAxis* y = logAxis("relMSE against the reference", minErr / 1.5, maxErr * 1.5);
+    chart->addAxis(x, Qt::AlignBottom);
+    chart->addAxis(y, Qt::AlignLeft);
+    for (QAbstractSeries* s : chart->series()) {
+        s->attachAxis(x);
+        s->attachAxis(y);
+    }
+    chart->legend()->setAlignment(Qt::AlignRight);
+    auto* view = new QChartView(chart);
+    view->setRenderHint(QPainter::Antialiasing);
+    view->resize(chartWidth, chartHeight);
+    return view;
+}
+
+} // namespace
+
+void writeSpeedAccuracyChart(const std::vector<ChartCurve>& curves, const std::string& title,
+                             const std::string& pngPath, const std::string& svgPath) {
+    std::unique_ptr<QChartView> view(buildChart(curves, title));
+    QImage image(chartWidth, chartHeight, QImage::Format_ARGB32);
+    image.fill(Qt::white);
+    {
+        QPainter painter(&image);
+        painter.setRenderHint(QPainter::Antialiasing);
+        view->render(&painter);
+    }
+    if (!image.save(QString::fromStdString(pngPath), "PNG")) throw std::runtime_error("cannot write " + pngPath);
+
+    QSvgGenerator svg;
+    svg.setFileName(QString::fromStdString(svgPath));
+    svg.setSize(QSize(chartWidth, chartHeight));
+    svg.setViewBox(QRect(0, 0, chartWidth, chartHeight));
+    svg.setTitle(QString::fromStdString(title));
+    {
+        QPainter painter;
+        if (!painter.begin(&svg)) throw std::runtime_error("cannot write " + svgPath);
+        view->render(&painter);
+    }
+}
+
+} // namespace glint::bench

@@ -1,0 +1,263 @@
+// glint bench SCENE: for each configuration, N frames of a still view, timed per frame (median and
+// spread, finished on the GPU) and compared with a converged reference (relMSE, SSIM as CONTRACTS.md
+// defines them). Writes bench.csv, bench.json and the speed-vs-accuracy chart (PNG + SVG), and
+// prints the table. Headless: the chart is drawn on Qt's offscreen platform, set only here.
+#include "command.h"
+#include "common_options.h"
+#include "exit_codes.h"
+#include "render_setup.h"
+#include "report.h"
+#include "scene_file.h"
+
+#include "image_metrics.h"
+#include "speed_accuracy_chart.h"
+
+#include "renderer/frame_renderer.h"
+#include "renderer/gl/headless_context.h"
+
+#include <QApplication>
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+namespace glint::cli {
+namespace {
+
+struct BenchOptions {
+    std::string scene;
+    std::vector<std::string> configs{"baseline", "realistic", "full", "heavy", "accumulate"};
+    int frames = 32;
+    Size size{128, 128};
+    std::string out = "bench";
+    std::optional<int> spp;
+    std::uint32_t seed = 0;
+    std::optional<int> bounces;
+    std::string camera;
+    int referenceSpp = 1024;
+};
+
+struct BenchRow {
+    renderer::Configuration config{};
+    int spp = 1, bounces = 0, frames = 0;
+    double msMedian = 0, msP10 = 0, msP90 = 0, relmse = 0, ssim = 0;
+    bench::ChartCurve curve;
+};
+
+using Clock = std::chrono::steady_clock;
+
+double percentile(std::vector<double> values, double q) {
+    std::sort(values.begin(), values.end());
+    const double index = q * static_cast<double>(values.size() - 1);
+    const auto low = static_cast<std::size_t>(index);
+    const std::size_t high = std::min(low + 1, values.size() - 1);
+    return values[low] + (values[high] - values[low]) * (index - static_cast<double>(low));
+}
+
+renderer::FrameSettings settingsFor(const BenchOptions& o, const Scene& scene, renderer::Configuration config) {
+    renderer::FrameSettings s;
+    s.configuration = config;
+    s.spp = o.spp.value_or(0);
+    s.bounces = o.bounces.value_or(scene.settings.render.bounces);
+    s.seed = o.seed;
+    s.width = o.size.width;
+    s.height = o.size.height;
+    return s;
+}
+
+// The converged image every configuration is measured against (another seed than the runs).
+std::vector<float> renderReference(renderer::FrameRenderer& frames, const BenchOptions& o, const Scene& scene) {
+    renderer::FrameSettings s = settingsFor(o, scene, renderer::Configuration::Reference);
+    s.spp = o.referenceSpp;
+    s.seed = o.seed + 0x9e3779b9u;
+    frames.setSettings(s);
+    frames.resetHistory();
+    frames.renderFrame();
+    return frames.readImages().radiance;
+}
+
+// Errors are sampled at frames 1, 2, 4, ... and the last one (reading back costs time not counted).
+bool sampledFrame(int frame, int last) { return frame == last || (frame & (frame - 1)) == 0; }
+
+BenchRow runConfiguration(renderer::FrameRenderer& frames, const BenchOptions& o, const Scene& scene,
+                          renderer::Configuration config, const std::vector<float>& reference) {
+    const renderer::FrameSettings s = settingsFor(o, scene, config);
+    frames.setSettings(s);
+    frames.resetHistory();
+    frames.renderFrame(); // warm-up: shader compilation is not a frame time
+    glFinish();
+    frames.resetHistory();
+    BenchRow row;
+    row.config = config;
+    row.spp = s.spp > 0 ? s.spp : renderer::traitsOf(config).sppPerFrame;
+    row.bounces = renderer::traitsOf(config).gi ? s.bounces : 0;
+    row.frames = o.frames;
+    row.curve.name = std::string(renderer::configurationName(config));
+    std::vector<double> ms;
+    double total = 0.0;
+    std::vector<float> last;
+    for (int f = 1; f <= o.frames; ++f) {
+        const auto start = Clock::now();
+        frames.renderFrame();
+        glFinish();
+        ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+        total += ms.back();
+        if (!sampledFrame(f, o.frames)) continue;
+        last = frames.readImages().radiance;
+        row.curve.points.push_back({total, bench::relMse(last, reference)});
+    }
+    row.msMedian = percentile(ms, 0.5);
+    row.msP10 = percentile(ms, 0.1);
+    row.msP90 = percentile(ms, 0.9);
+    row.relmse = bench::relMse(last, reference);
+    row.ssim = bench::ssim(last, reference, o.size.width, o.size.height);
+    return row;
+}
+
+const char* yesNo(bool b) { return b ? "yes" : "no"; }
+
+std::string csvLine(const BenchRow& r) {
+    const auto t = renderer::traitsOf(r.config);
+    std::string line = std::string(renderer::configurationName(r.config));
+    for (const std::string& v : {std::to_string(r.spp), std::to_string(r.bounces), std::string(yesNo(t.gi)),
+                                 std::string(yesNo(t.ao)), std::string(yesNo(t.taa)), std::string(yesNo(t.svgf)),
+                                 std::to_string(r.frames), formatNumber(r.msMedian), formatNumber(r.msP10),
+                                 formatNumber(r.msP90), formatNumber(1000.0 / r.msMedian), formatNumber(r.relmse),
+                                 formatNumber(r.ssim)})
+        line += "," + v;
+    return line;
+}
+
+const char* kColumns = "config,spp,bounces,gi,ao,taa,svgf,frames,ms_median,ms_p10,ms_p90,fps,relmse,ssim";
+
+void writeCsv(const std::filesystem::path& file, const std::vector<BenchRow>& rows) {
+    std::ofstream out(file, std::ios::binary);
+    out << kColumns << "\n";
+    for (const BenchRow& r : rows) out << csvLine(r) << "\n";
+    if (!out) throw std::runtime_error("cannot write " + file.string());
+}
+
+void writeJson(const std::filesystem::path& file, const std::vector<BenchRow>& rows) {
+    std::ofstream out(file, std::ios::binary);
+    out << "[\n";
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        const auto t = renderer::traitsOf(rows[i].config);
+        const BenchRow& r = rows[i];
+        out << "  {\"config\": \"" << renderer::configurationName(r.config) << "\", \"spp\": " << r.spp
+            << ", \"bounces\": " << r.bounces << ", \"gi\": " << (t.gi ? "true" : "false")
+            << ", \"ao\": " << (t.ao ? "true" : "false") << ", \"taa\": " << (t.taa ? "true" : "false")
+            << ", \"svgf\": " << (t.svgf ? "true" : "false") << ", \"frames\": " << r.frames
+            << ", \"ms_median\": " << formatNumber(r.msMedian) << ", \"ms_p10\": " << formatNumber(r.msP10)
+            << ", \"ms_p90\": " << formatNumber(r.msP90) << ", \"fps\": " << formatNumber(1000.0 / r.msMedian)
+            << ", \"relmse\": " << formatNumber(r.relmse) << ", \"ssim\": " << formatNumber(r.ssim) << "}"
+            << (i + 1 < rows.size() ? ",\n" : "\n");
+    }
+    out << "]\n";
+    if (!out) throw std::runtime_error("cannot write " + file.string());
+}
+
+void printTable(const std::vector<BenchRow>& rows) {
+    std::printf("%-11s %4s %-6s %-8s %9s %7s %9s %7s\n", "config", "spp", "GI/AO", "TAA/SVGF", "ms/frame", "fps",
+                "relMSE", "SSIM");
+    for (const BenchRow& r : rows) {
+        const auto t = renderer::traitsOf(r.config);
+        const std::string giAo = std::string(t.gi ? "GI" : "-") + "/" + (t.ao ? "AO" : "-");
+        const std::string filters = std::string(t.taa ? "TAA" : "-") + "/" + (t.svgf ? "SVGF" : "-");
+        std::printf("%-11s %4d %-6s %-8s %9s %7s %9s %7s\n", std::string(renderer::configurationName(r.config)).c_str(),
+                    r.spp, giAo.c_str(), filters.c_str(), formatNumber(std::round(r.msMedian * 100) / 100).c_str(),
+                    formatNumber(std::round(1000.0 / r.msMedian * 10) / 10).c_str(),
+                    formatNumber(std::round(r.relmse * 1e5) / 1e5).c_str(), formatNumber(std::round(r.ssim * 1e4) / 1e4).c_str());
+    }
+}
+
+void drawChart(const std::vector<BenchRow>& rows, const std::filesystem::path& dir, const std::string& title) {
+    qputenv("QT_QPA_PLATFORM", "offscreen"); // charts only; bench opens no window
+    int argc = 1;
+    char name[] = "glint";
+    char* argv[] = {name, nullptr};
+    QApplication app(argc, argv);
+    std::vector<bench::ChartCurve> curves;
+    for (const BenchRow& r : rows) curves.push_back(r.curve);
+    bench::writeSpeedAccuracyChart(curves, title, (dir / "speed_accuracy.png").string(), (dir / "speed_accuracy.svg").string());
+}
+
+std::vector<renderer::Configuration> parseConfigs(const std::vector<std::string>& names) {
+    std::vector<renderer::Configuration> configs;
+    for (const std::string& n : names) {
+        const auto c = renderer::parseConfiguration(n);
+        if (!c) throw CLI::ValidationError("--config", "unknown configuration '" + n + "'");
+        configs.push_back(*c);
+    }
+    return configs;
+}
+
+int runBench(const BenchOptions& o) {
+    LoadResult loaded = openSceneFile(o.scene);
+    if (reportWarnings(loaded.warnings, false)) return kFailure;
+    const Scene& scene = loaded.scene;
+    const std::filesystem::path dir(o.out);
+    std::filesystem::create_directories(dir);
+    std::vector<BenchRow> rows;
+    {
+        gl::HeadlessContext context;
+        std::fprintf(stderr, "glint: GL_RENDERER: %s\n", context.renderer().c_str());
+        renderer::FrameRenderer frames;
+        const std::string envFile = scene.settings.environment.file;
+        frames.setScene(scene, envFile.empty() ? std::filesystem::path() : std::filesystem::path(o.scene).parent_path() / envFile);
+        frames.setSettings(settingsFor(o, scene, renderer::Configuration::Reference));
+        frames.useSceneCamera(o.camera);
+        std::fprintf(stderr, "glint: reference: %d spp\n", o.referenceSpp);
+        const std::vector<float> reference = renderReference(frames, o, scene);
+        for (const renderer::Configuration c : parseConfigs(o.configs)) {
+            std::fprintf(stderr, "glint: %s: %d frames\n", std::string(renderer::configurationName(c)).c_str(), o.frames);
+            rows.push_back(runConfiguration(frames, o, scene, c, reference));
+        }
+    }
+    writeCsv(dir / "bench.csv", rows);
+    writeJson(dir / "bench.json", rows);
+    drawChart(rows, dir, std::filesystem::path(o.scene).filename().string() + ", " + std::to_string(o.size.width) + "x" +
+                             std::to_string(o.size.height) + ": error vs time");
+    printTable(rows);
+    std::fprintf(stderr, "glint: wrote %s/bench.csv, bench.json, speed_accuracy.png, speed_accuracy.svg\n", o.out.c_str());
+    return kSuccess;
+}
+
+} // namespace
+
+void addBenchCommand(CLI::App& app, Action& action) {
+    auto o = std::make_shared<BenchOptions>();
+    CLI::App* cmd = app.add_subcommand("bench", "Time each configuration and measure its error against a converged "
+                                                "reference; writes CSV, JSON and the speed-vs-accuracy chart.");
+    cmd->add_option("SCENE", o->scene, "Scene: .gltf, .glb or .glint.json")->required();
+    cmd->add_option("--config", o->configs, "Configurations, comma-separated, case-insensitive (default: "
+                                            "baseline,realistic,full,heavy,accumulate)")
+        ->delimiter(',');
+    cmd->add_option("--frames", o->frames, "Frames per configuration, still camera (default: 32)")->check(CLI::Range(1, 100000));
+    cmd->add_option_function<std::string>("--size", [o](const std::string& s) { o->size = parseSize(s); },
+                                          "Image size WxH (default: 128x128)");
+    cmd->add_option("--out", o->out, "Output folder for bench.csv, bench.json, speed_accuracy.png/.svg (default: bench)");
+    cmd->add_option("--spp", o->spp, "Samples per pixel per frame (default: each configuration's own)")->check(CLI::Range(1, 1 << 16));
+    cmd->add_option("--seed", o->seed, "Random seed (default: 0)");
+    cmd->add_option("--bounces", o->bounces, "Maximum bounces (default: the project's)")->check(CLI::Range(0, 63));
+    cmd->add_option("--camera", o->camera, "Camera by glTF node name, else camera name (default: the active camera)");
+    cmd->add_option("--reference-spp", o->referenceSpp, "Samples per pixel of the reference (default: 1024)")
+        ->check(CLI::Range(1, 1 << 20));
+    cmd->callback([&action, o] {
+        parseConfigs(o->configs); // usage errors before any work
+        action = [o] {
+            try {
+                return runBench(*o);
+            } catch (const std::exception& e) {
+                std::fprintf(stderr, "glint: %s: %s\n", o->scene.c_str(), e.what());
+                return static_cast<int>(kFailure);
+            }
+        };
+    });
+}
+
+} // namespace glint::cli
