@@ -1,5 +1,7 @@
 #include "render_setup.h"
 
+#include "renderer/gpu_scene/camera_setup.h"
+
 #include <charconv>
 #include <cstdio>
 #include <filesystem>
@@ -8,6 +10,15 @@
 namespace glint::cli {
 
 namespace {
+
+const char* tonemapperName(Tonemapper t) {
+    switch (t) {
+    case Tonemapper::AcesFitted: return "aces";
+    case Tonemapper::PbrNeutral: return "neutral";
+    case Tonemapper::None: break;
+    }
+    return "none";
+}
 
 std::optional<Tonemapper> tonemapperFromName(const std::optional<std::string>& name) {
     if (!name) return std::nullopt;
@@ -35,6 +46,13 @@ renderer::Configuration configurationOf(const Scene& scene, const CommonRenderOp
 
 } // namespace
 
+void sealSettings(RenderPlan& plan) {
+    std::string canonical;
+    for (const auto& [k, v] : plan.metadata)
+        if (k != "settingsHash" && k != "renderTimeMs" && k != "version") canonical += k + "=" + v + ";";
+    plan.metadata["settingsHash"] = hashHex(canonical);
+}
+
 std::string formatNumber(double value) {
     char buf[32];
     auto [end, ec] = std::to_chars(buf, buf + sizeof buf, value);
@@ -60,16 +78,20 @@ RenderPlan planRender(const Scene& scene, const std::string& sceneFile, const Co
 
     r.configuration = configurationOf(scene, o);
     const std::string config(renderer::configurationName(r.configuration));
+    const Tonemapper tonemapper = r.tonemapper.value_or(project.tonemapper);
+    // The camera's own exposure is part of what the PNG shows and what `glint encode` applies to EXRs.
+    const float cameraExposure = renderer::resolveCamera(scene, r.cameraName, r.width, r.height).exposure;
     plan.metadata = {{"scene", std::filesystem::path(sceneFile).filename().string()},
                      {"camera", r.cameraName.empty() ? "(active)" : r.cameraName},
                      {"spp", std::to_string(r.spp)},
                      {"seed", std::to_string(r.seed)},
-                     {"configuration", config}};
-    std::string canonical;
-    for (const auto& [k, v] : plan.metadata) canonical += k + "=" + v + ";";
-    canonical += "size=" + std::to_string(r.width) + "x" + std::to_string(r.height) + ";bounces=" +
-                 std::to_string(r.bounces) + ";env=" + r.envFile.string();
-    plan.metadata["settingsHash"] = hashHex(canonical);
+                     {"configuration", config},
+                     {"size", std::to_string(r.width) + "x" + std::to_string(r.height)},
+                     {"bounces", std::to_string(r.bounces)},
+                     {"clamp", formatNumber(r.clamp)},
+                     {"env", r.envFile.string()},
+                     {"tonemap", tonemapperName(tonemapper)},
+                     {"exposureEv", formatNumber(double(cameraExposure) + double(r.exposure))}};
     return plan;
 }
 

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include <fcntl.h>
 #include <unistd.h>
 
 namespace glint::renderer {
@@ -34,6 +35,7 @@ Planes exrPlanes(const RenderOutput& img, const ExrLayers& layers) {
     if (layers.normal) p.names.insert(p.names.end(), {"N.X", "N.Y", "N.Z"});
     if (layers.depth) p.names.push_back("Z");
     if (layers.objectId) p.names.push_back("id");
+    if (layers.variance) p.names.insert(p.names.end(), {"variance.R", "variance.G", "variance.B"});
     const std::size_t count = std::size_t(img.width) * std::size_t(img.height);
     p.pixels.reserve(count * p.names.size());
     for (std::size_t i = 0; i < count; ++i) {
@@ -42,6 +44,7 @@ Planes exrPlanes(const RenderOutput& img, const ExrLayers& layers) {
         if (layers.normal) p.pixels.insert(p.pixels.end(), img.normal.begin() + std::ptrdiff_t(i * 3), img.normal.begin() + std::ptrdiff_t(i * 3 + 3));
         if (layers.depth) p.pixels.push_back(img.depth[i]);
         if (layers.objectId) p.pixels.push_back(img.objectId[i]);
+        if (layers.variance) p.pixels.insert(p.pixels.end(), img.variance.begin() + std::ptrdiff_t(i * 3), img.variance.begin() + std::ptrdiff_t(i * 3 + 3));
     }
     return p;
 }
@@ -49,7 +52,7 @@ Planes exrPlanes(const RenderOutput& img, const ExrLayers& layers) {
 void writeWithOiio(const std::filesystem::path& target, const std::filesystem::path& temp, const OIIO::ImageSpec& spec,
                    const void* pixels) {
     // OIIO picks the format from the name, so the temporary keeps the extension.
-    auto out = OIIO::ImageOutput::create(target.extension().string());
+    auto out = OIIO::ImageOutput::create(target.string()); // by the final name's extension
     if (!out) throw FileError(target.string(), "image-format", "no writer for this format: " + OIIO::geterror());
     if (!out->open(temp.string(), spec) || !out->write_image(spec.format, pixels) || !out->close())
         throw FileError(target.string(), "write-failed", "cannot write image: " + out->geterror());
@@ -63,8 +66,21 @@ std::filesystem::path temporaryNameFor(const std::filesystem::path& file) {
     return file.parent_path() / name;
 }
 
+// The data reaches the disk before the name does: after a crash or power loss the final name
+// holds either nothing or the whole image.
+bool flushToDisk(const std::filesystem::path& temp) {
+    const int fd = ::open(temp.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return false;
+    const bool synced = ::fsync(fd) == 0;
+    return ::close(fd) == 0 && synced;
+}
+
 void publish(const std::filesystem::path& temp, const std::filesystem::path& file) {
     std::error_code ec;
+    if (!flushToDisk(temp)) {
+        std::filesystem::remove(temp, ec);
+        throw FileError(file.string(), "write-failed", "cannot flush the image to disk");
+    }
     std::filesystem::rename(temp, file, ec);
     if (ec) {
         std::filesystem::remove(temp, ec);
@@ -112,7 +128,8 @@ ExrLayers parseAovList(const std::string& list) {
         else if (item == "normal") none.normal = true;
         else if (item == "depth") none.depth = true;
         else if (item == "id") none.objectId = true;
-        else throw std::invalid_argument("unknown AOV '" + item + "' (use all, none or a list of albedo, normal, depth, id)");
+        else if (item == "variance") none.variance = true;
+        else throw std::invalid_argument("unknown AOV '" + item + "' (use all, none or a list of albedo, normal, depth, id, variance)");
         start = comma + 1;
     }
     return none;
@@ -134,7 +151,16 @@ void writeRenderImage(const std::filesystem::path& file, const RenderOutput& img
     Planes planes;
     if (format == ImageFormat::Exr) planes = exrPlanes(img, layers);
     OIIO::ImageSpec spec = specFor(img, format, &planes);
-    for (const auto& [key, value] : metadata) spec.attribute("glint:" + key, value);
+    for (const auto& [key, value] : metadata) {
+        // The render time is the one thing that differs between identical renders; CONTRACTS.md
+        // allows it in EXR headers only, so 8-bit files of the same render are the same bytes.
+        if (key == "renderTimeMs" && format != ImageFormat::Exr) continue;
+        spec.attribute("glint:" + key, value);
+    }
+    // PNG keeps the glint: attributes, TIFF and JPEG only standard ones: the description carries
+    // the settings hash in every format, so --resume works alike for all of them.
+    if (auto hash = metadata.find("settingsHash"); hash != metadata.end())
+        spec.attribute("ImageDescription", kSettingsHashPrefix + hash->second);
     try {
         writeWithOiio(file, temp, spec, format == ImageFormat::Exr ? static_cast<const void*>(planes.pixels.data())
                                                                      : static_cast<const void*>(img.tonemapped.data()));

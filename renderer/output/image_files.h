@@ -23,12 +23,17 @@ struct ExrLayers {
     bool normal = true;
     bool depth = true;
     bool objectId = true;
+    bool variance = false; // optional: only when listed
 };
 
-// Parses --aovs: "all", "none" or a comma list of albedo, normal, depth, id.
+// Parses --aovs: "all" (every layer but the optional variance), "none" or a comma list of albedo,
+// normal, depth, id, variance.
 ExrLayers parseAovList(const std::string& list);
 
 using ImageMetadata = std::map<std::string, std::string>; // written as string attributes "glint:<key>"
+
+// Every format also gets ImageDescription = this prefix + the "settingsHash" entry.
+inline constexpr const char* kSettingsHashPrefix = "glint:settingsHash=";
 
 // Fails early (FileError naming the file) when the folder of `file` does not exist or is not writable,
 // so a long render is not wasted on an output that cannot be saved.
