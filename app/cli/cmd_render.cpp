@@ -1,14 +1,17 @@
-// glint render SCENE --out FILE: a still, headless (no display, no Qt GUI).
+// glint render SCENE --out FILE: a still, or with --animation a numbered frame sequence (and
+// optionally its video); headless (no display, no Qt GUI).
+#include "animation_render.h"
+#include "cli_validators.h"
 #include "command.h"
-#include "common_options.h"
 #include "exit_codes.h"
-#include "render_setup.h"
+#include "frame_render.h"
+#include "render_options.h"
 #include "report.h"
 #include "scene_file.h"
 
-#include "app/version.h"
 #include "renderer/offline_render.h"
 #include "renderer/output/image_files.h"
+#include "renderer/output/video_settings.h"
 #include "scene/anim/scene_at_time.h"
 
 #include <cstdio>
@@ -17,71 +20,74 @@ namespace glint::cli {
 
 namespace {
 
-struct RenderOptions {
-    std::string scene;
-    std::string out;
-    std::string aovs = "all";
-    std::optional<double> time;
-    CommonRenderOptions common;
-};
-
-// A CLI11 validator from a parser that throws std::invalid_argument: its message becomes the usage error.
-std::function<std::string(std::string&)> rejection(std::function<void(const std::string&)> parse) {
-    return [parse](std::string& value) -> std::string {
-        try {
-            parse(value);
-            return {};
-        } catch (const std::invalid_argument& e) {
-            return e.what();
-        }
-    };
-}
-
-// One line, rewritten in place, at most ~100 times per render.
-void printProgress(int done, int total) {
-    if (total < 100 || done % (total / 100) == 0 || done == total)
-        std::fprintf(stderr, "\rglint: rendering %d/%d samples", done, total);
-    if (done == total) std::fprintf(stderr, "\n");
+int renderStill(const RenderOptions& o, Scene& scene) {
+    const StopSignal stop;
+    renderer::checkOutputWritable(o.out); // before a long render, not after
+    if (o.time) poseSceneAt(scene, *o.time);
+    FrameJob job;
+    job.scene = &scene;
+    job.out = o.out;
+    job.time = o.time;
+    RenderPlan plan = planImage(o, job);
+    const int spp = plan.request.spp;
+    renderer::OfflineRenderer gpu(o.common.requireGpu);
+    std::fprintf(stderr, "glint: GL_RENDERER: %s\n", gpu.glRenderer().c_str());
+    try {
+        renderImage(gpu, o, job, std::move(plan), stop, true);
+    } catch (const RenderStopped&) {
+        std::fprintf(stderr, "\nglint: stopped by signal %d; nothing written\n", stop.signalNumber());
+        return stop.exitCode();
+    }
+    std::fprintf(stderr, "glint: wrote %s (%d spp)\n", o.out.c_str(), spp);
+    return kSuccess;
 }
 
 int runRender(const RenderOptions& o) {
     LoadResult loaded = openSceneFile(o.scene);
     if (reportWarnings(loaded.warnings, o.common.strict)) return kFailure;
-    const auto layers = renderer::parseAovList(o.aovs);
-    renderer::checkOutputWritable(o.out); // before a long render, not after
-    if (o.time) poseSceneAt(loaded.scene, *o.time);
-    RenderPlan plan = planRender(loaded.scene, o.scene, o.common);
-    if (o.time) plan.metadata["time"] = formatNumber(*o.time);
-    plan.request.progress = printProgress;
+    return o.animation ? renderAnimation(o, loaded.scene) : renderStill(o, loaded.scene);
+}
 
-    renderer::OfflineRenderer gpu(o.common.requireGpu);
-    std::fprintf(stderr, "glint: GL_RENDERER: %s\n", gpu.glRenderer().c_str());
-    renderer::RenderOutput image = gpu.render(loaded.scene, plan.request);
-    renderer::ImageMetadata metadata = plan.metadata;
-    metadata["version"] = kVersion;
-    metadata["renderTimeMs"] = formatNumber(image.timings.setupMs + image.timings.renderMs);
-    renderer::writeRenderImage(o.out, image, layers, metadata);
-    std::fprintf(stderr, "glint: wrote %s (%dx%d, %d spp, %.1f ms/sample)\n", o.out.c_str(), image.width,
-                 image.height, plan.request.spp, image.timings.msPerSample);
-    return kSuccess;
+void addAnimationOptions(CLI::App& cmd, RenderOptions& o) {
+    cmd.add_flag("--animation", o.animation, "Render the animation as numbered frames: --out needs a '####' "
+                                             "placeholder (default: off, a still)");
+    addFrameOptions(cmd, o.frames, o.fps);
+    cmd.add_flag("--resume,!--no-resume", o.resume, "Keep frames already complete with the same settings hash "
+                                                     "(default: on)");
+    cmd.add_option_function<std::string>("--shard", [&o](const std::string& v) { o.shard = parseShard(v); },
+                                         "Render shard I of N (0 <= I < N); default: from SLURM_ARRAY_TASK_ID/"
+                                         "_MIN/_COUNT or JOB_COMPLETION_INDEX, else all frames")
+        ->check(CLI::Validator(rejection([](const std::string& v) { parseShard(v); }), "I/N", "shard"));
+    cmd.add_option("--shards", o.shards, "Shard count N with a Kubernetes indexed job's JOB_COMPLETION_INDEX")
+        ->check(CLI::Range(1, 1 << 20));
+    cmd.add_option("--video", o.video, "Also encode the frames into this video (.mp4, .mov, .mkv) (default: none)")
+        ->check(CLI::Validator(rejection([](const std::string& v) { video::defaultCodecFor(v); }), "FILE", "video"));
+    cmd.add_option("--codec", o.codec, "Codec for --video: h264, prores, ffv1 (default: from the container)")
+        ->check(CLI::Validator(rejection([](const std::string& v) { video::parseCodec(v); }), "CODEC", "codec"));
 }
 
 } // namespace
 
 void addRenderCommand(CLI::App& app, Action& action) {
     auto options = std::make_shared<RenderOptions>();
-    CLI::App* cmd = app.add_subcommand("render", "Render a still headless: EXR (linear radiance + AOVs) or "
-                                                 "PNG/JPEG/TIFF (tonemapped sRGB).");
+    CLI::App* cmd = app.add_subcommand("render", "Render headless: a still, or with --animation a frame sequence. EXR "
+                                                 "(linear radiance + AOVs) or PNG/JPEG/TIFF (tonemapped sRGB).");
     cmd->add_option("SCENE", options->scene, "Scene: .gltf, .glb or .glint.json")->required();
-    cmd->add_option("--out", options->out, "Output image: .exr, .png, .jpg or .tif")
+    cmd->add_option("--out", options->out, "Output image: .exr, .png, .jpg or .tif; with --animation a pattern such as "
+                                           "frames/shot_####.exr")
         ->required()
         ->check(CLI::Validator(rejection([](const std::string& v) { renderer::imageFormatFor(v); }), "FILE", "image"));
-    cmd->add_option("--aovs", options->aovs, "EXR layers: all, none, or a list of albedo,normal,depth,id (default: all)")
+    cmd->add_option("--aovs", options->aovs, "EXR layers: all, none, or a list of albedo,normal,depth,id,variance "
+                                             "(default: all = every layer but variance)")
         ->check(CLI::Validator(rejection([](const std::string& v) { renderer::parseAovList(v); }), "LIST", "aovs"));
     cmd->add_option("--time", options->time, "Render the scene at this time in seconds: camera path and node "
                                              "animations (default: the scene as stored)");
+    addAnimationOptions(*cmd, *options);
     addCommonRenderOptions(*cmd, options->common);
-    cmd->callback([options, &action] { action = [options] { return runRender(*options); }; });
+    cmd->callback([options, &action] {
+        validateAnimationOptions(*options);
+        action = [options] { return runRender(*options); };
+    });
 }
 
 } // namespace glint::cli

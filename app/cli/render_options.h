@@ -1,0 +1,28 @@
+#pragma once
+// Everything `glint render` accepts, stills and animations alike.
+#include "common_options.h"
+#include "frame_timing.h"
+#include "shard_plan.h"
+
+#include <optional>
+#include <string>
+
+namespace glint::cli {
+
+struct RenderOptions {
+    std::string scene;
+    std::string out;
+    std::string aovs = "all";
+    std::optional<double> time;
+    bool animation = false;
+    std::optional<FrameRange> frames; // default: the animation's span
+    std::optional<Fps> fps;           // default: the project's
+    bool resume = true;
+    std::optional<Shard> shard;
+    std::optional<int> shards; // N for Kubernetes indexed jobs
+    std::optional<std::string> video;
+    std::optional<std::string> codec;
+    CommonRenderOptions common;
+};
+
+} // namespace glint::cli
