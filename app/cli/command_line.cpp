@@ -20,6 +20,7 @@ void configureParser(CLI::App& app, Action& action) {
     addInfoCommand(app, action);
     addConvertCommand(app, action);
     addRenderCommand(app, action);
+    addEncodeCommand(app, action);
     addBenchCommand(app, action);
 }
 
