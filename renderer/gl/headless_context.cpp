@@ -1,8 +1,11 @@
 #include "renderer/gl/headless_context.h"
 
+#include "renderer/gl/egl_device_order.h"
+
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
 
+#include <cstdlib>
 #include <stdexcept>
 #include <vector>
 
@@ -33,6 +36,7 @@ EGLDisplay deviceDisplay() {
     eglQueryDevicesEXT(0, nullptr, &count);
     std::vector<EGLDeviceEXT> devices(static_cast<std::size_t>(count));
     if (count == 0 || eglQueryDevicesEXT(count, devices.data(), &count) != EGL_TRUE) return EGL_NO_DISPLAY;
+    devices = assignedDeviceFirst(std::move(devices), assignedCudaDevice(std::getenv("CUDA_VISIBLE_DEVICES")));
     // Mesa lists its software device too; a hardware device that initialises comes first.
     for (EGLDeviceEXT device : devices) {
         const char* extensions = eglQueryDeviceStringEXT(device, EGL_EXTENSIONS);
