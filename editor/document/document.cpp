@@ -49,8 +49,21 @@ ChangeSet Document::push(CommandPtr command) {
     std::vector<NodeId> before = selection_;
     ChangeSet changes = history_.push(std::move(command));
     // A merge leaves the index where it was: the selection before the drag stays recorded.
-    if (history_.index() > index) selectionBefore_[index] = std::move(before);
+    if (history_.index() > index && macroDepth_ == 0) selectionBefore_[index] = std::move(before);
     return changes;
+}
+
+void Document::beginMacro(const QString& label) {
+    if (macroDepth_++ == 0) {
+        macroIndex_ = history_.index();
+        macroSelection_ = selection_;
+    }
+    history_.beginMacro(label.toStdString());
+}
+
+void Document::endMacro() {
+    history_.endMacro();
+    if (--macroDepth_ == 0 && history_.index() > macroIndex_) selectionBefore_[macroIndex_] = macroSelection_;
 }
 
 ChangeSet Document::undo() {
@@ -171,17 +184,14 @@ QString Document::importFile(const QString& path) {
         LoadResult result = readAnyScene(path);
         std::vector<CommandPtr> commands = mergeCommands(scene_, result.scene);
         const NodeId firstNew = scene_.peekNextNodeId();
-        history_.beginMacro(tr("Import %1").arg(QFileInfo(path).fileName()).toStdString());
+        beginMacro(tr("Import %1").arg(QFileInfo(path).fileName()));
         try {
-            for (CommandPtr& command : commands) history_.push(std::move(command));
+            for (CommandPtr& command : commands) push(std::move(command));
         } catch (...) {
-            history_.endMacro();
+            endMacro();
             throw;
         }
-        const std::size_t index = history_.index();
-        std::vector<NodeId> before = selection_;
-        history_.endMacro();
-        if (history_.index() > index) selectionBefore_[index] = std::move(before);
+        endMacro();
         std::vector<NodeId> added;
         for (NodeId root : scene_.roots())
             if (root >= firstNew) added.push_back(root);

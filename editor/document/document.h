@@ -35,6 +35,10 @@ public:
     bool canUndo() const { return history_.canUndo(); }
     bool canRedo() const { return history_.canRedo(); }
     std::uint64_t beginInteraction() { return history_.beginInteraction(); }
+    // Groups the pushes until the matching endMacro into one undo step (History::beginMacro);
+    // undoing it restores the selection from before the macro.
+    void beginMacro(const QString& label);
+    void endMacro();
 
     // --- selection (editor state; never dirties the file) ------------------------------------
     const std::vector<NodeId>& selection() const { return selection_; }
@@ -87,6 +91,9 @@ private:
     bool lastClean_ = true;
     bool recovered_ = false;
     QStringList warnings_;
+    int macroDepth_ = 0;
+    std::size_t macroIndex_ = 0;
+    std::vector<NodeId> macroSelection_;
     History::ListenerId changeListener_ = 0;
     History::ListenerId indexListener_ = 0;
 };

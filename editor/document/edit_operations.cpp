@@ -28,15 +28,14 @@ std::vector<NodeId> topLevelSelection(const Document& document) {
 // Runs `body` inside one macro; a failure closes the macro and becomes a message.
 template <class Body>
 QString inMacro(Document& document, const QString& label, Body body) {
-    History& history = document.history();
-    history.beginMacro(label.toStdString());
+    document.beginMacro(label);
     try {
         body();
     } catch (const std::exception& e) {
-        history.endMacro();
+        document.endMacro();
         return QString::fromStdString(e.what());
     }
-    history.endMacro();
+    document.endMacro();
     return {};
 }
 

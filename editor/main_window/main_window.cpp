@@ -57,21 +57,34 @@ MainWindow::MainWindow(Options options, QWidget* parent) : QMainWindow(parent), 
     updateUndoActions();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+    // The panels refer to the document: they go first (children die in creation order, and the
+    // document was created first).
+    qDeleteAll(findChildren<QWidget*>(Qt::FindDirectChildrenOnly));
+    delete autosave_;
+}
 
 void MainWindow::createCentralView() {
+#if defined(GLINT_HAVE_VIEWPORT)
+    if (options_.createViewport) {
+        createViewport();
+        return;
+    }
+#endif
+    // The viewport is not part of this build (or not wanted): say so where it would be.
+    auto* placeholder = new QLabel(tr("The viewport is not available in this build."), this);
+    placeholder->setAlignment(Qt::AlignCenter);
+    placeholder->setAccessibleName(tr("Viewport"));
+    setCentralWidget(placeholder);
+}
+
+void MainWindow::createViewport() {
 #if defined(GLINT_HAVE_VIEWPORT)
     auto* viewport = new Viewport(*document_, this);
     viewport->setAccessibleName(tr("Viewport"));
     viewportActions_ = viewport->allActions();
     connect(viewport, &Viewport::statusMessage, this, [this](const QString& text) { renderLabel_->setText(text); });
     setCentralWidget(viewport);
-#else
-    // The viewport is not part of this build: say so where it would be.
-    auto* placeholder = new QLabel(tr("The viewport is not available in this build."), this);
-    placeholder->setAlignment(Qt::AlignCenter);
-    placeholder->setAccessibleName(tr("Viewport"));
-    setCentralWidget(placeholder);
 #endif
 }
 
@@ -94,10 +107,13 @@ void MainWindow::createDocks() {
     auto* historyDock = addDock(history_, tr("Undo history"), "HistoryDock", Qt::LeftDockWidgetArea);
     auto* propertiesDock = addDock(properties_, tr("Properties"), "PropertiesDock", Qt::RightDockWidgetArea);
     auto* sceneDock = addDock(sceneSettings_, tr("Scene"), "SceneDock", Qt::RightDockWidgetArea);
-    addDock(log_, tr("Log"), "LogDock", Qt::BottomDockWidgetArea);
+    auto* logDock = addDock(log_, tr("Log"), "LogDock", Qt::BottomDockWidgetArea);
     splitDockWidget(outlinerDock, historyDock, Qt::Vertical);
     tabifyDockWidget(propertiesDock, sceneDock);
     propertiesDock->raise();
+    // The viewport gets most of the room until the user's own layout is restored.
+    resizeDocks({outlinerDock, propertiesDock}, {260, 380}, Qt::Horizontal);
+    resizeDocks({logDock}, {110}, Qt::Vertical);
     for (auto* panel : {static_cast<QObject*>(outliner_), static_cast<QObject*>(properties_),
                         static_cast<QObject*>(sceneSettings_), static_cast<QObject*>(history_)})
         connect(panel, SIGNAL(message(QString)), log_, SLOT(warning(QString)));

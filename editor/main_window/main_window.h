@@ -28,6 +28,7 @@ public:
         QString autosaveFolder;      // empty: the standard place
         bool askBeforeRecovery = true; // false: recover without asking (tests)
         QPalette systemPalette;
+        bool createViewport = true;    // false: a placeholder (tests of the panels alone)
     };
     explicit MainWindow(Options options, QWidget* parent = nullptr);
     ~MainWindow() override;
@@ -61,6 +62,7 @@ protected:
 
 private:
     void createCentralView();
+    void createViewport();
     void createDocks();
     QDockWidget* addDock(QWidget* widget, const QString& title, const QString& name, Qt::DockWidgetArea area);
     void createActions();

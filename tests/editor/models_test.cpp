@@ -1,0 +1,160 @@
+// The outliner and history models over a real document, checked by QAbstractItemModelTester
+// through adds, deletes, duplicates, reparenting drops, renames, undo and redo.
+#include "editor_fixtures.h"
+
+#include "editor/document/edit_operations.h"
+#include "editor/history_view/history_model.h"
+#include "editor/outliner/outliner_model.h"
+
+#include <QAbstractItemModelTester>
+#include <QApplication>
+#include <QMimeData>
+
+#include <glm/gtc/matrix_access.hpp>
+
+using namespace glint;
+using namespace glint::editor;
+using namespace glint::editor::test;
+
+class ModelsTest : public QObject {
+    Q_OBJECT
+private slots:
+    void outlinerFollowsTheDocument();
+    void renameAndVisibilityAreCommands();
+    void dropReparentsKeepingTheWorldTransform();
+    void historyModelListsLabelsAndJumps();
+    void importMergesAsOneStep();
+    void selectionComesBackOnUndo();
+};
+
+void ModelsTest::outlinerFollowsTheDocument() {
+    Document document;
+    OutlinerModel model(document);
+    QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::QtTest);
+    QCOMPARE(document.open(cornellBox()), QString());
+    QCOMPARE(model.rowCount(), 9); // nine root nodes in the sample
+    QCOMPARE(model.index(0, 0).data().toString(), QString("floor"));
+    QCOMPARE(model.index(8, 0).data().toString(), QString("camera"));
+
+    document.setSelection({nodeNamed(document, "tall_block")});
+    QCOMPARE(duplicateSelection(document), QString());
+    QCOMPARE(model.rowCount(), 10);
+    QCOMPARE(document.selection().size(), std::size_t{1});
+    QVERIFY(document.selection().front() != nodeNamed(document, "tall_block"));
+    QCOMPARE(deleteSelection(document), QString());
+    QCOMPARE(model.rowCount(), 9);
+    QCOMPARE(addNode(document, "ball", defaultShape(ShapeKind::Sphere)), QString());
+    QCOMPARE(model.rowCount(), 10);
+    document.undo();
+    document.undo();
+    QCOMPARE(model.rowCount(), 10); // the duplicate is back
+    document.redo();
+    document.redo();
+    QCOMPARE(model.rowCount(), 10);
+    QCOMPARE(model.index(9, 0).data().toString(), QString("ball"));
+}
+
+void ModelsTest::renameAndVisibilityAreCommands() {
+    Document document;
+    OutlinerModel model(document);
+    QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::QtTest);
+    QCOMPARE(document.open(cornellBox()), QString());
+    const QModelIndex floor = model.index(0, OutlinerModel::NameColumn);
+    QVERIFY(model.setData(floor, "ground"));
+    QCOMPARE(floor.data().toString(), QString("ground"));
+    const QModelIndex visible = model.index(0, OutlinerModel::VisibleColumn);
+    QCOMPARE(visible.data(Qt::CheckStateRole).toInt(), int(Qt::Checked));
+    QVERIFY(model.setData(visible, Qt::Unchecked, Qt::CheckStateRole));
+    QCOMPARE(model.index(0, OutlinerModel::VisibleColumn).data(Qt::CheckStateRole).toInt(), int(Qt::Unchecked));
+    QCOMPARE(document.history().count(), std::size_t{2});
+    document.undo();
+    document.undo();
+    QCOMPARE(model.index(0, 0).data().toString(), QString("floor"));
+    QVERIFY(document.scene().at(nodeNamed(document, "floor")).visible);
+    QVERIFY(document.isModified() == false);
+}
+
+void ModelsTest::dropReparentsKeepingTheWorldTransform() {
+    Document document;
+    OutlinerModel model(document);
+    QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::QtTest);
+    QCOMPARE(document.open(cornellBox()), QString());
+    // A parent that is moved and scaled, so that keeping the local transform would move the child.
+    QCOMPARE(addNode(document, "group", Component{}), QString());
+    const NodeId group = document.currentNode();
+    Transform t;
+    t.translation = {1.0f, 2.0f, 3.0f};
+    t.scale = {2.0f, 2.0f, 2.0f};
+    document.scene().setLocal(group, t); // direct: the test only needs a moved parent
+    const NodeId block = nodeNamed(document, "short_block");
+    const glm::mat4 before = document.scene().worldFromNode(block);
+
+    std::unique_ptr<QMimeData> data(model.mimeData({model.indexOf(block)}));
+    QVERIFY(model.canDropMimeData(data.get(), Qt::MoveAction, -1, 0, model.indexOf(group)));
+    model.dropMimeData(data.get(), Qt::MoveAction, -1, 0, model.indexOf(group));
+    QCoreApplication::processEvents(); // the drop is applied once the view's handler returned
+    QCOMPARE(document.scene().at(block).parent, group);
+    QCOMPARE(model.rowCount(model.indexOf(group)), 1);
+    const glm::mat4 after = document.scene().worldFromNode(block);
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) QVERIFY(std::abs(before[c][r] - after[c][r]) < 1e-5f);
+    // A node cannot be dropped into itself.
+    std::unique_ptr<QMimeData> self(model.mimeData({model.indexOf(group)}));
+    QVERIFY(!model.canDropMimeData(self.get(), Qt::MoveAction, -1, 0, model.indexOf(block)));
+    document.undo();
+    QVERIFY(!document.scene().at(block).parent);
+}
+
+void ModelsTest::historyModelListsLabelsAndJumps() {
+    Document document;
+    HistoryModel model(document);
+    QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::QtTest);
+    QCOMPARE(document.open(cornellBox()), QString());
+    QCOMPARE(addNode(document, "a", defaultLight(LightType::Point)), QString());
+    QCOMPARE(renameNode(document, document.currentNode(), "b"), QString());
+    QCoreApplication::processEvents();
+    QCOMPARE(model.rowCount(), 3);
+    QCOMPARE(model.index(2).data().toString(), QString("Rename"));
+    QCOMPARE(model.currentRow(), 2);
+    document.jumpTo(0);
+    QCoreApplication::processEvents();
+    QCOMPARE(model.currentRow(), 0);
+    QVERIFY(model.index(0).data().toString().contains("saved"));
+    QVERIFY(!document.scene().findByName("a"));
+    document.jumpTo(2);
+    QVERIFY(document.scene().findByName("b"));
+}
+
+void ModelsTest::importMergesAsOneStep() {
+    Document document;
+    QCOMPARE(document.open(cornellBox()), QString());
+    const std::size_t nodes = document.scene().nodeCount();
+    const std::size_t materials = document.scene().materials.size();
+    QCOMPARE(document.importFile(cornellBox()), QString());
+    QCOMPARE(document.scene().nodeCount(), 2 * nodes);
+    QCOMPARE(document.scene().materials.size(), 2 * materials);
+    QCOMPARE(document.history().count(), std::size_t{1});
+    QCOMPARE(document.selection().size(), nodes); // the imported roots
+    // The copies use the copies' materials, not the originals'.
+    const Node& copy = document.scene().at(document.selection()[4]); // left_wall_red
+    const Mesh& mesh = document.scene().meshes.at(copy.get<MeshInstance>()->mesh);
+    QCOMPARE(document.scene().materials.at(mesh.primitives.front().material).name, std::string("red"));
+    QVERIFY(mesh.primitives.front().material.value > materials);
+    document.undo();
+    QCOMPARE(document.scene().nodeCount(), nodes);
+    QVERIFY(!document.isModified());
+}
+
+void ModelsTest::selectionComesBackOnUndo() {
+    Document document;
+    QCOMPARE(document.open(cornellBox()), QString());
+    const NodeId floor = nodeNamed(document, "floor");
+    document.setSelection({floor});
+    QCOMPARE(deleteSelection(document), QString());
+    QVERIFY(document.selection().empty());
+    document.undo();
+    QCOMPARE(document.selection(), std::vector<NodeId>{floor});
+}
+
+QTEST_MAIN(ModelsTest)
+#include "models_test.moc"

@@ -1,0 +1,164 @@
+// The outliner, properties and history panels on a document, without GL (offscreen platform):
+// selection both ways, properties following the selection, material edits through undo/redo,
+// and a slider drag as one undo step.
+#include "editor_fixtures.h"
+
+#include "editor/history_view/history_model.h"
+#include "editor/history_view/history_panel.h"
+#include "editor/outliner/outliner_model.h"
+#include "editor/outliner/outliner_panel.h"
+#include "editor/properties/properties_panel.h"
+#include "editor/properties/property_form.h"
+
+#include <QApplication>
+#include <QDoubleSpinBox>
+#include <QItemSelectionModel>
+#include <QLineEdit>
+#include <QListView>
+#include <QSlider>
+#include <QSortFilterProxyModel>
+#include <QTreeView>
+
+using namespace glint;
+using namespace glint::editor;
+using namespace glint::editor::test;
+
+namespace {
+
+template <class T>
+T* fieldNamed(QWidget& panel, const QString& name) {
+    for (T* field : panel.findChildren<T*>())
+        if (field->accessibleName() == name) return field;
+    return nullptr;
+}
+
+const Material& materialNamed(const Document& document, const std::string& name) {
+    for (const auto& [id, material] : document.scene().materials)
+        if (material.name == name) return material;
+    throw std::runtime_error("no material " + name);
+}
+
+} // namespace
+
+class PanelsTest : public QObject {
+    Q_OBJECT
+private slots:
+    void outlinerSelectionFollowsBothWays();
+    void propertiesFollowTheSelection();
+    void materialColourUndoRedoIsExact();
+    void sliderDragIsOneUndoStep();
+    void historyPanelClickJumps();
+    void filterKeepsMatchesAndTheirParents();
+};
+
+void PanelsTest::outlinerSelectionFollowsBothWays() {
+    Document document;
+    QCOMPARE(document.open(cornellBox()), QString());
+    OutlinerPanel panel(document);
+    QTreeView& view = panel.view();
+    const QModelIndex row = view.model()->index(3, 0);
+    view.selectionModel()->setCurrentIndex(row, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+    QCOMPARE(document.currentNode(), nodeNamed(document, "right_wall_green"));
+    document.setSelection({nodeNamed(document, "floor"), nodeNamed(document, "light")});
+    const QModelIndexList rows = view.selectionModel()->selectedRows();
+    QCOMPARE(rows.size(), 2);
+    QCOMPARE(rows[0].data().toString() + rows[1].data().toString(), QString("floorlight"));
+}
+
+void PanelsTest::propertiesFollowTheSelection() {
+    Document document;
+    QCOMPARE(document.open(cornellBox()), QString());
+    PropertiesPanel panel(document, false);
+    QVERIFY(panel.forms().empty());
+    document.setSelection({nodeNamed(document, "left_wall_red")});
+    QCoreApplication::processEvents();
+    QVERIFY(panel.forms().size() >= 3); // node, transform, material
+    auto* name = fieldNamed<QLineEdit>(panel, "Name");
+    QVERIFY(name);
+    QCOMPARE(name->text(), QString("left_wall_red"));
+    document.setSelection({nodeNamed(document, "camera")});
+    QCoreApplication::processEvents();
+    QCOMPARE(fieldNamed<QLineEdit>(panel, "Name")->text(), QString("camera"));
+    QVERIFY(fieldNamed<FloatField>(panel, "Vertical field of view (degrees)"));
+}
+
+void PanelsTest::materialColourUndoRedoIsExact() {
+    Document document;
+    QCOMPARE(document.open(cornellBox()), QString());
+    PropertiesPanel panel(document, false);
+    document.setSelection({nodeNamed(document, "left_wall_red")});
+    QCoreApplication::processEvents();
+    auto* colour = fieldNamed<ColorField>(panel, "Base colour");
+    QVERIFY(colour);
+    const glm::vec4 original = materialNamed(document, "red").baseColorFactor;
+    const QColor chosen = QColor::fromRgbF(0.25f, 0.5f, 0.75f);
+    emit colour->edited(chosen);
+    const glm::vec4 edited = materialNamed(document, "red").baseColorFactor;
+    QCOMPARE(edited, glm::vec4(float(chosen.redF()), float(chosen.greenF()), float(chosen.blueF()), original.w));
+    document.undo();
+    QCOMPARE(materialNamed(document, "red").baseColorFactor, original); // exact, not within a tolerance
+    QCOMPARE(colour->color(), toQColor(original.x, original.y, original.z));
+    document.redo();
+    QCOMPARE(materialNamed(document, "red").baseColorFactor, edited);
+    QCOMPARE(colour->color(), chosen);
+}
+
+void PanelsTest::sliderDragIsOneUndoStep() {
+    Document document;
+    QCOMPARE(document.open(cornellBox()), QString());
+    PropertiesPanel panel(document, false);
+    document.setSelection({nodeNamed(document, "left_wall_red")});
+    QCoreApplication::processEvents();
+    auto* roughness = fieldNamed<FloatField>(panel, "Roughness");
+    QVERIFY(roughness);
+    const float original = materialNamed(document, "red").roughnessFactor;
+    QSlider* slider = roughness->slider();
+    slider->setSliderDown(true); // what a mouse press on the handle does
+    for (int position : {100, 300, 600, 900}) slider->setValue(position);
+    slider->setSliderDown(false);
+    QCOMPARE(document.history().count(), std::size_t{1});
+    QCOMPARE(materialNamed(document, "red").roughnessFactor, 0.9f);
+    QCOMPARE(roughness->spinBox()->value(), 0.9);
+    // A second drag is a second step.
+    slider->setSliderDown(true);
+    slider->setValue(200);
+    slider->setSliderDown(false);
+    QCOMPARE(document.history().count(), std::size_t{2});
+    document.undo();
+    document.undo();
+    QCOMPARE(materialNamed(document, "red").roughnessFactor, original);
+    QCOMPARE(roughness->spinBox()->value(), double(original));
+}
+
+void PanelsTest::historyPanelClickJumps() {
+    Document document;
+    QCOMPARE(document.open(cornellBox()), QString());
+    HistoryPanel panel(document);
+    PropertiesPanel properties(document, true);
+    auto* exposure = fieldNamed<FloatField>(properties, "Exposure (EV)");
+    QVERIFY(exposure);
+    exposure->spinBox()->setValue(1.0);
+    exposure->spinBox()->setValue(2.0);
+    QCoreApplication::processEvents();
+    QCOMPARE(panel.model().rowCount(), 3);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    const QRect rect = panel.view().visualRect(panel.model().index(1));
+    QTest::mouseClick(panel.view().viewport(), Qt::LeftButton, {}, rect.center());
+    QCOMPARE(document.history().index(), std::size_t{1});
+    QCOMPARE(document.scene().settings.render.exposure, 1.0f);
+    QCOMPARE(exposure->spinBox()->value(), 1.0); // the settings panel follows the jump
+}
+
+void PanelsTest::filterKeepsMatchesAndTheirParents() {
+    Document document;
+    QCOMPARE(document.open(cornellBox()), QString());
+    OutlinerPanel panel(document);
+    panel.filter().setText("WALL");
+    QCOMPARE(panel.view().model()->rowCount(), 3);
+    panel.filter().clear();
+    QCOMPARE(panel.view().model()->rowCount(), 9);
+}
+
+QTEST_MAIN(PanelsTest)
+#include "panels_test.moc"

@@ -1,0 +1,152 @@
+// The main window in a real X server (Xvfb): opening the sample scene, the title's unsaved
+// marker, save -> reopen -> save byte-identical, autosave recovery after a simulated crash, and
+// a screenshot of the whole window (with the viewport) for a person to look at.
+#include "editor_fixtures.h"
+
+#include "editor/document/edit_operations.h"
+#include "editor/log/log_panel.h"
+#include "editor/main_window/autosave.h"
+#include "editor/main_window/main_window.h"
+#include "editor/outliner/outliner_panel.h"
+
+#include <QApplication>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QSurfaceFormat>
+#include <QTemporaryDir>
+#include <QTreeView>
+
+using namespace glint;
+using namespace glint::editor;
+using namespace glint::editor::test;
+
+namespace {
+
+QByteArray readAll(const QString& path) {
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
+MainWindow::Options panelsOnly(const QString& autosaveFolder) {
+    MainWindow::Options options;
+    options.autosaveFolder = autosaveFolder;
+    options.askBeforeRecovery = false;
+    options.createViewport = false;
+    return options;
+}
+
+} // namespace
+
+class WindowTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void openShowsNodesAndTitle();
+    void saveReopenSaveIsByteIdentical();
+    void autosaveIsRecoveredAfterACrash();
+    void screenshotOfTheMainWindow();
+
+private:
+    QTemporaryDir temp_;
+};
+
+void WindowTest::initTestCase() { QVERIFY(temp_.isValid()); }
+
+void WindowTest::openShowsNodesAndTitle() {
+    MainWindow window(panelsOnly(temp_.filePath("autosave-a")));
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(window.openFile(cornellBox()));
+    QCOMPARE(window.outliner().view().model()->rowCount(), 9);
+    QVERIFY(window.windowTitle().contains("cornell_box.gltf"));
+    QVERIFY(!window.isWindowModified());
+    QCOMPARE(addNode(window.document(), "lamp", defaultLight(LightType::Point)), QString());
+    QVERIFY(window.isWindowModified());
+    window.document().undo();
+    QVERIFY(!window.isWindowModified());
+}
+
+void WindowTest::saveReopenSaveIsByteIdentical() {
+    MainWindow window(panelsOnly(temp_.filePath("autosave-b")));
+    QVERIFY(window.openFile(cornellBox()));
+    QCOMPARE(renameNode(window.document(), nodeNamed(window.document(), "floor"), "ground"), QString());
+    const QString first = temp_.filePath("first/scene.gltf");
+    const QString second = temp_.filePath("second/scene.gltf");
+    QDir().mkpath(temp_.filePath("first"));
+    QDir().mkpath(temp_.filePath("second"));
+    QVERIFY(window.saveAs(first));
+    QVERIFY(!window.document().isModified());
+    QVERIFY(window.openFile(first));
+    QVERIFY(nodeNamed(window.document(), "ground"));
+    QVERIFY(window.saveAs(second));
+    const QStringList files = QDir(temp_.filePath("first")).entryList(QDir::Files);
+    QVERIFY(files.contains("scene.gltf"));
+    for (const QString& name : files) {
+        const QByteArray a = readAll(temp_.filePath("first/" + name));
+        QVERIFY2(!a.isEmpty(), qPrintable(name));
+        QVERIFY2(a == readAll(temp_.filePath("second/" + name)), qPrintable(name + " differs"));
+    }
+}
+
+void WindowTest::autosaveIsRecoveredAfterACrash() {
+    const QString folder = temp_.filePath("autosave-c");
+    {
+        auto* window = new MainWindow(panelsOnly(folder));
+        QVERIFY(window->openFile(cornellBox()));
+        QCOMPARE(renameNode(window->document(), nodeNamed(window->document(), "floor"), "recovered floor"), QString());
+        QCOMPARE(window->autosave().saveNow(), QString());
+        QVERIFY(QFile::exists(window->autosave().copyPath()));
+        // A crash: the window goes away without closeEvent, so the copy stays behind.
+        delete window;
+    }
+    MainWindow next(panelsOnly(folder));
+    QVERIFY(next.offerRecovery());
+    QVERIFY(nodeNamed(next.document(), "recovered floor"));
+    QVERIFY(next.document().isModified()); // newer than the file until saved
+    QCOMPARE(QFileInfo(next.document().filePath()).fileName(), QString("cornell_box.gltf"));
+    // Saving elsewhere makes the copy obsolete: it is removed.
+    QVERIFY(next.saveAs(temp_.filePath("recovered.gltf")));
+    QVERIFY(!QFile::exists(next.autosave().copyPath()));
+    MainWindow third(panelsOnly(folder));
+    QVERIFY(!third.offerRecovery());
+}
+
+void WindowTest::screenshotOfTheMainWindow() {
+    MainWindow::Options options;
+    options.autosaveFolder = temp_.filePath("autosave-d");
+    options.askBeforeRecovery = false;
+    MainWindow window(options);
+    window.resize(1200, 700);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(window.openFile(cornellBox()));
+    window.document().setSelection({nodeNamed(window.document(), "left_wall_red")});
+    // Give the viewport a few frames to accumulate, then grab everything (GL widgets included).
+    QElapsedTimer timer;
+    timer.start();
+    while (timer.elapsed() < 3000) QTest::qWait(50);
+    const QImage shot = window.grab().toImage();
+    QVERIFY(!shot.isNull());
+    QVERIFY(shot.width() >= 1000);
+    const QString path = QStringLiteral(GLINT_TEST_OUTPUT_DIR "/editor_main_window.png");
+    QVERIFY(shot.save(path));
+    qInfo("screenshot: %s", qPrintable(path));
+    QCOMPARE(window.log().count() >= 1, true); // "Opened ..." at least
+}
+
+int main(int argc, char** argv) {
+    // As the editor does: shared 4.1 core contexts, set before the application exists.
+    QCoreApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
+    QSurfaceFormat format;
+    format.setVersion(4, 1);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    QSurfaceFormat::setDefaultFormat(format);
+    QApplication app(argc, argv);
+    QCoreApplication::setOrganizationName("GlintTest");
+    QCoreApplication::setApplicationName("glint-window-test");
+    WindowTest test;
+    return QTest::qExec(&test, argc, argv);
+}
+
+#include "window_test.moc"
