@@ -1,0 +1,155 @@
+// Failure modes of reconstruction with history, measured against per-frame converged references
+// (48 spp, another seed): disocclusion under a moving camera, a light switched off (lag), a moving
+// object (trail), and the mirror under camera motion (smear). Figures go to docs/DENOISING.md.
+#include "reconstruction_fixture.h"
+
+#include <QtTest>
+
+using namespace glint;
+using namespace glint::test;
+
+namespace {
+
+std::vector<float> ids(renderer::FrameRenderer& frames) { return frames.readImages().objectId; }
+
+double meanLuminance(const std::vector<float>& rgba) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < rgba.size(); i += 4) sum += 0.2126 * rgba[i] + 0.7152 * rgba[i + 1] + 0.0722 * rgba[i + 2];
+    return sum / static_cast<double>(rgba.size() / 4);
+}
+
+} // namespace
+
+class TestTemporalStability : public QObject {
+    Q_OBJECT
+    std::unique_ptr<Harness> h_;
+
+    // Raw 1-spp error of one frame at `camera` (a fresh accumulation, no history).
+    double rawError(const Scene& scene, const renderer::CameraSetup& camera, const std::vector<float>& reference,
+                    const std::vector<bool>& mask = {}) {
+        renderer::FrameRenderer raw;
+        raw.setSettings(settingsFor(renderer::Configuration::Accumulate));
+        raw.setScene(scene);
+        raw.setCamera(camera);
+        raw.renderFrame();
+        return relMse(raw.readImages().radiance, reference, mask);
+    }
+
+private slots:
+    void initTestCase() { h_ = std::make_unique<Harness>(); }
+
+    // Camera pans 5 cm a frame past the red box. Tolerance: over frames 4-12 Full's mean relMSE is
+    // below 0.6x the raw 1-spp error, and in the pixels disoccluded since frame 0 (id changed) it is
+    // no worse than raw samples there (ghosting would make it worse).
+    void disocclusionUnderCameraMotion() {
+        const RoomScene room = makeRoom();
+        h_->frames.setSettings(settingsFor(renderer::Configuration::Full));
+        h_->frames.setScene(room.scene);
+        h_->frame(cameraAt(room.scene, 0.0f));
+        const std::vector<float> firstIds = ids(h_->frames);
+        double full = 0.0, raw = 0.0, fullNew = 0.0, rawNew = 0.0;
+        for (int f = 1; f <= 12; ++f) {
+            const auto camera = cameraAt(room.scene, 0.05f * static_cast<float>(f));
+            const auto image = h_->frame(camera);
+            if (f < 4) continue;
+            const auto current = ids(h_->frames);
+            std::vector<bool> uncovered(current.size());
+            for (std::size_t i = 0; i < current.size(); ++i) uncovered[i] = current[i] != firstIds[i];
+            const auto reference = h_->converged(room.scene, camera);
+            full += relMse(image, reference);
+            raw += rawError(room.scene, camera, reference);
+            fullNew += relMse(image, reference, uncovered);
+            rawNew += rawError(room.scene, camera, reference, uncovered);
+            if (f == 12) dump(image, "pan_full_12"), dump(reference, "pan_reference_12");
+        }
+        qInfo("camera pan, frames 4-12: Full relMSE %.4f, raw 1 spp %.4f; disoccluded pixels: Full %.4f, raw %.4f",
+              full / 9, raw / 9, fullNew / 9, rawNew / 9);
+        QVERIFY(full < 0.6 * raw);
+        QVERIFY(fullNew <= rawNew);
+    }
+
+    // The sun goes off after 16 still frames (switched through the API, as A-SVGF's protocol does).
+    // Lag = frames until the mean luminance is within 10% of the sun-less reference's.
+    // Tolerance: at most 24 frames (measured: see docs/DENOISING.md).
+    void lightSwitchedOff() {
+        RoomScene room = makeRoom();
+        const auto camera = cameraAt(room.scene, 0.0f);
+        h_->frames.setSettings(settingsFor(renderer::Configuration::Full));
+        h_->frames.setScene(room.scene);
+        for (int f = 0; f < 16; ++f) h_->frame(camera);
+        Light off = *room.scene.at(room.sun).get<Light>();
+        off.intensity = 0.0f;
+        room.scene.setComponent(room.sun, off);
+        h_->frames.applyChanges(room.scene, nodeChange(Change::Light, room.sun));
+        const double target = meanLuminance(h_->converged(room.scene, camera));
+        int lag = -1;
+        for (int f = 1; f <= 40 && lag < 0; ++f)
+            if (std::abs(meanLuminance(h_->frame(camera)) - target) <= 0.1 * target) lag = f;
+        qInfo("light switched off: lag %d frames (Full)", lag);
+        QVERIFY(lag > 0);
+        QVERIFY(lag <= 24);
+    }
+
+    // The mirror ball under the camera pan: measured, not fixed (reflections have no valid primary
+    // motion). Tolerance: Full's error on the mirror stays below the raw 1-spp error there
+    // (SVGF's spatial filter smears, but history does not make it worse than no filter).
+    void mirrorUnderCameraMotion() {
+        const RoomScene room = makeRoom();
+        h_->frames.setSettings(settingsFor(renderer::Configuration::Full));
+        h_->frames.setScene(room.scene);
+        double full = 0.0, raw = 0.0;
+        for (int f = 0; f <= 12; ++f) {
+            const auto camera = cameraAt(room.scene, 0.05f * static_cast<float>(f));
+            const auto image = h_->frame(camera);
+            if (f < 4) continue;
+            const auto current = ids(h_->frames);
+            std::vector<bool> mirror(current.size());
+            for (std::size_t i = 0; i < current.size(); ++i) mirror[i] = current[i] == static_cast<float>(room.mirrorBall.value);
+            const auto reference = h_->converged(room.scene, camera);
+            full += relMse(image, reference, mirror);
+            raw += rawError(room.scene, camera, reference, mirror);
+        }
+        qInfo("mirror ball under camera pan, frames 4-12: Full relMSE %.4f, raw 1 spp %.4f", full / 9, raw / 9);
+        QVERIFY(full < raw);
+    }
+
+    // The box slides 4 cm a frame (transform changes through the API). Trail: pixels the box
+    // covered `age` frames ago and no longer covers. This is a known failure (a trail: the box's
+    // moving shadow and the uncovered wall keep stale history, docs/DENOISING.md). Tolerance, as
+    // measured (0.27 vs 0.16): 4 frames after the box left, Full's error there stays below twice
+    // the raw 1-spp error; a regression that makes the trail longer or brighter fails.
+    void movingObjectLeavesNoTrail() {
+        RoomScene room = makeRoom();
+        const auto camera = cameraAt(room.scene, 0.0f);
+        h_->frames.setSettings(settingsFor(renderer::Configuration::Full));
+        h_->frames.setScene(room.scene);
+        std::vector<std::vector<float>> history;
+        double full[2] = {0, 0}, raw[2] = {0, 0};
+        const int ages[2] = {2, 4};
+        const float box = static_cast<float>(room.occluder.value);
+        for (int f = 0; f <= 12; ++f) {
+            Transform t = room.scene.at(room.occluder).local;
+            t.translation.x = -0.6f + 0.04f * static_cast<float>(f);
+            room.scene.setLocal(room.occluder, t);
+            h_->frames.applyChanges(room.scene, nodeChange(Change::Transform, room.occluder));
+            const auto image = h_->frame(camera);
+            history.push_back(ids(h_->frames));
+            if (f < 6) continue;
+            const auto reference = h_->converged(room.scene, camera);
+            for (int k = 0; k < 2; ++k) {
+                const auto& then = history[static_cast<std::size_t>(f - ages[k])];
+                std::vector<bool> trail(then.size());
+                for (std::size_t i = 0; i < trail.size(); ++i) trail[i] = then[i] == box && history.back()[i] != box;
+                full[k] += relMse(image, reference, trail) / 7;
+                raw[k] += rawError(room.scene, camera, reference, trail) / 7;
+            }
+            if (f == 12) dump(image, "moving_full_12");
+        }
+        qInfo("moving box, frames 6-12, pixels it left 2 frames ago: Full relMSE %.4f, raw 1 spp %.4f", full[0], raw[0]);
+        qInfo("moving box, frames 6-12, pixels it left 4 frames ago: Full relMSE %.4f, raw 1 spp %.4f", full[1], raw[1]);
+        QVERIFY(full[1] < 2.0 * raw[1]);
+    }
+};
+
+QTEST_APPLESS_MAIN(TestTemporalStability)
+#include "test_temporal_stability.moc"
