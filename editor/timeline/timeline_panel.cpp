@@ -1,4 +1,4 @@
-#include "editor/timeline/timeline.h"
+#include "editor/timeline/timeline_panel.h"
 
 #include "editor/document/document.h"
 #include "editor/timeline/time_ruler.h"
@@ -23,7 +23,7 @@ constexpr double kDegrees = 180.0 / std::numbers::pi;
 
 } // namespace
 
-Timeline::Timeline(Document& document, QWidget* parent) : QWidget(parent), document_(document) {
+TimelinePanel::TimelinePanel(Document& document, QWidget* parent) : QWidget(parent), document_(document) {
     setAccessibleName(tr("Timeline"));
     createActions();
     auto* layout = new QVBoxLayout(this);
@@ -43,7 +43,7 @@ Timeline::Timeline(Document& document, QWidget* parent) : QWidget(parent), docum
     layout->addWidget(createKeyEditor());
 
     timer_.setTimerType(Qt::PreciseTimer);
-    connect(&timer_, &QTimer::timeout, this, &Timeline::stepFrame);
+    connect(&timer_, &QTimer::timeout, this, &TimelinePanel::stepFrame);
     connect(cameras_, &QComboBox::activated, this, [this](int i) { setCamera(NodeId{cameras_->itemData(i).toUInt()}); });
     connect(ruler_, &TimeRuler::keySelected, this, [this] { refreshKeyEditor(); });
     connect(&document_, &Document::changed, this, [this] {
@@ -62,18 +62,18 @@ Timeline::Timeline(Document& document, QWidget* parent) : QWidget(parent), docum
     refreshKeyEditor();
 }
 
-void Timeline::createActions() {
+void TimelinePanel::createActions() {
     addKey_ = new QAction(tr("Add key"), this);
     addKey_->setToolTip(tr("Add a camera-path key from the current view at the current time"));
-    connect(addKey_, &QAction::triggered, this, &Timeline::addKey);
+    connect(addKey_, &QAction::triggered, this, &TimelinePanel::addKey);
     deleteKey_ = new QAction(tr("Delete key"), this);
-    connect(deleteKey_, &QAction::triggered, this, &Timeline::deleteKey);
+    connect(deleteKey_, &QAction::triggered, this, &TimelinePanel::deleteKey);
     play_ = new QAction(tr("Play"), this);
     play_->setCheckable(true);
     play_->setShortcut(Qt::Key_Space);
     play_->setShortcutContext(Qt::WidgetWithChildrenShortcut);
     addAction(play_);
-    connect(play_, &QAction::toggled, this, &Timeline::setPlaying);
+    connect(play_, &QAction::toggled, this, &TimelinePanel::setPlaying);
     loop_ = new QAction(tr("Loop"), this);
     loop_->setCheckable(true);
     loop_->setChecked(true);
@@ -86,7 +86,7 @@ void Timeline::createActions() {
     });
 }
 
-QWidget* Timeline::createKeyEditor() {
+QWidget* TimelinePanel::createKeyEditor() {
     auto* editor = new QWidget(this);
     auto* row = new QHBoxLayout(editor);
     row->setContentsMargins(0, 0, 0, 0);
@@ -101,23 +101,23 @@ QWidget* Timeline::createKeyEditor() {
         row->addWidget(field);
         keyFields_[i] = field;
         if (i == 6) field->setReadOnly(true); // times change by dragging the key (MoveCameraKey)
-        else connect(field, &QDoubleSpinBox::valueChanged, this, &Timeline::editSelectedKey);
+        else connect(field, &QDoubleSpinBox::valueChanged, this, &TimelinePanel::editSelectedKey);
     }
     return editor;
 }
 
-double Timeline::fps() const {
+double TimelinePanel::fps() const {
     const auto& t = document_.scene().settings.timeline;
     return t.fpsDenominator > 0 && t.fpsNumerator > 0 ? double(t.fpsNumerator) / t.fpsDenominator : 24.0;
 }
 
-const CameraPath* Timeline::path() const {
+const CameraPath* TimelinePanel::path() const {
     if (!camera_.valid() || !document_.scene().contains(camera_)) return nullptr;
     const auto* c = document_.scene().at(camera_).get<Camera>();
     return c ? &c->path : nullptr;
 }
 
-void Timeline::setCamera(NodeId camera) {
+void TimelinePanel::setCamera(NodeId camera) {
     if (camera == camera_) return;
     camera_ = camera;
     ruler_->setCamera(camera);
@@ -125,7 +125,7 @@ void Timeline::setCamera(NodeId camera) {
     refreshKeyEditor();
 }
 
-void Timeline::refreshCameras() {
+void TimelinePanel::refreshCameras() {
     const Scene& scene = document_.scene();
     if (camera_.valid() && !(scene.contains(camera_) && scene.at(camera_).get<Camera>())) camera_ = {};
     QSignalBlocker block(cameras_);
@@ -148,7 +148,7 @@ void Timeline::refreshCameras() {
     constantSpeed_->setEnabled(p && !p->empty());
 }
 
-void Timeline::refreshKeyEditor() {
+void TimelinePanel::refreshKeyEditor() {
     const CameraPath* p = path();
     const auto key = ruler_->selectedKey();
     const bool has = p && key && *key < p->keys.size();
@@ -163,7 +163,7 @@ void Timeline::refreshKeyEditor() {
     refreshing_ = false;
 }
 
-void Timeline::editSelectedKey() {
+void TimelinePanel::editSelectedKey() {
     const CameraPath* p = path();
     const auto key = ruler_->selectedKey();
     if (refreshing_ || !p || !key || *key >= p->keys.size()) return;
@@ -176,7 +176,7 @@ void Timeline::editSelectedKey() {
     document_.push(std::make_unique<EditCameraKey>(camera_, *key, k));
 }
 
-void Timeline::addKey() {
+void TimelinePanel::addKey() {
     if (!camera_.valid() && cameraMaker_) setCamera(cameraMaker_());
     if (!camera_.valid() || !keySource_) return;
     const double t = document_.currentTime();
@@ -196,7 +196,7 @@ void Timeline::addKey() {
         if (p->keys[i].time == t) ruler_->setSelectedKey(i);
 }
 
-void Timeline::deleteKey() {
+void TimelinePanel::deleteKey() {
     const auto key = ruler_->selectedKey();
     const CameraPath* p = path();
     if (!p || !key || *key >= p->keys.size()) return;
@@ -204,14 +204,14 @@ void Timeline::deleteKey() {
     document_.push(std::make_unique<RemoveCameraKey>(camera_, *key));
 }
 
-void Timeline::setPlaying(bool on) {
+void TimelinePanel::setPlaying(bool on) {
     if (on) timer_.start(std::max(1, int(std::lround(1000.0 / fps()))));
     else timer_.stop();
     QSignalBlocker block(play_);
     play_->setChecked(on);
 }
 
-void Timeline::stepFrame() {
+void TimelinePanel::stepFrame() {
     // Frames are t0 + k / fps exactly (CONTRACTS.md): step the frame number, not the clock.
     const double t0 = document_.scene().settings.timeline.start;
     const long long frame = std::llround((document_.currentTime() - t0) * fps()) + 1;

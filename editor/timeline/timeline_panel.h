@@ -22,10 +22,10 @@ namespace glint::editor {
 class Document;
 class TimeRuler;
 
-class Timeline : public QWidget {
+class TimelinePanel : public QWidget {
     Q_OBJECT
 public:
-    Timeline(Document& document, QWidget* parent = nullptr);
+    TimelinePanel(Document& document, QWidget* parent = nullptr);
 
     // Where "add key" takes its pose from (the viewport: keyFromView), and how to get a camera
     // when the scene has none (the viewport's "make scene camera").

@@ -96,6 +96,7 @@ void RenderView::releaseGl() {
 void RenderView::initializeGL() {
     connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &RenderView::releaseGl, Qt::UniqueConnection);
     renderer_ = std::make_unique<renderer::FrameRenderer>();
+    ++stats_.contexts;
     fullUpload_ = true;
     timeDirty_ = true;
 }
@@ -176,7 +177,7 @@ void RenderView::renderSlice(bool moving, int divisor) {
         renderer_->renderFrame();
         renderer::raster::finishGpuWork();
         last = double(frame.nsecsElapsed()) / 1e6;
-        budget_.report(last, divisor);
+        budget_.report(last, divisor, moving);
         ++stats_.framesThisPaint;
     } while (!moving && !converged() && budget_.anotherFits(double(paint.nsecsElapsed()) / 1e6, last));
     stats_.frameMs = last;
@@ -186,7 +187,10 @@ void RenderView::renderSlice(bool moving, int divisor) {
 void RenderView::paintGL() {
     if (!renderer_) return;
     const bool isMoving = moving();
-    if (isMoving || stillDivisor_ == 0) stillDivisor_ = budget_.resolutionDivisor(false);
+    // The still divisor is locked while the view rests (a change restarts accumulation), except
+    // that an overrunning still frame may coarsen it at once.
+    if (isMoving || stillDivisor_ == 0 || budget_.resolutionDivisor(false) > stillDivisor_)
+        stillDivisor_ = budget_.resolutionDivisor(false);
     const int divisor = isMoving ? budget_.resolutionDivisor(true) : stillDivisor_;
     stats_.divisor = divisor;
     try {

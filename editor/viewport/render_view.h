@@ -38,6 +38,7 @@ struct ViewportStats {
     double frameMs = 0.0;   // the last frame alone
     int divisor = 1;        // resolution divisor of the last frame
     long long paints = 0;
+    int contexts = 0;       // GL contexts this view has built its GPU scene in (re-docking makes new ones)
     QString error;          // why nothing is drawn (scene too big for the GPU, ...), or empty
 };
 

@@ -1,0 +1,140 @@
+// The viewport in a real window under Xvfb: it shows a non-black path-traced image within a few
+// frames, a click selects the node under the cursor, a gizmo drag is one undo step whose undo
+// restores the exact transform, navigation never dirties the file. 128x96 px, llvmpipe.
+#include "test_viewport_scene.h"
+
+#include "editor/viewport/render_view.h"
+#include "editor/viewport/viewport.h"
+
+#include <QAction>
+#include <QElapsedTimer>
+#include <QMainWindow>
+#include <QMouseEvent>
+#include <QtTest>
+
+using namespace glint;
+using namespace glint::editor;
+
+namespace {
+
+constexpr int kMaxWaitMs = 20000;
+
+// Processes events until `done` or the time runs out; returns done().
+template <class F> bool waitFor(F done, int ms = kMaxWaitMs) {
+    QElapsedTimer t;
+    t.start();
+    while (!done() && t.elapsed() < ms) QTest::qWait(5);
+    return done();
+}
+
+void sendMouse(QWidget& w, QEvent::Type type, QPointF at, Qt::MouseButton button, Qt::MouseButtons buttons) {
+    QMouseEvent event(type, at, w.mapToGlobal(at), button, buttons, Qt::NoModifier);
+    QCoreApplication::sendEvent(&w, &event);
+}
+
+} // namespace
+
+class TestViewportRender : public QObject {
+    Q_OBJECT
+private slots:
+    void init() {
+        document_ = std::make_unique<Document>();
+        scene_ = test::buildShapesScene(*document_);
+        window_ = std::make_unique<QMainWindow>();
+        viewport_ = new Viewport(*document_, window_.get());
+        window_->setCentralWidget(viewport_);
+        window_->resize(128, 96);
+        window_->show();
+        QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+    }
+    void cleanup() {
+        window_.reset();
+        document_.reset();
+    }
+
+    void rendersANonBlackImageWithinFrames() {
+        RenderView& view = viewport_->view();
+        // N = 30 paints: the first frame of the still configuration already shows the scene.
+        QVERIFY2(waitFor([&] { return view.stats().samples >= 4 || view.stats().paints >= 30; }), "no frames");
+        QVERIFY2(view.stats().error.isEmpty(), qPrintable(view.stats().error));
+        QVERIFY(view.stats().paints <= 30);
+        const test::ImageStats s = test::imageStats(view.grabFramebuffer());
+        qInfo("paints %lld, samples %d, last frame %.1f ms, paint %.1f ms, non-black %.3f, mean %.3f", view.stats().paints,
+              view.stats().samples, view.stats().frameMs, view.stats().paintMs, s.nonBlack, s.mean);
+        QVERIFY(s.nonBlack > 0.95); // grey sky and lit shapes everywhere
+        QVERIFY(s.mean > 0.15);
+    }
+
+    void clickSelectsTheNodeUnderTheCursor() {
+        RenderView& view = viewport_->view();
+        const auto sphere = view.project({-1.2, 0.0, 0.0});
+        const auto box = view.project({1.2, 0.0, 0.0});
+        QVERIFY(sphere && box);
+        QTest::mouseClick(&view, Qt::LeftButton, {}, sphere->toPoint());
+        QCOMPARE(document_->selection(), std::vector<NodeId>{scene_.sphere});
+        QTest::mouseClick(&view, Qt::LeftButton, Qt::ShiftModifier, box->toPoint());
+        QCOMPARE(document_->selection(), (std::vector<NodeId>{scene_.sphere, scene_.box}));
+        QTest::mouseClick(&view, Qt::LeftButton, {}, QPoint(64, 2)); // the sky
+        QVERIFY(document_->selection().empty());
+        QVERIFY(!document_->isModified()); // selecting never dirties the file
+    }
+
+    void gizmoDragIsOneUndoStepWithExactUndo() {
+        RenderView& view = viewport_->view();
+        document_->setSelection({scene_.box});
+        const Transform before = document_->scene().at(scene_.box).local;
+        const std::size_t steps = document_->history().count();
+        const GizmoFrame frame = view.gizmoFrame(scene_.box);
+        const auto grab = view.project(frame.origin + 0.7 * frame.size * frame.axes[0]);
+        QVERIFY(grab);
+        sendMouse(view, QEvent::MouseButtonPress, *grab, Qt::LeftButton, Qt::LeftButton);
+        for (int i = 1; i <= 6; ++i)
+            sendMouse(view, QEvent::MouseMove, *grab + QPointF(3.0 * i, 1.0 * i), Qt::NoButton, Qt::LeftButton);
+        sendMouse(view, QEvent::MouseButtonRelease, *grab + QPointF(18, 6), Qt::LeftButton, Qt::NoButton);
+        const Transform after = document_->scene().at(scene_.box).local;
+        QCOMPARE(document_->history().count(), steps + 1);
+        QVERIFY(after.translation.x > before.translation.x + 0.05f); // moved right along X only
+        QCOMPARE(after.translation.y, before.translation.y);
+        QCOMPARE(after.translation.z, before.translation.z);
+        document_->undo();
+        QCOMPARE(document_->scene().at(scene_.box).local, before);
+        document_->redo();
+        QCOMPARE(document_->scene().at(scene_.box).local, after);
+    }
+
+    void navigationDoesNotDirtyTheDocument() {
+        RenderView& view = viewport_->view();
+        const ViewCamera start = view.camera();
+        sendMouse(view, QEvent::MouseButtonPress, {64, 48}, Qt::MiddleButton, Qt::MiddleButton);
+        sendMouse(view, QEvent::MouseMove, {90, 40}, Qt::NoButton, Qt::MiddleButton);
+        sendMouse(view, QEvent::MouseButtonRelease, {90, 40}, Qt::MiddleButton, Qt::NoButton);
+        QVERIFY(!(view.camera() == start));
+        QVERIFY(!document_->isModified());
+        QCOMPARE(document_->history().count(), std::size_t(3));
+    }
+
+    void makeSceneCameraIsUndoable() {
+        const std::size_t nodes = document_->scene().nodeCount();
+        const NodeId camera = viewport_->makeSceneCamera();
+        QCOMPARE(document_->scene().nodeCount(), nodes + 1);
+        const glm::vec3 position = glm::vec3(document_->scene().worldFromNode(camera)[3]);
+        QVERIFY(glm::length(position - glm::vec3(viewport_->view().camera().position())) < 1e-5f);
+        document_->undo();
+        QCOMPARE(document_->scene().nodeCount(), nodes);
+    }
+
+private:
+    std::unique_ptr<Document> document_;
+    test::ShapesScene scene_;
+    std::unique_ptr<QMainWindow> window_;
+    Viewport* viewport_ = nullptr;
+};
+
+int main(int argc, char** argv) {
+    glint::test::prepareGlApplication();
+    QApplication app(argc, argv);
+    TestViewportRender test;
+    return QTest::qExec(&test, argc, argv);
+}
+
+#include "test_viewport_render.moc"
