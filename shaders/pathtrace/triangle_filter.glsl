@@ -23,6 +23,9 @@ float surfaceAlpha(int material, int slot, int instance, vec3 tuv, vec3 localDir
 }
 
 bool bvhAcceptTriangle(int instance, int slot, vec3 tuv, vec3 localDirection) {
+#ifndef HAS_ALPHA
+    if (!gCullBackFaces) return true; // secondary rays of an alpha-free scene: no fetches
+#endif
     uvec4 vertices = bvhTriangleVertices(slot);
     int material = int(vertices.w);
     vec4 mode = materialTexel(material, 5); // alpha mode, cutoff, double-sided
