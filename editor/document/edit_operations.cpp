@@ -11,7 +11,6 @@
 namespace glint::editor {
 namespace {
 
-QString trOp(const char* text) { return QCoreApplication::translate("glint::editor::EditOperations", text); }
 
 // The selected nodes that are not inside another selected node, in scene order.
 std::vector<NodeId> topLevelSelection(const Document& document) {
@@ -43,17 +42,17 @@ QString inMacro(Document& document, const QString& label, Body body) {
 
 QString deleteSelection(Document& document) {
     const std::vector<NodeId> nodes = topLevelSelection(document);
-    if (nodes.empty()) return trOp("Nothing is selected.");
-    return inMacro(document, trOp("Delete"), [&] {
+    if (nodes.empty()) return QCoreApplication::translate("glint::editor::EditOperations", "Nothing is selected.");
+    return inMacro(document, QCoreApplication::translate("glint::editor::EditOperations", "Delete"), [&] {
         for (NodeId id : nodes) document.push(std::make_unique<RemoveNode>(id));
     });
 }
 
 QString duplicateSelection(Document& document) {
     const std::vector<NodeId> nodes = topLevelSelection(document);
-    if (nodes.empty()) return trOp("Nothing is selected.");
+    if (nodes.empty()) return QCoreApplication::translate("glint::editor::EditOperations", "Nothing is selected.");
     std::vector<NodeId> copies;
-    QString error = inMacro(document, trOp("Duplicate"), [&] {
+    QString error = inMacro(document, QCoreApplication::translate("glint::editor::EditOperations", "Duplicate"), [&] {
         for (NodeId id : nodes) {
             auto command = std::make_unique<DuplicateNode>(id);
             DuplicateNode* raw = command.get();
@@ -85,7 +84,7 @@ QString addNode(Document& document, const QString& name, Component component) {
 
 QString renameNode(Document& document, NodeId id, const QString& name) {
     const Node* node = document.scene().node(id);
-    if (!node) return trOp("The node no longer exists.");
+    if (!node) return QCoreApplication::translate("glint::editor::EditOperations", "The node no longer exists.");
     if (node->name == name.toStdString()) return {};
     try {
         document.push(std::make_unique<RenameNode>(id, name.toStdString()));
@@ -99,8 +98,8 @@ QString reparentNodes(Document& document, const std::vector<NodeId>& nodes, Node
     const Scene& scene = document.scene();
     for (NodeId id : nodes)
         if (id == parent || (parent && scene.isAncestor(id, parent)))
-            return trOp("A node cannot be moved into itself or its own children.");
-    QString error = inMacro(document, trOp("Reparent"), [&] {
+            return QCoreApplication::translate("glint::editor::EditOperations", "A node cannot be moved into itself or its own children.");
+    QString error = inMacro(document, QCoreApplication::translate("glint::editor::EditOperations", "Reparent"), [&] {
         std::size_t at = index;
         for (NodeId id : nodes) {
             document.push(std::make_unique<ReparentNode>(id, parent, at, true));
@@ -113,7 +112,7 @@ QString reparentNodes(Document& document, const std::vector<NodeId>& nodes, Node
 
 QString setVisible(Document& document, NodeId id, bool visible) {
     const Node* node = document.scene().node(id);
-    if (!node) return trOp("The node no longer exists.");
+    if (!node) return QCoreApplication::translate("glint::editor::EditOperations", "The node no longer exists.");
     if (node->visible == visible) return {};
     try {
         document.push(std::make_unique<SetVisibility>(id, visible));

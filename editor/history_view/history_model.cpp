@@ -1,5 +1,7 @@
 #include "history_model.h"
 
+#include "command_labels.h"
+
 #include "editor/document/document.h"
 
 #include <QFont>
@@ -28,7 +30,7 @@ QVariant HistoryModel::data(const QModelIndex& index, int role) const {
     switch (role) {
     case Qt::DisplayRole:
     case Qt::AccessibleTextRole: {
-        QString text = row == 0 ? tr("<empty>") : tr(history.label(row - 1).c_str());
+        QString text = row == 0 ? tr("<empty>") : commandLabel(history.label(row - 1));
         if (history.cleanIndex() == row) text += tr(" (saved)");
         return text;
     }

@@ -6,6 +6,7 @@
 
 #include "editor/document/document.h"
 #include "editor/document/edit_operations.h"
+#include "editor/history_view/command_labels.h"
 #include "editor/outliner/outliner_panel.h"
 #include "editor/preferences/preferences_dialog.h"
 
@@ -197,8 +198,8 @@ void MainWindow::updateUndoActions() {
     const History& history = document_->history();
     undo_->setEnabled(history.canUndo());
     redo_->setEnabled(history.canRedo());
-    undo_->setText(history.canUndo() ? tr("&Undo %1").arg(tr(history.label(history.index() - 1).c_str())) : tr("&Undo"));
-    redo_->setText(history.canRedo() ? tr("&Redo %1").arg(tr(history.label(history.index()).c_str())) : tr("&Redo"));
+    undo_->setText(history.canUndo() ? tr("&Undo %1").arg(commandLabel(history.label(history.index() - 1))) : tr("&Undo"));
+    redo_->setText(history.canRedo() ? tr("&Redo %1").arg(commandLabel(history.label(history.index()))) : tr("&Redo"));
     const bool selected = !document_->selection().empty();
     delete_->setEnabled(selected);
     duplicate_->setEnabled(selected);

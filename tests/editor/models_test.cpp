@@ -5,9 +5,11 @@
 #include "editor/document/edit_operations.h"
 #include "editor/history_view/history_model.h"
 #include "editor/outliner/outliner_model.h"
+#include "editor/preferences/language.h"
 
 #include <QAbstractItemModelTester>
 #include <QApplication>
+#include <QFile>
 #include <QMimeData>
 
 #include <glm/gtc/matrix_access.hpp>
@@ -25,6 +27,7 @@ private slots:
     void historyModelListsLabelsAndJumps();
     void importMergesAsOneStep();
     void selectionComesBackOnUndo();
+    void translationsAreCompleteAndLoad();
 };
 
 void ModelsTest::outlinerFollowsTheDocument() {
@@ -154,6 +157,25 @@ void ModelsTest::selectionComesBackOnUndo() {
     QVERIFY(document.selection().empty());
     document.undo();
     QCOMPARE(document.selection(), std::vector<NodeId>{floor});
+}
+
+void ModelsTest::translationsAreCompleteAndLoad() {
+    for (const char* lang : {"it", "de", "fr", "es"}) {
+        QFile ts(QStringLiteral(GLINT_TRANSLATIONS_DIR "/glint_%1.ts").arg(lang));
+        QVERIFY(ts.open(QIODevice::ReadOnly));
+        const QByteArray text = ts.readAll();
+        QVERIFY2(!text.contains("type=\"unfinished\""), lang);
+        QVERIFY(text.count("<translation") > 250);
+        Translations translations;
+        auto* app = QCoreApplication::instance();
+        QCOMPARE(translations.install(*app, lang), QString(lang));
+        // A string of the main window, one of a panel and one from the scene core's labels.
+        QVERIFY(QCoreApplication::translate("glint::editor::MainWindow", "&Save") != "&Save");
+        QVERIFY(QCoreApplication::translate("glint::editor::PropertyForm", "Roughness") != "Roughness");
+        QVERIFY(QCoreApplication::translate("glint::editor::CommandLabels", "Rename") != "Rename");
+        translations.install(*app, "en");
+    }
+    QCOMPARE(QCoreApplication::translate("glint::editor::MainWindow", "&Save"), QString("&Save"));
 }
 
 QTEST_MAIN(ModelsTest)

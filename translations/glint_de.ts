@@ -1,0 +1,1302 @@
+<?xml version='1.0' encoding='utf-8'?>
+<TS version="2.1" language="de" sourcelanguage="en">
+<context>
+    <name>RenderView</name>
+    <message>
+        <source>Viewport</source>
+        <translation>Ansicht</translation>
+    </message>
+    <message>
+        <source>A</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <source>B</source>
+        <translation>B</translation>
+    </message>
+    <message>
+        <source>Pixel %1, %2
+R %3  G %4  B %5 (linear)</source>
+        <translation>Pixel %1, %2
+R %3  G %4  B %5 (linear)</translation>
+    </message>
+</context>
+<context>
+    <name>TimeRuler</name>
+    <message>
+        <source>Time ruler</source>
+        <translation>Zeitlineal</translation>
+    </message>
+</context>
+<context>
+    <name>TimelinePanel</name>
+    <message>
+        <source>Timeline</source>
+        <translation>Zeitleiste</translation>
+    </message>
+    <message>
+        <source>Path camera</source>
+        <translation>Pfadkamera</translation>
+    </message>
+    <message>
+        <source>  %1 s  (frame %2)</source>
+        <translation>  %1 s  (Bild %2)</translation>
+    </message>
+    <message>
+        <source>Add key</source>
+        <translation>Schlüssel hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add a camera-path key from the current view at the current time</source>
+        <translation>Fügt aus der aktuellen Ansicht einen Kamerapfad-Schlüssel zur aktuellen Zeit hinzu</translation>
+    </message>
+    <message>
+        <source>Delete key</source>
+        <translation>Schlüssel löschen</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Abspielen</translation>
+    </message>
+    <message>
+        <source>Loop</source>
+        <translation>Schleife</translation>
+    </message>
+    <message>
+        <source>Constant speed</source>
+        <translation>Konstante Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>X</source>
+        <translation>X</translation>
+    </message>
+    <message>
+        <source>Y</source>
+        <translation>Y</translation>
+    </message>
+    <message>
+        <source>Z</source>
+        <translation>Z</translation>
+    </message>
+    <message>
+        <source>FOV</source>
+        <translation>Sichtfeld</translation>
+    </message>
+    <message>
+        <source>Focus</source>
+        <translation>Fokus</translation>
+    </message>
+    <message>
+        <source>Lens</source>
+        <translation>Objektiv</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source>Key %1</source>
+        <translation>Schlüssel %1</translation>
+    </message>
+</context>
+<context>
+    <name>Viewport</name>
+    <message>
+        <source>Path traced</source>
+        <translation>Pathtracing</translation>
+    </message>
+    <message>
+        <source>Solid</source>
+        <translation>Volumen</translation>
+    </message>
+    <message>
+        <source>Wireframe</source>
+        <translation>Drahtgitter</translation>
+    </message>
+    <message>
+        <source>Normals</source>
+        <translation>Normalen</translation>
+    </message>
+    <message>
+        <source>Albedo</source>
+        <translation>Albedo</translation>
+    </message>
+    <message>
+        <source>Ambient occlusion</source>
+        <translation>Umgebungsverdeckung</translation>
+    </message>
+    <message>
+        <source>Motion vectors</source>
+        <translation>Bewegungsvektoren</translation>
+    </message>
+    <message>
+        <source>Variance</source>
+        <translation>Varianz</translation>
+    </message>
+    <message>
+        <source>Depth</source>
+        <translation>Tiefe</translation>
+    </message>
+    <message>
+        <source>Viewport</source>
+        <translation>Ansicht</translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation>Verschieben</translation>
+    </message>
+    <message>
+        <source>Rotate</source>
+        <translation>Drehen</translation>
+    </message>
+    <message>
+        <source>Scale</source>
+        <translation>Skalieren</translation>
+    </message>
+    <message>
+        <source>Frame selection</source>
+        <translation>Auswahl einpassen</translation>
+    </message>
+    <message>
+        <source>Make scene camera from view</source>
+        <translation>Szenenkamera aus Ansicht erstellen</translation>
+    </message>
+    <message>
+        <source>Look through selected camera</source>
+        <translation>Durch ausgewählte Kamera sehen</translation>
+    </message>
+    <message>
+        <source>Snap (Ctrl inverts while dragging)</source>
+        <translation>Einrasten (Strg kehrt beim Ziehen um)</translation>
+    </message>
+    <message>
+        <source>Pixel inspector</source>
+        <translation>Pixel-Inspektor</translation>
+    </message>
+    <message>
+        <source>Take snapshot A</source>
+        <translation>Schnappschuss A aufnehmen</translation>
+    </message>
+    <message>
+        <source>Compare A | B</source>
+        <translation>A | B vergleichen</translation>
+    </message>
+    <message>
+        <source>%1 spp  |  %2 ms/frame  |  1/%3 resolution%4</source>
+        <translation>%1 spp  |  %2 ms/Bild  |  1/%3 Auflösung%4</translation>
+    </message>
+    <message>
+        <source>  |  paused</source>
+        <translation>  |  angehalten</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::Autosave</name>
+    <message>
+        <source>Cannot create the autosave folder %1</source>
+        <translation>Der Ordner für automatisches Speichern %1 kann nicht angelegt werden</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::ColorField</name>
+    <message>
+        <source>Choose a colour</source>
+        <translation>Farbe wählen</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::CommandLabels</name>
+    <message>
+        <source>Rename</source>
+        <translation>Umbenennen</translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation>Verschieben</translation>
+    </message>
+    <message>
+        <source>Show/hide</source>
+        <translation>Ein-/ausblenden</translation>
+    </message>
+    <message>
+        <source>Edit component</source>
+        <translation>Komponente bearbeiten</translation>
+    </message>
+    <message>
+        <source>Reparent</source>
+        <translation>Neu zuordnen</translation>
+    </message>
+    <message>
+        <source>Edit settings</source>
+        <translation>Einstellungen bearbeiten</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Löschen</translation>
+    </message>
+    <message>
+        <source>Duplicate</source>
+        <translation>Duplizieren</translation>
+    </message>
+    <message>
+        <source>Add camera key</source>
+        <translation>Kameraschlüssel hinzufügen</translation>
+    </message>
+    <message>
+        <source>Edit camera key</source>
+        <translation>Kameraschlüssel bearbeiten</translation>
+    </message>
+    <message>
+        <source>Move camera key</source>
+        <translation>Kameraschlüssel verschieben</translation>
+    </message>
+    <message>
+        <source>Remove camera key</source>
+        <translation>Kameraschlüssel entfernen</translation>
+    </message>
+    <message>
+        <source>Camera path mode</source>
+        <translation>Kamerapfad-Modus</translation>
+    </message>
+    <message>
+        <source>mesh</source>
+        <translation>Netz</translation>
+    </message>
+    <message>
+        <source>material</source>
+        <translation>Material</translation>
+    </message>
+    <message>
+        <source>texture</source>
+        <translation>Textur</translation>
+    </message>
+    <message>
+        <source>image</source>
+        <translation>Bild</translation>
+    </message>
+    <message>
+        <source>sampler</source>
+        <translation>Sampler</translation>
+    </message>
+    <message>
+        <source>Add %1</source>
+        <translation>%1 hinzufügen</translation>
+    </message>
+    <message>
+        <source>Remove %1</source>
+        <translation>%1 entfernen</translation>
+    </message>
+    <message>
+        <source>Duplicate %1</source>
+        <translation>%1 duplizieren</translation>
+    </message>
+    <message>
+        <source>Edit %1</source>
+        <translation>%1 bearbeiten</translation>
+    </message>
+    <message>
+        <source>Import %1</source>
+        <translation>%1 importieren</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::Document</name>
+    <message>
+        <source>The scene has no file name yet: use Save As.</source>
+        <translation>Die Szene hat noch keinen Dateinamen: Speichern unter verwenden.</translation>
+    </message>
+    <message>
+        <source>Import %1</source>
+        <translation>%1 importieren</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>Unbenannt</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::EditOperations</name>
+    <message>
+        <source>Nothing is selected.</source>
+        <translation>Nichts ist ausgewählt.</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Löschen</translation>
+    </message>
+    <message>
+        <source>Duplicate</source>
+        <translation>Duplizieren</translation>
+    </message>
+    <message>
+        <source>The node no longer exists.</source>
+        <translation>Der Knoten existiert nicht mehr.</translation>
+    </message>
+    <message>
+        <source>A node cannot be moved into itself or its own children.</source>
+        <translation>Ein Knoten kann nicht in sich selbst oder seine Kinder verschoben werden.</translation>
+    </message>
+    <message>
+        <source>Reparent</source>
+        <translation>Neu zuordnen</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::HistoryModel</name>
+    <message>
+        <source>&lt;empty&gt;</source>
+        <translation>&lt;leer&gt;</translation>
+    </message>
+    <message>
+        <source> (saved)</source>
+        <translation> (gespeichert)</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::HistoryPanel</name>
+    <message>
+        <source>Undo history</source>
+        <translation>Rückgängig-Verlauf</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::LogPanel</name>
+    <message>
+        <source>Log messages</source>
+        <translation>Protokollmeldungen</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Leeren</translation>
+    </message>
+    <message>
+        <source>Clear the log</source>
+        <translation>Protokoll leeren</translation>
+    </message>
+    <message>
+        <source>info</source>
+        <translation>Info</translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation>Warnung</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>Fehler</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::MainWindow</name>
+    <message>
+        <source>Glint scene editor</source>
+        <translation>Glint-Szeneneditor</translation>
+    </message>
+    <message>
+        <source>Scene to open</source>
+        <translation>Zu öffnende Szene</translation>
+    </message>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation>Automatisches Speichern fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>The viewport is not available in this build.</source>
+        <translation>Die Ansicht ist in diesem Build nicht verfügbar.</translation>
+    </message>
+    <message>
+        <source>Viewport</source>
+        <translation>Ansicht</translation>
+    </message>
+    <message>
+        <source>Outliner</source>
+        <translation>Gliederung</translation>
+    </message>
+    <message>
+        <source>Undo history</source>
+        <translation>Rückgängig-Verlauf</translation>
+    </message>
+    <message>
+        <source>Properties</source>
+        <translation>Eigenschaften</translation>
+    </message>
+    <message>
+        <source>Scene</source>
+        <translation>Szene</translation>
+    </message>
+    <message>
+        <source>Log</source>
+        <translation>Protokoll</translation>
+    </message>
+    <message>
+        <source>Nothing selected</source>
+        <translation>Nichts ausgewählt</translation>
+    </message>
+    <message>
+        <source>Selected: %1</source>
+        <translation>Ausgewählt: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n nodes selected</source>
+        <translation><numerusform>%n Knoten ausgewählt</numerusform><numerusform>%n Knoten ausgewählt</numerusform></translation>
+    </message>
+    <message>
+        <source>%1 nodes, %2 triangles, configuration: %3</source>
+        <translation>%1 Knoten, %2 Dreiecke, Konfiguration: %3</translation>
+    </message>
+    <message>
+        <source>Selection</source>
+        <translation>Auswahl</translation>
+    </message>
+    <message>
+        <source>Scene statistics</source>
+        <translation>Szenenstatistik</translation>
+    </message>
+    <message>
+        <source>Render progress</source>
+        <translation>Renderfortschritt</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <source>"%1" has unsaved changes. Save them first?</source>
+        <translation>"%1" hat ungespeicherte Änderungen. Zuerst speichern?</translation>
+    </message>
+    <message>
+        <source>Cannot open %1: %2</source>
+        <translation>%1 kann nicht geöffnet werden: %2</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Öffnen</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>%1 geöffnet</translation>
+    </message>
+    <message>
+        <source>Cannot import %1: %2</source>
+        <translation>%1 kann nicht importiert werden: %2</translation>
+    </message>
+    <message>
+        <source>Imported %1</source>
+        <translation>%1 importiert</translation>
+    </message>
+    <message>
+        <source>Cannot save: %1</source>
+        <translation>Speichern nicht möglich: %1</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message>
+        <source>Save scene</source>
+        <translation>Szene speichern</translation>
+    </message>
+    <message>
+        <source>glTF scenes (*.gltf *.glb)</source>
+        <translation>glTF-Szenen (*.gltf *.glb)</translation>
+    </message>
+    <message>
+        <source>Cannot save %1: %2</source>
+        <translation>%1 kann nicht gespeichert werden: %2</translation>
+    </message>
+    <message>
+        <source>an untitled scene</source>
+        <translation>eine unbenannte Szene</translation>
+    </message>
+    <message>
+        <source>Recover unsaved work</source>
+        <translation>Ungespeicherte Arbeit wiederherstellen</translation>
+    </message>
+    <message>
+        <source>Glint did not close normally last time. Recover the autosaved copy of %1?</source>
+        <translation>Glint wurde zuletzt nicht normal beendet. Die automatisch gespeicherte Kopie von %1 wiederherstellen?</translation>
+    </message>
+    <message>
+        <source>Cannot recover the autosaved copy: %1</source>
+        <translation>Die automatisch gespeicherte Kopie kann nicht wiederhergestellt werden: %1</translation>
+    </message>
+    <message>
+        <source>Recovered the autosaved copy of %1</source>
+        <translation>Automatisch gespeicherte Kopie von %1 wiederhergestellt</translation>
+    </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>&amp;Neu</translation>
+    </message>
+    <message>
+        <source>&amp;Open...</source>
+        <translation>Ö&amp;ffnen...</translation>
+    </message>
+    <message>
+        <source>Open scene</source>
+        <translation>Szene öffnen</translation>
+    </message>
+    <message>
+        <source>Scenes (*.gltf *.glb *.glint.json);;All files (*)</source>
+        <translation>Szenen (*.gltf *.glb *.glint.json);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>&amp;Import...</source>
+        <translation>&amp;Importieren...</translation>
+    </message>
+    <message>
+        <source>Import into the scene</source>
+        <translation>In die Szene importieren</translation>
+    </message>
+    <message>
+        <source>Scenes and models (*.gltf *.glb *.obj *.ply *.stl *.fbx *.dae *.3ds);;All files (*)</source>
+        <translation>Szenen und Modelle (*.gltf *.glb *.obj *.ply *.stl *.fbx *.dae *.3ds);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Speichern</translation>
+    </message>
+    <message>
+        <source>Save &amp;As...</source>
+        <translation>Speichern &amp;unter...</translation>
+    </message>
+    <message>
+        <source>&amp;Preferences...</source>
+        <translation>&amp;Einstellungen...</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederholen</translation>
+    </message>
+    <message>
+        <source>&amp;Delete</source>
+        <translation>&amp;Löschen</translation>
+    </message>
+    <message>
+        <source>D&amp;uplicate</source>
+        <translation>D&amp;uplizieren</translation>
+    </message>
+    <message>
+        <source>Select &amp;All</source>
+        <translation>&amp;Alles auswählen</translation>
+    </message>
+    <message>
+        <source>Select &amp;None</source>
+        <translation>Auswahl au&amp;fheben</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>&amp;Zuletzt geöffnet</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Bearbeiten</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <source>&amp;Panels</source>
+        <translation>&amp;Bereiche</translation>
+    </message>
+    <message>
+        <source>&amp;Theme</source>
+        <translation>&amp;Design</translation>
+    </message>
+    <message>
+        <source>System</source>
+        <translation>System</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Licht</translation>
+    </message>
+    <message>
+        <source>Dark</source>
+        <translation>Dunkel</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <source>&amp;About Glint</source>
+        <translation>Ü&amp;ber Glint</translation>
+    </message>
+    <message>
+        <source>About Glint</source>
+        <translation>Über Glint</translation>
+    </message>
+    <message>
+        <source>Glint %1: a scene editor with a built-in OpenGL 4.1 path tracer.</source>
+        <translation>Glint %1: ein Szeneneditor mit eingebautem OpenGL-4.1-Pathtracer.</translation>
+    </message>
+    <message>
+        <source>About &amp;Qt</source>
+        <translation>Über &amp;Qt</translation>
+    </message>
+    <message>
+        <source>Main</source>
+        <translation>Haupt</translation>
+    </message>
+    <message>
+        <source>Main toolbar</source>
+        <translation>Hauptwerkzeugleiste</translation>
+    </message>
+    <message>
+        <source>View</source>
+        <translation>Ansicht</translation>
+    </message>
+    <message>
+        <source>View toolbar</source>
+        <translation>Ansichtswerkzeugleiste</translation>
+    </message>
+    <message>
+        <source>Clear the list</source>
+        <translation>Liste leeren</translation>
+    </message>
+    <message>
+        <source>&amp;Undo %1</source>
+        <translation>%1 &amp;rückgängig machen</translation>
+    </message>
+    <message>
+        <source>&amp;Redo %1</source>
+        <translation>%1 &amp;wiederholen</translation>
+    </message>
+    <message>
+        <source>The new language applies after a restart.</source>
+        <translation>Die neue Sprache gilt nach einem Neustart.</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::OutlinerModel</name>
+    <message>
+        <source>Mesh</source>
+        <translation>Netz</translation>
+    </message>
+    <message>
+        <source>Shape</source>
+        <translation>Form</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Licht</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>Kamera</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>Gruppe</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <source>Visible</source>
+        <translation>Sichtbar</translation>
+    </message>
+    <message>
+        <source>Hidden</source>
+        <translation>Ausgeblendet</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::OutlinerPanel</name>
+    <message>
+        <source>Filter by name</source>
+        <translation>Nach Name filtern</translation>
+    </message>
+    <message>
+        <source>Outliner filter</source>
+        <translation>Gliederungsfilter</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add a shape, light or camera</source>
+        <translation>Form, Licht oder Kamera hinzufügen</translation>
+    </message>
+    <message>
+        <source>Scene outliner</source>
+        <translation>Szenengliederung</translation>
+    </message>
+    <message>
+        <source>Shape</source>
+        <translation>Form</translation>
+    </message>
+    <message>
+        <source>Sphere</source>
+        <translation>Kugel</translation>
+    </message>
+    <message>
+        <source>Box</source>
+        <translation>Quader</translation>
+    </message>
+    <message>
+        <source>Quad</source>
+        <translation>Viereck</translation>
+    </message>
+    <message>
+        <source>Disk</source>
+        <translation>Scheibe</translation>
+    </message>
+    <message>
+        <source>Cylinder</source>
+        <translation>Zylinder</translation>
+    </message>
+    <message>
+        <source>Ground plane</source>
+        <translation>Bodenebene</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Licht</translation>
+    </message>
+    <message>
+        <source>Point light</source>
+        <translation>Punktlicht</translation>
+    </message>
+    <message>
+        <source>Spot light</source>
+        <translation>Spotlicht</translation>
+    </message>
+    <message>
+        <source>Sun</source>
+        <translation>Sonne</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>Kamera</translation>
+    </message>
+    <message>
+        <source>Empty group</source>
+        <translation>Leere Gruppe</translation>
+    </message>
+    <message>
+        <source>Rename</source>
+        <translation>Umbenennen</translation>
+    </message>
+    <message>
+        <source>Duplicate</source>
+        <translation>Duplizieren</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Löschen</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::Preferences</name>
+    <message>
+        <source>System language</source>
+        <translation>Systemsprache</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::PreferencesDialog</name>
+    <message>
+        <source>Preferences</source>
+        <translation>Einstellungen</translation>
+    </message>
+    <message>
+        <source>General</source>
+        <translation>Allgemein</translation>
+    </message>
+    <message>
+        <source>Keymap</source>
+        <translation>Tastenbelegung</translation>
+    </message>
+    <message>
+        <source>System</source>
+        <translation>System</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Licht</translation>
+    </message>
+    <message>
+        <source>Dark</source>
+        <translation>Dunkel</translation>
+    </message>
+    <message>
+        <source>Theme</source>
+        <translation>Design</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Sprache</translation>
+    </message>
+    <message>
+        <source>A new language applies to menus and panels after a restart.</source>
+        <translation>Eine neue Sprache gilt für Menüs und Bereiche nach einem Neustart.</translation>
+    </message>
+    <message>
+        <source> min</source>
+        <translation> min</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>Aus</translation>
+    </message>
+    <message>
+        <source>Autosave interval</source>
+        <translation>Intervall für automatisches Speichern</translation>
+    </message>
+    <message>
+        <source>Autosave every</source>
+        <translation>Automatisch speichern alle</translation>
+    </message>
+    <message>
+        <source>Command</source>
+        <translation>Befehl</translation>
+    </message>
+    <message>
+        <source>Shortcut</source>
+        <translation>Tastenkürzel</translation>
+    </message>
+    <message>
+        <source>Shortcut for %1</source>
+        <translation>Tastenkürzel für %1</translation>
+    </message>
+    <message>
+        <source>Shortcut conflict</source>
+        <translation>Tastenkürzel-Konflikt</translation>
+    </message>
+    <message>
+        <source>%1 is used by both "%2" and "%3".</source>
+        <translation>%1 wird von "%2" und "%3" verwendet.</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::PropertiesPanel</name>
+    <message>
+        <source>Scene settings</source>
+        <translation>Szeneneinstellungen</translation>
+    </message>
+    <message>
+        <source>Properties</source>
+        <translation>Eigenschaften</translation>
+    </message>
+    <message>
+        <source>Select a node in the outliner or the viewport to edit it.</source>
+        <translation>Einen Knoten in der Gliederung oder der Ansicht auswählen, um ihn zu bearbeiten.</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::PropertyForm</name>
+    <message>
+        <source>Texture %1</source>
+        <translation>Textur %1</translation>
+    </message>
+    <message>
+        <source>%1 thumbnail</source>
+        <translation>Vorschaubild: %1</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(keine)</translation>
+    </message>
+    <message>
+        <source>unnamed</source>
+        <translation>unbenannt</translation>
+    </message>
+    <message>
+        <source>Material: %1</source>
+        <translation>Material: %1</translation>
+    </message>
+    <message>
+        <source>Base colour</source>
+        <translation>Grundfarbe</translation>
+    </message>
+    <message>
+        <source>Opacity</source>
+        <translation>Deckkraft</translation>
+    </message>
+    <message>
+        <source>Base colour texture</source>
+        <translation>Grundfarbtextur</translation>
+    </message>
+    <message>
+        <source>Metallic</source>
+        <translation>Metallisch</translation>
+    </message>
+    <message>
+        <source>Roughness</source>
+        <translation>Rauheit</translation>
+    </message>
+    <message>
+        <source>Metallic-roughness texture</source>
+        <translation>Metallisch-Rauheit-Textur</translation>
+    </message>
+    <message>
+        <source>Normal texture</source>
+        <translation>Normalentextur</translation>
+    </message>
+    <message>
+        <source>Occlusion texture</source>
+        <translation>Verdeckungstextur</translation>
+    </message>
+    <message>
+        <source>Emission</source>
+        <translation>Emission</translation>
+    </message>
+    <message>
+        <source>Emission strength</source>
+        <translation>Emissionsstärke</translation>
+    </message>
+    <message>
+        <source>Emission texture</source>
+        <translation>Emissionstextur</translation>
+    </message>
+    <message>
+        <source>Specular</source>
+        <translation>Spiegelnd</translation>
+    </message>
+    <message>
+        <source>Specular colour</source>
+        <translation>Spiegelfarbe</translation>
+    </message>
+    <message>
+        <source>Specular texture</source>
+        <translation>Spiegeltextur</translation>
+    </message>
+    <message>
+        <source>Specular colour texture</source>
+        <translation>Spiegelfarbtextur</translation>
+    </message>
+    <message>
+        <source>Transmission</source>
+        <translation>Transmission</translation>
+    </message>
+    <message>
+        <source>Transmission texture</source>
+        <translation>Transmissionstextur</translation>
+    </message>
+    <message>
+        <source>Index of refraction</source>
+        <translation>Brechungsindex</translation>
+    </message>
+    <message>
+        <source>Thickness</source>
+        <translation>Dicke</translation>
+    </message>
+    <message>
+        <source>Thickness texture</source>
+        <translation>Dickentextur</translation>
+    </message>
+    <message>
+        <source>Attenuation distance (m)</source>
+        <translation>Dämpfungsdistanz (m)</translation>
+    </message>
+    <message>
+        <source>Attenuation colour</source>
+        <translation>Dämpfungsfarbe</translation>
+    </message>
+    <message>
+        <source>Alpha mode</source>
+        <translation>Alphamodus</translation>
+    </message>
+    <message>
+        <source>Opaque</source>
+        <translation>Deckend</translation>
+    </message>
+    <message>
+        <source>Mask</source>
+        <translation>Maske</translation>
+    </message>
+    <message>
+        <source>Blend</source>
+        <translation>Überblenden</translation>
+    </message>
+    <message>
+        <source>Alpha cutoff</source>
+        <translation>Alpha-Schwelle</translation>
+    </message>
+    <message>
+        <source>Double sided</source>
+        <translation>Beidseitig</translation>
+    </message>
+    <message>
+        <source>Node</source>
+        <translation>Knoten</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Visible</source>
+        <translation>Sichtbar</translation>
+    </message>
+    <message>
+        <source>Transform</source>
+        <translation>Transformation</translation>
+    </message>
+    <message>
+        <source>Position %1</source>
+        <translation>Position %1</translation>
+    </message>
+    <message>
+        <source>Rotation %1 (degrees)</source>
+        <translation>Drehung %1 (Grad)</translation>
+    </message>
+    <message>
+        <source>Scale %1</source>
+        <translation>Skalierung %1</translation>
+    </message>
+    <message>
+        <source>Shape</source>
+        <translation>Form</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <source>Sphere</source>
+        <translation>Kugel</translation>
+    </message>
+    <message>
+        <source>Quad</source>
+        <translation>Viereck</translation>
+    </message>
+    <message>
+        <source>Disk</source>
+        <translation>Scheibe</translation>
+    </message>
+    <message>
+        <source>Box</source>
+        <translation>Quader</translation>
+    </message>
+    <message>
+        <source>Cylinder</source>
+        <translation>Zylinder</translation>
+    </message>
+    <message>
+        <source>Ground plane</source>
+        <translation>Bodenebene</translation>
+    </message>
+    <message>
+        <source>Radius (m)</source>
+        <translation>Radius (m)</translation>
+    </message>
+    <message>
+        <source>Height (m)</source>
+        <translation>Höhe (m)</translation>
+    </message>
+    <message>
+        <source>Size %1 (m)</source>
+        <translation>Größe %1 (m)</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Licht</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Typ</translation>
+    </message>
+    <message>
+        <source>Sun</source>
+        <translation>Sonne</translation>
+    </message>
+    <message>
+        <source>Point</source>
+        <translation>Punkt</translation>
+    </message>
+    <message>
+        <source>Spot</source>
+        <translation>Spot</translation>
+    </message>
+    <message>
+        <source>Colour</source>
+        <translation>Farbe</translation>
+    </message>
+    <message>
+        <source>lux</source>
+        <translation>lx</translation>
+    </message>
+    <message>
+        <source>cd</source>
+        <translation>cd</translation>
+    </message>
+    <message>
+        <source>Blender units</source>
+        <translation>Blender-Einheiten</translation>
+    </message>
+    <message>
+        <source>raw units</source>
+        <translation>Roheinheiten</translation>
+    </message>
+    <message>
+        <source>Intensity (%1, %2)</source>
+        <translation>Intensität (%1, %2)</translation>
+    </message>
+    <message>
+        <source>Range (m, 0 = infinite)</source>
+        <translation>Reichweite (m, 0 = unendlich)</translation>
+    </message>
+    <message>
+        <source>Inner cone (degrees)</source>
+        <translation>Innerer Kegel (Grad)</translation>
+    </message>
+    <message>
+        <source>Outer cone (degrees)</source>
+        <translation>Äußerer Kegel (Grad)</translation>
+    </message>
+    <message>
+        <source>Sun angular diameter (degrees)</source>
+        <translation>Winkeldurchmesser der Sonne (Grad)</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>Kamera</translation>
+    </message>
+    <message>
+        <source>Projection</source>
+        <translation>Projektion</translation>
+    </message>
+    <message>
+        <source>Perspective</source>
+        <translation>Perspektivisch</translation>
+    </message>
+    <message>
+        <source>Orthographic</source>
+        <translation>Orthografisch</translation>
+    </message>
+    <message>
+        <source>Vertical field of view (degrees)</source>
+        <translation>Vertikales Sichtfeld (Grad)</translation>
+    </message>
+    <message>
+        <source>Lens radius (m)</source>
+        <translation>Objektivradius (m)</translation>
+    </message>
+    <message>
+        <source>Focus distance (m)</source>
+        <translation>Fokusdistanz (m)</translation>
+    </message>
+    <message>
+        <source>Exposure (EV)</source>
+        <translation>Belichtung (LW)</translation>
+    </message>
+    <message>
+        <source>Near clip (m)</source>
+        <translation>Nahe Schnittebene (m)</translation>
+    </message>
+    <message>
+        <source>Active camera</source>
+        <translation>Aktive Kamera</translation>
+    </message>
+    <message>
+        <source>Environment</source>
+        <translation>Umgebung</translation>
+    </message>
+    <message>
+        <source>HDR file</source>
+        <translation>HDR-Datei</translation>
+    </message>
+    <message>
+        <source>Colour (no file)</source>
+        <translation>Farbe (ohne Datei)</translation>
+    </message>
+    <message>
+        <source>Intensity</source>
+        <translation>Intensität</translation>
+    </message>
+    <message>
+        <source>Rotation (degrees)</source>
+        <translation>Drehung (Grad)</translation>
+    </message>
+    <message>
+        <source>Render settings</source>
+        <translation>Render-Einstellungen</translation>
+    </message>
+    <message>
+        <source>Configuration</source>
+        <translation>Konfiguration</translation>
+    </message>
+    <message>
+        <source>Width (px)</source>
+        <translation>Breite (px)</translation>
+    </message>
+    <message>
+        <source>Height (px)</source>
+        <translation>Höhe (px)</translation>
+    </message>
+    <message>
+        <source>Samples per pixel</source>
+        <translation>Samples pro Pixel</translation>
+    </message>
+    <message>
+        <source>Bounces</source>
+        <translation>Reflexionen</translation>
+    </message>
+    <message>
+        <source>Seed</source>
+        <translation>Startwert</translation>
+    </message>
+    <message>
+        <source>Tonemapper</source>
+        <translation>Tonemapper</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Keiner</translation>
+    </message>
+    <message>
+        <source>ACES (fitted)</source>
+        <translation>ACES (angenähert)</translation>
+    </message>
+    <message>
+        <source>Khronos PBR Neutral</source>
+        <translation>Khronos PBR Neutral</translation>
+    </message>
+    <message>
+        <source>Radiance clamp (0 = off)</source>
+        <translation>Strahldichte-Begrenzung (0 = aus)</translation>
+    </message>
+    <message>
+        <source>Light units</source>
+        <translation>Lichteinheiten</translation>
+    </message>
+    <message>
+        <source>Blender (W = lm / 683)</source>
+        <translation>Blender (W = lm / 683)</translation>
+    </message>
+    <message>
+        <source>Raw</source>
+        <translation>Roh</translation>
+    </message>
+</context>
+</TS>

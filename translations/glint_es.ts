@@ -1,0 +1,1302 @@
+<?xml version='1.0' encoding='utf-8'?>
+<TS version="2.1" language="es" sourcelanguage="en">
+<context>
+    <name>RenderView</name>
+    <message>
+        <source>Viewport</source>
+        <translation>Vista</translation>
+    </message>
+    <message>
+        <source>A</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <source>B</source>
+        <translation>B</translation>
+    </message>
+    <message>
+        <source>Pixel %1, %2
+R %3  G %4  B %5 (linear)</source>
+        <translation>Píxel %1, %2
+R %3  G %4  B %5 (lineal)</translation>
+    </message>
+</context>
+<context>
+    <name>TimeRuler</name>
+    <message>
+        <source>Time ruler</source>
+        <translation>Regla de tiempo</translation>
+    </message>
+</context>
+<context>
+    <name>TimelinePanel</name>
+    <message>
+        <source>Timeline</source>
+        <translation>Línea de tiempo</translation>
+    </message>
+    <message>
+        <source>Path camera</source>
+        <translation>Cámara de trayectoria</translation>
+    </message>
+    <message>
+        <source>  %1 s  (frame %2)</source>
+        <translation>  %1 s  (fotograma %2)</translation>
+    </message>
+    <message>
+        <source>Add key</source>
+        <translation>Añadir clave</translation>
+    </message>
+    <message>
+        <source>Add a camera-path key from the current view at the current time</source>
+        <translation>Añade una clave de trayectoria de cámara desde la vista actual en el instante actual</translation>
+    </message>
+    <message>
+        <source>Delete key</source>
+        <translation>Eliminar clave</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Reproducir</translation>
+    </message>
+    <message>
+        <source>Loop</source>
+        <translation>Bucle</translation>
+    </message>
+    <message>
+        <source>Constant speed</source>
+        <translation>Velocidad constante</translation>
+    </message>
+    <message>
+        <source>X</source>
+        <translation>X</translation>
+    </message>
+    <message>
+        <source>Y</source>
+        <translation>Y</translation>
+    </message>
+    <message>
+        <source>Z</source>
+        <translation>Z</translation>
+    </message>
+    <message>
+        <source>FOV</source>
+        <translation>Campo de visión</translation>
+    </message>
+    <message>
+        <source>Focus</source>
+        <translation>Enfoque</translation>
+    </message>
+    <message>
+        <source>Lens</source>
+        <translation>Lente</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Tiempo</translation>
+    </message>
+    <message>
+        <source>Key %1</source>
+        <translation>Clave %1</translation>
+    </message>
+</context>
+<context>
+    <name>Viewport</name>
+    <message>
+        <source>Path traced</source>
+        <translation>Trazado de caminos</translation>
+    </message>
+    <message>
+        <source>Solid</source>
+        <translation>Sólido</translation>
+    </message>
+    <message>
+        <source>Wireframe</source>
+        <translation>Alambre</translation>
+    </message>
+    <message>
+        <source>Normals</source>
+        <translation>Normales</translation>
+    </message>
+    <message>
+        <source>Albedo</source>
+        <translation>Albedo</translation>
+    </message>
+    <message>
+        <source>Ambient occlusion</source>
+        <translation>Oclusión ambiental</translation>
+    </message>
+    <message>
+        <source>Motion vectors</source>
+        <translation>Vectores de movimiento</translation>
+    </message>
+    <message>
+        <source>Variance</source>
+        <translation>Varianza</translation>
+    </message>
+    <message>
+        <source>Depth</source>
+        <translation>Profundidad</translation>
+    </message>
+    <message>
+        <source>Viewport</source>
+        <translation>Vista</translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation>Mover</translation>
+    </message>
+    <message>
+        <source>Rotate</source>
+        <translation>Rotar</translation>
+    </message>
+    <message>
+        <source>Scale</source>
+        <translation>Escalar</translation>
+    </message>
+    <message>
+        <source>Frame selection</source>
+        <translation>Encuadrar selección</translation>
+    </message>
+    <message>
+        <source>Make scene camera from view</source>
+        <translation>Crear cámara de escena desde la vista</translation>
+    </message>
+    <message>
+        <source>Look through selected camera</source>
+        <translation>Ver a través de la cámara seleccionada</translation>
+    </message>
+    <message>
+        <source>Snap (Ctrl inverts while dragging)</source>
+        <translation>Ajuste (Ctrl invierte al arrastrar)</translation>
+    </message>
+    <message>
+        <source>Pixel inspector</source>
+        <translation>Inspector de píxeles</translation>
+    </message>
+    <message>
+        <source>Take snapshot A</source>
+        <translation>Tomar instantánea A</translation>
+    </message>
+    <message>
+        <source>Compare A | B</source>
+        <translation>Comparar A | B</translation>
+    </message>
+    <message>
+        <source>%1 spp  |  %2 ms/frame  |  1/%3 resolution%4</source>
+        <translation>%1 spp  |  %2 ms/fotograma  |  resolución 1/%3%4</translation>
+    </message>
+    <message>
+        <source>  |  paused</source>
+        <translation>  |  en pausa</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::Autosave</name>
+    <message>
+        <source>Cannot create the autosave folder %1</source>
+        <translation>No se puede crear la carpeta de guardado automático %1</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::ColorField</name>
+    <message>
+        <source>Choose a colour</source>
+        <translation>Elegir un color</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::CommandLabels</name>
+    <message>
+        <source>Rename</source>
+        <translation>Renombrar</translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation>Mover</translation>
+    </message>
+    <message>
+        <source>Show/hide</source>
+        <translation>Mostrar/ocultar</translation>
+    </message>
+    <message>
+        <source>Edit component</source>
+        <translation>Editar componente</translation>
+    </message>
+    <message>
+        <source>Reparent</source>
+        <translation>Cambiar padre</translation>
+    </message>
+    <message>
+        <source>Edit settings</source>
+        <translation>Editar ajustes</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Quitar</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Eliminar</translation>
+    </message>
+    <message>
+        <source>Duplicate</source>
+        <translation>Duplicar</translation>
+    </message>
+    <message>
+        <source>Add camera key</source>
+        <translation>Añadir clave de cámara</translation>
+    </message>
+    <message>
+        <source>Edit camera key</source>
+        <translation>Editar clave de cámara</translation>
+    </message>
+    <message>
+        <source>Move camera key</source>
+        <translation>Mover clave de cámara</translation>
+    </message>
+    <message>
+        <source>Remove camera key</source>
+        <translation>Quitar clave de cámara</translation>
+    </message>
+    <message>
+        <source>Camera path mode</source>
+        <translation>Modo de trayectoria de cámara</translation>
+    </message>
+    <message>
+        <source>mesh</source>
+        <translation>malla</translation>
+    </message>
+    <message>
+        <source>material</source>
+        <translation>material</translation>
+    </message>
+    <message>
+        <source>texture</source>
+        <translation>textura</translation>
+    </message>
+    <message>
+        <source>image</source>
+        <translation>imagen</translation>
+    </message>
+    <message>
+        <source>sampler</source>
+        <translation>muestreador</translation>
+    </message>
+    <message>
+        <source>Add %1</source>
+        <translation>Añadir %1</translation>
+    </message>
+    <message>
+        <source>Remove %1</source>
+        <translation>Quitar %1</translation>
+    </message>
+    <message>
+        <source>Duplicate %1</source>
+        <translation>Duplicar %1</translation>
+    </message>
+    <message>
+        <source>Edit %1</source>
+        <translation>Editar %1</translation>
+    </message>
+    <message>
+        <source>Import %1</source>
+        <translation>Importar %1</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::Document</name>
+    <message>
+        <source>The scene has no file name yet: use Save As.</source>
+        <translation>La escena aún no tiene nombre de archivo: use Guardar como.</translation>
+    </message>
+    <message>
+        <source>Import %1</source>
+        <translation>Importar %1</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>Sin título</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::EditOperations</name>
+    <message>
+        <source>Nothing is selected.</source>
+        <translation>No hay nada seleccionado.</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Eliminar</translation>
+    </message>
+    <message>
+        <source>Duplicate</source>
+        <translation>Duplicar</translation>
+    </message>
+    <message>
+        <source>The node no longer exists.</source>
+        <translation>El nodo ya no existe.</translation>
+    </message>
+    <message>
+        <source>A node cannot be moved into itself or its own children.</source>
+        <translation>Un nodo no puede moverse dentro de sí mismo ni de sus hijos.</translation>
+    </message>
+    <message>
+        <source>Reparent</source>
+        <translation>Cambiar padre</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::HistoryModel</name>
+    <message>
+        <source>&lt;empty&gt;</source>
+        <translation>&lt;vacío&gt;</translation>
+    </message>
+    <message>
+        <source> (saved)</source>
+        <translation> (guardado)</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::HistoryPanel</name>
+    <message>
+        <source>Undo history</source>
+        <translation>Historial de deshacer</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::LogPanel</name>
+    <message>
+        <source>Log messages</source>
+        <translation>Mensajes del registro</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Borrar</translation>
+    </message>
+    <message>
+        <source>Clear the log</source>
+        <translation>Borrar el registro</translation>
+    </message>
+    <message>
+        <source>info</source>
+        <translation>info</translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation>aviso</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>error</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::MainWindow</name>
+    <message>
+        <source>Glint scene editor</source>
+        <translation>Editor de escenas Glint</translation>
+    </message>
+    <message>
+        <source>Scene to open</source>
+        <translation>Escena que abrir</translation>
+    </message>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation>Falló el guardado automático: %1</translation>
+    </message>
+    <message>
+        <source>The viewport is not available in this build.</source>
+        <translation>La vista no está disponible en esta compilación.</translation>
+    </message>
+    <message>
+        <source>Viewport</source>
+        <translation>Vista</translation>
+    </message>
+    <message>
+        <source>Outliner</source>
+        <translation>Esquema</translation>
+    </message>
+    <message>
+        <source>Undo history</source>
+        <translation>Historial de deshacer</translation>
+    </message>
+    <message>
+        <source>Properties</source>
+        <translation>Propiedades</translation>
+    </message>
+    <message>
+        <source>Scene</source>
+        <translation>Escena</translation>
+    </message>
+    <message>
+        <source>Log</source>
+        <translation>Registro</translation>
+    </message>
+    <message>
+        <source>Nothing selected</source>
+        <translation>Nada seleccionado</translation>
+    </message>
+    <message>
+        <source>Selected: %1</source>
+        <translation>Seleccionado: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n nodes selected</source>
+        <translation><numerusform>%n nodo seleccionado</numerusform><numerusform>%n nodos seleccionados</numerusform></translation>
+    </message>
+    <message>
+        <source>%1 nodes, %2 triangles, configuration: %3</source>
+        <translation>%1 nodos, %2 triángulos, configuración: %3</translation>
+    </message>
+    <message>
+        <source>Selection</source>
+        <translation>Selección</translation>
+    </message>
+    <message>
+        <source>Scene statistics</source>
+        <translation>Estadísticas de la escena</translation>
+    </message>
+    <message>
+        <source>Render progress</source>
+        <translation>Progreso del render</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Cambios sin guardar</translation>
+    </message>
+    <message>
+        <source>"%1" has unsaved changes. Save them first?</source>
+        <translation>"%1" tiene cambios sin guardar. ¿Guardarlos primero?</translation>
+    </message>
+    <message>
+        <source>Cannot open %1: %2</source>
+        <translation>No se puede abrir %1: %2</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Abrir</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>Abierto %1</translation>
+    </message>
+    <message>
+        <source>Cannot import %1: %2</source>
+        <translation>No se puede importar %1: %2</translation>
+    </message>
+    <message>
+        <source>Imported %1</source>
+        <translation>Importado %1</translation>
+    </message>
+    <message>
+        <source>Cannot save: %1</source>
+        <translation>No se puede guardar: %1</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>Guardado %1</translation>
+    </message>
+    <message>
+        <source>Save scene</source>
+        <translation>Guardar escena</translation>
+    </message>
+    <message>
+        <source>glTF scenes (*.gltf *.glb)</source>
+        <translation>Escenas glTF (*.gltf *.glb)</translation>
+    </message>
+    <message>
+        <source>Cannot save %1: %2</source>
+        <translation>No se puede guardar %1: %2</translation>
+    </message>
+    <message>
+        <source>an untitled scene</source>
+        <translation>una escena sin título</translation>
+    </message>
+    <message>
+        <source>Recover unsaved work</source>
+        <translation>Recuperar el trabajo sin guardar</translation>
+    </message>
+    <message>
+        <source>Glint did not close normally last time. Recover the autosaved copy of %1?</source>
+        <translation>Glint no se cerró correctamente la última vez. ¿Recuperar la copia guardada automáticamente de %1?</translation>
+    </message>
+    <message>
+        <source>Cannot recover the autosaved copy: %1</source>
+        <translation>No se puede recuperar la copia guardada automáticamente: %1</translation>
+    </message>
+    <message>
+        <source>Recovered the autosaved copy of %1</source>
+        <translation>Recuperada la copia guardada automáticamente de %1</translation>
+    </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>&amp;Nuevo</translation>
+    </message>
+    <message>
+        <source>&amp;Open...</source>
+        <translation>&amp;Abrir...</translation>
+    </message>
+    <message>
+        <source>Open scene</source>
+        <translation>Abrir escena</translation>
+    </message>
+    <message>
+        <source>Scenes (*.gltf *.glb *.glint.json);;All files (*)</source>
+        <translation>Escenas (*.gltf *.glb *.glint.json);;Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <source>&amp;Import...</source>
+        <translation>&amp;Importar...</translation>
+    </message>
+    <message>
+        <source>Import into the scene</source>
+        <translation>Importar en la escena</translation>
+    </message>
+    <message>
+        <source>Scenes and models (*.gltf *.glb *.obj *.ply *.stl *.fbx *.dae *.3ds);;All files (*)</source>
+        <translation>Escenas y modelos (*.gltf *.glb *.obj *.ply *.stl *.fbx *.dae *.3ds);;Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Guardar</translation>
+    </message>
+    <message>
+        <source>Save &amp;As...</source>
+        <translation>Guardar &amp;como...</translation>
+    </message>
+    <message>
+        <source>&amp;Preferences...</source>
+        <translation>&amp;Preferencias...</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Salir</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Deshacer</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Rehacer</translation>
+    </message>
+    <message>
+        <source>&amp;Delete</source>
+        <translation>&amp;Eliminar</translation>
+    </message>
+    <message>
+        <source>D&amp;uplicate</source>
+        <translation>D&amp;uplicar</translation>
+    </message>
+    <message>
+        <source>Select &amp;All</source>
+        <translation>Seleccionar &amp;todo</translation>
+    </message>
+    <message>
+        <source>Select &amp;None</source>
+        <translation>Seleccionar &amp;nada</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Archivo</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>Abrir &amp;reciente</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Editar</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ver</translation>
+    </message>
+    <message>
+        <source>&amp;Panels</source>
+        <translation>&amp;Paneles</translation>
+    </message>
+    <message>
+        <source>&amp;Theme</source>
+        <translation>&amp;Tema</translation>
+    </message>
+    <message>
+        <source>System</source>
+        <translation>Sistema</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Luz</translation>
+    </message>
+    <message>
+        <source>Dark</source>
+        <translation>Oscuro</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>A&amp;yuda</translation>
+    </message>
+    <message>
+        <source>&amp;About Glint</source>
+        <translation>&amp;Acerca de Glint</translation>
+    </message>
+    <message>
+        <source>About Glint</source>
+        <translation>Acerca de Glint</translation>
+    </message>
+    <message>
+        <source>Glint %1: a scene editor with a built-in OpenGL 4.1 path tracer.</source>
+        <translation>Glint %1: un editor de escenas con un trazador de caminos OpenGL 4.1 integrado.</translation>
+    </message>
+    <message>
+        <source>About &amp;Qt</source>
+        <translation>Acerca de &amp;Qt</translation>
+    </message>
+    <message>
+        <source>Main</source>
+        <translation>Principal</translation>
+    </message>
+    <message>
+        <source>Main toolbar</source>
+        <translation>Barra de herramientas principal</translation>
+    </message>
+    <message>
+        <source>View</source>
+        <translation>Vista</translation>
+    </message>
+    <message>
+        <source>View toolbar</source>
+        <translation>Barra de herramientas de vista</translation>
+    </message>
+    <message>
+        <source>Clear the list</source>
+        <translation>Vaciar la lista</translation>
+    </message>
+    <message>
+        <source>&amp;Undo %1</source>
+        <translation>&amp;Deshacer %1</translation>
+    </message>
+    <message>
+        <source>&amp;Redo %1</source>
+        <translation>&amp;Rehacer %1</translation>
+    </message>
+    <message>
+        <source>The new language applies after a restart.</source>
+        <translation>El nuevo idioma se aplica tras reiniciar.</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::OutlinerModel</name>
+    <message>
+        <source>Mesh</source>
+        <translation>Malla</translation>
+    </message>
+    <message>
+        <source>Shape</source>
+        <translation>Forma</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Luz</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>Cámara</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>Grupo</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <source>Visible</source>
+        <translation>Visible</translation>
+    </message>
+    <message>
+        <source>Hidden</source>
+        <translation>Oculto</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nombre</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::OutlinerPanel</name>
+    <message>
+        <source>Filter by name</source>
+        <translation>Filtrar por nombre</translation>
+    </message>
+    <message>
+        <source>Outliner filter</source>
+        <translation>Filtro del esquema</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Añadir</translation>
+    </message>
+    <message>
+        <source>Add a shape, light or camera</source>
+        <translation>Añadir una forma, una luz o una cámara</translation>
+    </message>
+    <message>
+        <source>Scene outliner</source>
+        <translation>Esquema de la escena</translation>
+    </message>
+    <message>
+        <source>Shape</source>
+        <translation>Forma</translation>
+    </message>
+    <message>
+        <source>Sphere</source>
+        <translation>Esfera</translation>
+    </message>
+    <message>
+        <source>Box</source>
+        <translation>Caja</translation>
+    </message>
+    <message>
+        <source>Quad</source>
+        <translation>Cuadrilátero</translation>
+    </message>
+    <message>
+        <source>Disk</source>
+        <translation>Disco</translation>
+    </message>
+    <message>
+        <source>Cylinder</source>
+        <translation>Cilindro</translation>
+    </message>
+    <message>
+        <source>Ground plane</source>
+        <translation>Plano del suelo</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Luz</translation>
+    </message>
+    <message>
+        <source>Point light</source>
+        <translation>Luz puntual</translation>
+    </message>
+    <message>
+        <source>Spot light</source>
+        <translation>Foco</translation>
+    </message>
+    <message>
+        <source>Sun</source>
+        <translation>Sol</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>Cámara</translation>
+    </message>
+    <message>
+        <source>Empty group</source>
+        <translation>Grupo vacío</translation>
+    </message>
+    <message>
+        <source>Rename</source>
+        <translation>Renombrar</translation>
+    </message>
+    <message>
+        <source>Duplicate</source>
+        <translation>Duplicar</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Eliminar</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::Preferences</name>
+    <message>
+        <source>System language</source>
+        <translation>Idioma del sistema</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::PreferencesDialog</name>
+    <message>
+        <source>Preferences</source>
+        <translation>Preferencias</translation>
+    </message>
+    <message>
+        <source>General</source>
+        <translation>General</translation>
+    </message>
+    <message>
+        <source>Keymap</source>
+        <translation>Atajos</translation>
+    </message>
+    <message>
+        <source>System</source>
+        <translation>Sistema</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Luz</translation>
+    </message>
+    <message>
+        <source>Dark</source>
+        <translation>Oscuro</translation>
+    </message>
+    <message>
+        <source>Theme</source>
+        <translation>Tema</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Idioma</translation>
+    </message>
+    <message>
+        <source>A new language applies to menus and panels after a restart.</source>
+        <translation>Un nuevo idioma se aplica a menús y paneles tras reiniciar.</translation>
+    </message>
+    <message>
+        <source> min</source>
+        <translation> min</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>Desactivado</translation>
+    </message>
+    <message>
+        <source>Autosave interval</source>
+        <translation>Intervalo de guardado automático</translation>
+    </message>
+    <message>
+        <source>Autosave every</source>
+        <translation>Guardado automático cada</translation>
+    </message>
+    <message>
+        <source>Command</source>
+        <translation>Comando</translation>
+    </message>
+    <message>
+        <source>Shortcut</source>
+        <translation>Atajo</translation>
+    </message>
+    <message>
+        <source>Shortcut for %1</source>
+        <translation>Atajo para %1</translation>
+    </message>
+    <message>
+        <source>Shortcut conflict</source>
+        <translation>Conflicto de atajos</translation>
+    </message>
+    <message>
+        <source>%1 is used by both "%2" and "%3".</source>
+        <translation>%1 lo usan tanto "%2" como "%3".</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::PropertiesPanel</name>
+    <message>
+        <source>Scene settings</source>
+        <translation>Ajustes de la escena</translation>
+    </message>
+    <message>
+        <source>Properties</source>
+        <translation>Propiedades</translation>
+    </message>
+    <message>
+        <source>Select a node in the outliner or the viewport to edit it.</source>
+        <translation>Seleccione un nodo en el esquema o en la vista para editarlo.</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::PropertyForm</name>
+    <message>
+        <source>Texture %1</source>
+        <translation>Textura %1</translation>
+    </message>
+    <message>
+        <source>%1 thumbnail</source>
+        <translation>Miniatura de %1</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(ninguna)</translation>
+    </message>
+    <message>
+        <source>unnamed</source>
+        <translation>sin nombre</translation>
+    </message>
+    <message>
+        <source>Material: %1</source>
+        <translation>Material: %1</translation>
+    </message>
+    <message>
+        <source>Base colour</source>
+        <translation>Color base</translation>
+    </message>
+    <message>
+        <source>Opacity</source>
+        <translation>Opacidad</translation>
+    </message>
+    <message>
+        <source>Base colour texture</source>
+        <translation>Textura de color base</translation>
+    </message>
+    <message>
+        <source>Metallic</source>
+        <translation>Metálico</translation>
+    </message>
+    <message>
+        <source>Roughness</source>
+        <translation>Rugosidad</translation>
+    </message>
+    <message>
+        <source>Metallic-roughness texture</source>
+        <translation>Textura metálico-rugosidad</translation>
+    </message>
+    <message>
+        <source>Normal texture</source>
+        <translation>Textura de normales</translation>
+    </message>
+    <message>
+        <source>Occlusion texture</source>
+        <translation>Textura de oclusión</translation>
+    </message>
+    <message>
+        <source>Emission</source>
+        <translation>Emisión</translation>
+    </message>
+    <message>
+        <source>Emission strength</source>
+        <translation>Intensidad de emisión</translation>
+    </message>
+    <message>
+        <source>Emission texture</source>
+        <translation>Textura de emisión</translation>
+    </message>
+    <message>
+        <source>Specular</source>
+        <translation>Especular</translation>
+    </message>
+    <message>
+        <source>Specular colour</source>
+        <translation>Color especular</translation>
+    </message>
+    <message>
+        <source>Specular texture</source>
+        <translation>Textura especular</translation>
+    </message>
+    <message>
+        <source>Specular colour texture</source>
+        <translation>Textura de color especular</translation>
+    </message>
+    <message>
+        <source>Transmission</source>
+        <translation>Transmisión</translation>
+    </message>
+    <message>
+        <source>Transmission texture</source>
+        <translation>Textura de transmisión</translation>
+    </message>
+    <message>
+        <source>Index of refraction</source>
+        <translation>Índice de refracción</translation>
+    </message>
+    <message>
+        <source>Thickness</source>
+        <translation>Grosor</translation>
+    </message>
+    <message>
+        <source>Thickness texture</source>
+        <translation>Textura de grosor</translation>
+    </message>
+    <message>
+        <source>Attenuation distance (m)</source>
+        <translation>Distancia de atenuación (m)</translation>
+    </message>
+    <message>
+        <source>Attenuation colour</source>
+        <translation>Color de atenuación</translation>
+    </message>
+    <message>
+        <source>Alpha mode</source>
+        <translation>Modo alfa</translation>
+    </message>
+    <message>
+        <source>Opaque</source>
+        <translation>Opaco</translation>
+    </message>
+    <message>
+        <source>Mask</source>
+        <translation>Máscara</translation>
+    </message>
+    <message>
+        <source>Blend</source>
+        <translation>Mezcla</translation>
+    </message>
+    <message>
+        <source>Alpha cutoff</source>
+        <translation>Umbral alfa</translation>
+    </message>
+    <message>
+        <source>Double sided</source>
+        <translation>Doble cara</translation>
+    </message>
+    <message>
+        <source>Node</source>
+        <translation>Nodo</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nombre</translation>
+    </message>
+    <message>
+        <source>Visible</source>
+        <translation>Visible</translation>
+    </message>
+    <message>
+        <source>Transform</source>
+        <translation>Transformación</translation>
+    </message>
+    <message>
+        <source>Position %1</source>
+        <translation>Posición %1</translation>
+    </message>
+    <message>
+        <source>Rotation %1 (degrees)</source>
+        <translation>Rotación %1 (grados)</translation>
+    </message>
+    <message>
+        <source>Scale %1</source>
+        <translation>Escala %1</translation>
+    </message>
+    <message>
+        <source>Shape</source>
+        <translation>Forma</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <source>Sphere</source>
+        <translation>Esfera</translation>
+    </message>
+    <message>
+        <source>Quad</source>
+        <translation>Cuadrilátero</translation>
+    </message>
+    <message>
+        <source>Disk</source>
+        <translation>Disco</translation>
+    </message>
+    <message>
+        <source>Box</source>
+        <translation>Caja</translation>
+    </message>
+    <message>
+        <source>Cylinder</source>
+        <translation>Cilindro</translation>
+    </message>
+    <message>
+        <source>Ground plane</source>
+        <translation>Plano del suelo</translation>
+    </message>
+    <message>
+        <source>Radius (m)</source>
+        <translation>Radio (m)</translation>
+    </message>
+    <message>
+        <source>Height (m)</source>
+        <translation>Altura (m)</translation>
+    </message>
+    <message>
+        <source>Size %1 (m)</source>
+        <translation>Tamaño %1 (m)</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Luz</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <source>Sun</source>
+        <translation>Sol</translation>
+    </message>
+    <message>
+        <source>Point</source>
+        <translation>Puntual</translation>
+    </message>
+    <message>
+        <source>Spot</source>
+        <translation>Foco</translation>
+    </message>
+    <message>
+        <source>Colour</source>
+        <translation>Color</translation>
+    </message>
+    <message>
+        <source>lux</source>
+        <translation>lux</translation>
+    </message>
+    <message>
+        <source>cd</source>
+        <translation>cd</translation>
+    </message>
+    <message>
+        <source>Blender units</source>
+        <translation>unidades de Blender</translation>
+    </message>
+    <message>
+        <source>raw units</source>
+        <translation>unidades sin convertir</translation>
+    </message>
+    <message>
+        <source>Intensity (%1, %2)</source>
+        <translation>Intensidad (%1, %2)</translation>
+    </message>
+    <message>
+        <source>Range (m, 0 = infinite)</source>
+        <translation>Alcance (m, 0 = infinito)</translation>
+    </message>
+    <message>
+        <source>Inner cone (degrees)</source>
+        <translation>Cono interior (grados)</translation>
+    </message>
+    <message>
+        <source>Outer cone (degrees)</source>
+        <translation>Cono exterior (grados)</translation>
+    </message>
+    <message>
+        <source>Sun angular diameter (degrees)</source>
+        <translation>Diámetro angular del sol (grados)</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>Cámara</translation>
+    </message>
+    <message>
+        <source>Projection</source>
+        <translation>Proyección</translation>
+    </message>
+    <message>
+        <source>Perspective</source>
+        <translation>Perspectiva</translation>
+    </message>
+    <message>
+        <source>Orthographic</source>
+        <translation>Ortográfica</translation>
+    </message>
+    <message>
+        <source>Vertical field of view (degrees)</source>
+        <translation>Campo de visión vertical (grados)</translation>
+    </message>
+    <message>
+        <source>Lens radius (m)</source>
+        <translation>Radio de la lente (m)</translation>
+    </message>
+    <message>
+        <source>Focus distance (m)</source>
+        <translation>Distancia de enfoque (m)</translation>
+    </message>
+    <message>
+        <source>Exposure (EV)</source>
+        <translation>Exposición (EV)</translation>
+    </message>
+    <message>
+        <source>Near clip (m)</source>
+        <translation>Plano de recorte cercano (m)</translation>
+    </message>
+    <message>
+        <source>Active camera</source>
+        <translation>Cámara activa</translation>
+    </message>
+    <message>
+        <source>Environment</source>
+        <translation>Entorno</translation>
+    </message>
+    <message>
+        <source>HDR file</source>
+        <translation>Archivo HDR</translation>
+    </message>
+    <message>
+        <source>Colour (no file)</source>
+        <translation>Color (sin archivo)</translation>
+    </message>
+    <message>
+        <source>Intensity</source>
+        <translation>Intensidad</translation>
+    </message>
+    <message>
+        <source>Rotation (degrees)</source>
+        <translation>Rotación (grados)</translation>
+    </message>
+    <message>
+        <source>Render settings</source>
+        <translation>Ajustes de render</translation>
+    </message>
+    <message>
+        <source>Configuration</source>
+        <translation>Configuración</translation>
+    </message>
+    <message>
+        <source>Width (px)</source>
+        <translation>Ancho (px)</translation>
+    </message>
+    <message>
+        <source>Height (px)</source>
+        <translation>Alto (px)</translation>
+    </message>
+    <message>
+        <source>Samples per pixel</source>
+        <translation>Muestras por píxel</translation>
+    </message>
+    <message>
+        <source>Bounces</source>
+        <translation>Rebotes</translation>
+    </message>
+    <message>
+        <source>Seed</source>
+        <translation>Semilla</translation>
+    </message>
+    <message>
+        <source>Tonemapper</source>
+        <translation>Mapeo de tonos</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Ninguno</translation>
+    </message>
+    <message>
+        <source>ACES (fitted)</source>
+        <translation>ACES (ajustado)</translation>
+    </message>
+    <message>
+        <source>Khronos PBR Neutral</source>
+        <translation>Khronos PBR Neutral</translation>
+    </message>
+    <message>
+        <source>Radiance clamp (0 = off)</source>
+        <translation>Límite de radiancia (0 = desactivado)</translation>
+    </message>
+    <message>
+        <source>Light units</source>
+        <translation>Unidades de luz</translation>
+    </message>
+    <message>
+        <source>Blender (W = lm / 683)</source>
+        <translation>Blender (W = lm / 683)</translation>
+    </message>
+    <message>
+        <source>Raw</source>
+        <translation>Sin convertir</translation>
+    </message>
+</context>
+</TS>

@@ -1,0 +1,1302 @@
+<?xml version='1.0' encoding='utf-8'?>
+<TS version="2.1" language="fr" sourcelanguage="en">
+<context>
+    <name>RenderView</name>
+    <message>
+        <source>Viewport</source>
+        <translation>Vue</translation>
+    </message>
+    <message>
+        <source>A</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <source>B</source>
+        <translation>B</translation>
+    </message>
+    <message>
+        <source>Pixel %1, %2
+R %3  G %4  B %5 (linear)</source>
+        <translation>Pixel %1, %2
+R %3  V %4  B %5 (linéaire)</translation>
+    </message>
+</context>
+<context>
+    <name>TimeRuler</name>
+    <message>
+        <source>Time ruler</source>
+        <translation>Règle temporelle</translation>
+    </message>
+</context>
+<context>
+    <name>TimelinePanel</name>
+    <message>
+        <source>Timeline</source>
+        <translation>Chronologie</translation>
+    </message>
+    <message>
+        <source>Path camera</source>
+        <translation>Caméra du trajet</translation>
+    </message>
+    <message>
+        <source>  %1 s  (frame %2)</source>
+        <translation>  %1 s  (image %2)</translation>
+    </message>
+    <message>
+        <source>Add key</source>
+        <translation>Ajouter une clé</translation>
+    </message>
+    <message>
+        <source>Add a camera-path key from the current view at the current time</source>
+        <translation>Ajoute une clé de trajet de caméra depuis la vue actuelle à l'instant actuel</translation>
+    </message>
+    <message>
+        <source>Delete key</source>
+        <translation>Supprimer la clé</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Lecture</translation>
+    </message>
+    <message>
+        <source>Loop</source>
+        <translation>Boucle</translation>
+    </message>
+    <message>
+        <source>Constant speed</source>
+        <translation>Vitesse constante</translation>
+    </message>
+    <message>
+        <source>X</source>
+        <translation>X</translation>
+    </message>
+    <message>
+        <source>Y</source>
+        <translation>Y</translation>
+    </message>
+    <message>
+        <source>Z</source>
+        <translation>Z</translation>
+    </message>
+    <message>
+        <source>FOV</source>
+        <translation>Champ de vision</translation>
+    </message>
+    <message>
+        <source>Focus</source>
+        <translation>Mise au point</translation>
+    </message>
+    <message>
+        <source>Lens</source>
+        <translation>Objectif</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Temps</translation>
+    </message>
+    <message>
+        <source>Key %1</source>
+        <translation>Clé %1</translation>
+    </message>
+</context>
+<context>
+    <name>Viewport</name>
+    <message>
+        <source>Path traced</source>
+        <translation>Path tracing</translation>
+    </message>
+    <message>
+        <source>Solid</source>
+        <translation>Solide</translation>
+    </message>
+    <message>
+        <source>Wireframe</source>
+        <translation>Fil de fer</translation>
+    </message>
+    <message>
+        <source>Normals</source>
+        <translation>Normales</translation>
+    </message>
+    <message>
+        <source>Albedo</source>
+        <translation>Albédo</translation>
+    </message>
+    <message>
+        <source>Ambient occlusion</source>
+        <translation>Occlusion ambiante</translation>
+    </message>
+    <message>
+        <source>Motion vectors</source>
+        <translation>Vecteurs de mouvement</translation>
+    </message>
+    <message>
+        <source>Variance</source>
+        <translation>Variance</translation>
+    </message>
+    <message>
+        <source>Depth</source>
+        <translation>Profondeur</translation>
+    </message>
+    <message>
+        <source>Viewport</source>
+        <translation>Vue</translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation>Déplacer</translation>
+    </message>
+    <message>
+        <source>Rotate</source>
+        <translation>Pivoter</translation>
+    </message>
+    <message>
+        <source>Scale</source>
+        <translation>Mettre à l'échelle</translation>
+    </message>
+    <message>
+        <source>Frame selection</source>
+        <translation>Cadrer la sélection</translation>
+    </message>
+    <message>
+        <source>Make scene camera from view</source>
+        <translation>Créer une caméra de scène depuis la vue</translation>
+    </message>
+    <message>
+        <source>Look through selected camera</source>
+        <translation>Voir par la caméra sélectionnée</translation>
+    </message>
+    <message>
+        <source>Snap (Ctrl inverts while dragging)</source>
+        <translation>Magnétisme (Ctrl inverse pendant le glisser)</translation>
+    </message>
+    <message>
+        <source>Pixel inspector</source>
+        <translation>Inspecteur de pixels</translation>
+    </message>
+    <message>
+        <source>Take snapshot A</source>
+        <translation>Prendre l'instantané A</translation>
+    </message>
+    <message>
+        <source>Compare A | B</source>
+        <translation>Comparer A | B</translation>
+    </message>
+    <message>
+        <source>%1 spp  |  %2 ms/frame  |  1/%3 resolution%4</source>
+        <translation>%1 spp  |  %2 ms/image  |  résolution 1/%3%4</translation>
+    </message>
+    <message>
+        <source>  |  paused</source>
+        <translation>  |  en pause</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::Autosave</name>
+    <message>
+        <source>Cannot create the autosave folder %1</source>
+        <translation>Impossible de créer le dossier de sauvegarde automatique %1</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::ColorField</name>
+    <message>
+        <source>Choose a colour</source>
+        <translation>Choisir une couleur</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::CommandLabels</name>
+    <message>
+        <source>Rename</source>
+        <translation>Renommer</translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation>Déplacer</translation>
+    </message>
+    <message>
+        <source>Show/hide</source>
+        <translation>Afficher/masquer</translation>
+    </message>
+    <message>
+        <source>Edit component</source>
+        <translation>Modifier le composant</translation>
+    </message>
+    <message>
+        <source>Reparent</source>
+        <translation>Changer de parent</translation>
+    </message>
+    <message>
+        <source>Edit settings</source>
+        <translation>Modifier les paramètres</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Retirer</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Supprimer</translation>
+    </message>
+    <message>
+        <source>Duplicate</source>
+        <translation>Dupliquer</translation>
+    </message>
+    <message>
+        <source>Add camera key</source>
+        <translation>Ajouter une clé de caméra</translation>
+    </message>
+    <message>
+        <source>Edit camera key</source>
+        <translation>Modifier la clé de caméra</translation>
+    </message>
+    <message>
+        <source>Move camera key</source>
+        <translation>Déplacer la clé de caméra</translation>
+    </message>
+    <message>
+        <source>Remove camera key</source>
+        <translation>Retirer la clé de caméra</translation>
+    </message>
+    <message>
+        <source>Camera path mode</source>
+        <translation>Mode du trajet de caméra</translation>
+    </message>
+    <message>
+        <source>mesh</source>
+        <translation>maillage</translation>
+    </message>
+    <message>
+        <source>material</source>
+        <translation>matériau</translation>
+    </message>
+    <message>
+        <source>texture</source>
+        <translation>texture</translation>
+    </message>
+    <message>
+        <source>image</source>
+        <translation>image</translation>
+    </message>
+    <message>
+        <source>sampler</source>
+        <translation>échantillonneur</translation>
+    </message>
+    <message>
+        <source>Add %1</source>
+        <translation>Ajouter %1</translation>
+    </message>
+    <message>
+        <source>Remove %1</source>
+        <translation>Retirer %1</translation>
+    </message>
+    <message>
+        <source>Duplicate %1</source>
+        <translation>Dupliquer %1</translation>
+    </message>
+    <message>
+        <source>Edit %1</source>
+        <translation>Modifier %1</translation>
+    </message>
+    <message>
+        <source>Import %1</source>
+        <translation>Importer %1</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::Document</name>
+    <message>
+        <source>The scene has no file name yet: use Save As.</source>
+        <translation>La scène n'a pas encore de nom de fichier : utilisez Enregistrer sous.</translation>
+    </message>
+    <message>
+        <source>Import %1</source>
+        <translation>Importer %1</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>Sans titre</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::EditOperations</name>
+    <message>
+        <source>Nothing is selected.</source>
+        <translation>Rien n'est sélectionné.</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Supprimer</translation>
+    </message>
+    <message>
+        <source>Duplicate</source>
+        <translation>Dupliquer</translation>
+    </message>
+    <message>
+        <source>The node no longer exists.</source>
+        <translation>Le nœud n'existe plus.</translation>
+    </message>
+    <message>
+        <source>A node cannot be moved into itself or its own children.</source>
+        <translation>Un nœud ne peut pas être déplacé dans lui-même ni dans ses enfants.</translation>
+    </message>
+    <message>
+        <source>Reparent</source>
+        <translation>Changer de parent</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::HistoryModel</name>
+    <message>
+        <source>&lt;empty&gt;</source>
+        <translation>&lt;vide&gt;</translation>
+    </message>
+    <message>
+        <source> (saved)</source>
+        <translation> (enregistré)</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::HistoryPanel</name>
+    <message>
+        <source>Undo history</source>
+        <translation>Historique d'annulation</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::LogPanel</name>
+    <message>
+        <source>Log messages</source>
+        <translation>Messages du journal</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Effacer</translation>
+    </message>
+    <message>
+        <source>Clear the log</source>
+        <translation>Effacer le journal</translation>
+    </message>
+    <message>
+        <source>info</source>
+        <translation>info</translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation>avertissement</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>erreur</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::MainWindow</name>
+    <message>
+        <source>Glint scene editor</source>
+        <translation>Éditeur de scènes Glint</translation>
+    </message>
+    <message>
+        <source>Scene to open</source>
+        <translation>Scène à ouvrir</translation>
+    </message>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation>Échec de la sauvegarde automatique : %1</translation>
+    </message>
+    <message>
+        <source>The viewport is not available in this build.</source>
+        <translation>La vue n'est pas disponible dans cette version.</translation>
+    </message>
+    <message>
+        <source>Viewport</source>
+        <translation>Vue</translation>
+    </message>
+    <message>
+        <source>Outliner</source>
+        <translation>Arborescence</translation>
+    </message>
+    <message>
+        <source>Undo history</source>
+        <translation>Historique d'annulation</translation>
+    </message>
+    <message>
+        <source>Properties</source>
+        <translation>Propriétés</translation>
+    </message>
+    <message>
+        <source>Scene</source>
+        <translation>Scène</translation>
+    </message>
+    <message>
+        <source>Log</source>
+        <translation>Journal</translation>
+    </message>
+    <message>
+        <source>Nothing selected</source>
+        <translation>Aucune sélection</translation>
+    </message>
+    <message>
+        <source>Selected: %1</source>
+        <translation>Sélection : %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n nodes selected</source>
+        <translation><numerusform>%n nœud sélectionné</numerusform><numerusform>%n nœuds sélectionnés</numerusform></translation>
+    </message>
+    <message>
+        <source>%1 nodes, %2 triangles, configuration: %3</source>
+        <translation>%1 nœuds, %2 triangles, configuration : %3</translation>
+    </message>
+    <message>
+        <source>Selection</source>
+        <translation>Sélection</translation>
+    </message>
+    <message>
+        <source>Scene statistics</source>
+        <translation>Statistiques de la scène</translation>
+    </message>
+    <message>
+        <source>Render progress</source>
+        <translation>Progression du rendu</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Modifications non enregistrées</translation>
+    </message>
+    <message>
+        <source>"%1" has unsaved changes. Save them first?</source>
+        <translation>« %1 » a des modifications non enregistrées. Les enregistrer d'abord ?</translation>
+    </message>
+    <message>
+        <source>Cannot open %1: %2</source>
+        <translation>Impossible d'ouvrir %1 : %2</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Ouvrir</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>%1 ouvert</translation>
+    </message>
+    <message>
+        <source>Cannot import %1: %2</source>
+        <translation>Impossible d'importer %1 : %2</translation>
+    </message>
+    <message>
+        <source>Imported %1</source>
+        <translation>%1 importé</translation>
+    </message>
+    <message>
+        <source>Cannot save: %1</source>
+        <translation>Impossible d'enregistrer : %1</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 enregistré</translation>
+    </message>
+    <message>
+        <source>Save scene</source>
+        <translation>Enregistrer la scène</translation>
+    </message>
+    <message>
+        <source>glTF scenes (*.gltf *.glb)</source>
+        <translation>Scènes glTF (*.gltf *.glb)</translation>
+    </message>
+    <message>
+        <source>Cannot save %1: %2</source>
+        <translation>Impossible d'enregistrer %1 : %2</translation>
+    </message>
+    <message>
+        <source>an untitled scene</source>
+        <translation>une scène sans titre</translation>
+    </message>
+    <message>
+        <source>Recover unsaved work</source>
+        <translation>Récupérer le travail non enregistré</translation>
+    </message>
+    <message>
+        <source>Glint did not close normally last time. Recover the autosaved copy of %1?</source>
+        <translation>Glint ne s'est pas fermé normalement la dernière fois. Récupérer la copie enregistrée automatiquement de %1 ?</translation>
+    </message>
+    <message>
+        <source>Cannot recover the autosaved copy: %1</source>
+        <translation>Impossible de récupérer la copie enregistrée automatiquement : %1</translation>
+    </message>
+    <message>
+        <source>Recovered the autosaved copy of %1</source>
+        <translation>Copie enregistrée automatiquement de %1 récupérée</translation>
+    </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>&amp;Nouveau</translation>
+    </message>
+    <message>
+        <source>&amp;Open...</source>
+        <translation>&amp;Ouvrir...</translation>
+    </message>
+    <message>
+        <source>Open scene</source>
+        <translation>Ouvrir une scène</translation>
+    </message>
+    <message>
+        <source>Scenes (*.gltf *.glb *.glint.json);;All files (*)</source>
+        <translation>Scènes (*.gltf *.glb *.glint.json);;Tous les fichiers (*)</translation>
+    </message>
+    <message>
+        <source>&amp;Import...</source>
+        <translation>&amp;Importer...</translation>
+    </message>
+    <message>
+        <source>Import into the scene</source>
+        <translation>Importer dans la scène</translation>
+    </message>
+    <message>
+        <source>Scenes and models (*.gltf *.glb *.obj *.ply *.stl *.fbx *.dae *.3ds);;All files (*)</source>
+        <translation>Scènes et modèles (*.gltf *.glb *.obj *.ply *.stl *.fbx *.dae *.3ds);;Tous les fichiers (*)</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Enregistrer</translation>
+    </message>
+    <message>
+        <source>Save &amp;As...</source>
+        <translation>Enregistrer &amp;sous...</translation>
+    </message>
+    <message>
+        <source>&amp;Preferences...</source>
+        <translation>&amp;Préférences...</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Quitter</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Annuler</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Rétablir</translation>
+    </message>
+    <message>
+        <source>&amp;Delete</source>
+        <translation>&amp;Supprimer</translation>
+    </message>
+    <message>
+        <source>D&amp;uplicate</source>
+        <translation>D&amp;upliquer</translation>
+    </message>
+    <message>
+        <source>Select &amp;All</source>
+        <translation>&amp;Tout sélectionner</translation>
+    </message>
+    <message>
+        <source>Select &amp;None</source>
+        <translation>&amp;Ne rien sélectionner</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Fichier</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>Ouvrir un fichier &amp;récent</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>É&amp;dition</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Affichage</translation>
+    </message>
+    <message>
+        <source>&amp;Panels</source>
+        <translation>&amp;Panneaux</translation>
+    </message>
+    <message>
+        <source>&amp;Theme</source>
+        <translation>&amp;Thème</translation>
+    </message>
+    <message>
+        <source>System</source>
+        <translation>Système</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Lumière</translation>
+    </message>
+    <message>
+        <source>Dark</source>
+        <translation>Sombre</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Aide</translation>
+    </message>
+    <message>
+        <source>&amp;About Glint</source>
+        <translation>À &amp;propos de Glint</translation>
+    </message>
+    <message>
+        <source>About Glint</source>
+        <translation>À propos de Glint</translation>
+    </message>
+    <message>
+        <source>Glint %1: a scene editor with a built-in OpenGL 4.1 path tracer.</source>
+        <translation>Glint %1 : un éditeur de scènes avec un path tracer OpenGL 4.1 intégré.</translation>
+    </message>
+    <message>
+        <source>About &amp;Qt</source>
+        <translation>À propos de &amp;Qt</translation>
+    </message>
+    <message>
+        <source>Main</source>
+        <translation>Principale</translation>
+    </message>
+    <message>
+        <source>Main toolbar</source>
+        <translation>Barre d'outils principale</translation>
+    </message>
+    <message>
+        <source>View</source>
+        <translation>Affichage</translation>
+    </message>
+    <message>
+        <source>View toolbar</source>
+        <translation>Barre d'outils de la vue</translation>
+    </message>
+    <message>
+        <source>Clear the list</source>
+        <translation>Vider la liste</translation>
+    </message>
+    <message>
+        <source>&amp;Undo %1</source>
+        <translation>&amp;Annuler %1</translation>
+    </message>
+    <message>
+        <source>&amp;Redo %1</source>
+        <translation>&amp;Rétablir %1</translation>
+    </message>
+    <message>
+        <source>The new language applies after a restart.</source>
+        <translation>La nouvelle langue s'applique après un redémarrage.</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::OutlinerModel</name>
+    <message>
+        <source>Mesh</source>
+        <translation>Maillage</translation>
+    </message>
+    <message>
+        <source>Shape</source>
+        <translation>Forme</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Lumière</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>Caméra</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>Groupe</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <source>Visible</source>
+        <translation>Visible</translation>
+    </message>
+    <message>
+        <source>Hidden</source>
+        <translation>Masqué</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nom</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::OutlinerPanel</name>
+    <message>
+        <source>Filter by name</source>
+        <translation>Filtrer par nom</translation>
+    </message>
+    <message>
+        <source>Outliner filter</source>
+        <translation>Filtre de l'arborescence</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Ajouter</translation>
+    </message>
+    <message>
+        <source>Add a shape, light or camera</source>
+        <translation>Ajouter une forme, une lumière ou une caméra</translation>
+    </message>
+    <message>
+        <source>Scene outliner</source>
+        <translation>Arborescence de la scène</translation>
+    </message>
+    <message>
+        <source>Shape</source>
+        <translation>Forme</translation>
+    </message>
+    <message>
+        <source>Sphere</source>
+        <translation>Sphère</translation>
+    </message>
+    <message>
+        <source>Box</source>
+        <translation>Boîte</translation>
+    </message>
+    <message>
+        <source>Quad</source>
+        <translation>Quadrilatère</translation>
+    </message>
+    <message>
+        <source>Disk</source>
+        <translation>Disque</translation>
+    </message>
+    <message>
+        <source>Cylinder</source>
+        <translation>Cylindre</translation>
+    </message>
+    <message>
+        <source>Ground plane</source>
+        <translation>Plan du sol</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Lumière</translation>
+    </message>
+    <message>
+        <source>Point light</source>
+        <translation>Lumière ponctuelle</translation>
+    </message>
+    <message>
+        <source>Spot light</source>
+        <translation>Projecteur</translation>
+    </message>
+    <message>
+        <source>Sun</source>
+        <translation>Soleil</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>Caméra</translation>
+    </message>
+    <message>
+        <source>Empty group</source>
+        <translation>Groupe vide</translation>
+    </message>
+    <message>
+        <source>Rename</source>
+        <translation>Renommer</translation>
+    </message>
+    <message>
+        <source>Duplicate</source>
+        <translation>Dupliquer</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Supprimer</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::Preferences</name>
+    <message>
+        <source>System language</source>
+        <translation>Langue du système</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::PreferencesDialog</name>
+    <message>
+        <source>Preferences</source>
+        <translation>Préférences</translation>
+    </message>
+    <message>
+        <source>General</source>
+        <translation>Général</translation>
+    </message>
+    <message>
+        <source>Keymap</source>
+        <translation>Raccourcis</translation>
+    </message>
+    <message>
+        <source>System</source>
+        <translation>Système</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Lumière</translation>
+    </message>
+    <message>
+        <source>Dark</source>
+        <translation>Sombre</translation>
+    </message>
+    <message>
+        <source>Theme</source>
+        <translation>Thème</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Langue</translation>
+    </message>
+    <message>
+        <source>A new language applies to menus and panels after a restart.</source>
+        <translation>Une nouvelle langue s'applique aux menus et panneaux après un redémarrage.</translation>
+    </message>
+    <message>
+        <source> min</source>
+        <translation> min</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>Désactivé</translation>
+    </message>
+    <message>
+        <source>Autosave interval</source>
+        <translation>Intervalle de sauvegarde automatique</translation>
+    </message>
+    <message>
+        <source>Autosave every</source>
+        <translation>Sauvegarde automatique toutes les</translation>
+    </message>
+    <message>
+        <source>Command</source>
+        <translation>Commande</translation>
+    </message>
+    <message>
+        <source>Shortcut</source>
+        <translation>Raccourci</translation>
+    </message>
+    <message>
+        <source>Shortcut for %1</source>
+        <translation>Raccourci pour %1</translation>
+    </message>
+    <message>
+        <source>Shortcut conflict</source>
+        <translation>Conflit de raccourcis</translation>
+    </message>
+    <message>
+        <source>%1 is used by both "%2" and "%3".</source>
+        <translation>%1 est utilisé par « %2 » et « %3 ».</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::PropertiesPanel</name>
+    <message>
+        <source>Scene settings</source>
+        <translation>Paramètres de la scène</translation>
+    </message>
+    <message>
+        <source>Properties</source>
+        <translation>Propriétés</translation>
+    </message>
+    <message>
+        <source>Select a node in the outliner or the viewport to edit it.</source>
+        <translation>Sélectionnez un nœud dans l'arborescence ou la vue pour le modifier.</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::PropertyForm</name>
+    <message>
+        <source>Texture %1</source>
+        <translation>Texture %1</translation>
+    </message>
+    <message>
+        <source>%1 thumbnail</source>
+        <translation>Miniature de %1</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(aucune)</translation>
+    </message>
+    <message>
+        <source>unnamed</source>
+        <translation>sans nom</translation>
+    </message>
+    <message>
+        <source>Material: %1</source>
+        <translation>Matériau : %1</translation>
+    </message>
+    <message>
+        <source>Base colour</source>
+        <translation>Couleur de base</translation>
+    </message>
+    <message>
+        <source>Opacity</source>
+        <translation>Opacité</translation>
+    </message>
+    <message>
+        <source>Base colour texture</source>
+        <translation>Texture de couleur de base</translation>
+    </message>
+    <message>
+        <source>Metallic</source>
+        <translation>Métallique</translation>
+    </message>
+    <message>
+        <source>Roughness</source>
+        <translation>Rugosité</translation>
+    </message>
+    <message>
+        <source>Metallic-roughness texture</source>
+        <translation>Texture métallique-rugosité</translation>
+    </message>
+    <message>
+        <source>Normal texture</source>
+        <translation>Texture de normales</translation>
+    </message>
+    <message>
+        <source>Occlusion texture</source>
+        <translation>Texture d'occlusion</translation>
+    </message>
+    <message>
+        <source>Emission</source>
+        <translation>Émission</translation>
+    </message>
+    <message>
+        <source>Emission strength</source>
+        <translation>Intensité d'émission</translation>
+    </message>
+    <message>
+        <source>Emission texture</source>
+        <translation>Texture d'émission</translation>
+    </message>
+    <message>
+        <source>Specular</source>
+        <translation>Spéculaire</translation>
+    </message>
+    <message>
+        <source>Specular colour</source>
+        <translation>Couleur spéculaire</translation>
+    </message>
+    <message>
+        <source>Specular texture</source>
+        <translation>Texture spéculaire</translation>
+    </message>
+    <message>
+        <source>Specular colour texture</source>
+        <translation>Texture de couleur spéculaire</translation>
+    </message>
+    <message>
+        <source>Transmission</source>
+        <translation>Transmission</translation>
+    </message>
+    <message>
+        <source>Transmission texture</source>
+        <translation>Texture de transmission</translation>
+    </message>
+    <message>
+        <source>Index of refraction</source>
+        <translation>Indice de réfraction</translation>
+    </message>
+    <message>
+        <source>Thickness</source>
+        <translation>Épaisseur</translation>
+    </message>
+    <message>
+        <source>Thickness texture</source>
+        <translation>Texture d'épaisseur</translation>
+    </message>
+    <message>
+        <source>Attenuation distance (m)</source>
+        <translation>Distance d'atténuation (m)</translation>
+    </message>
+    <message>
+        <source>Attenuation colour</source>
+        <translation>Couleur d'atténuation</translation>
+    </message>
+    <message>
+        <source>Alpha mode</source>
+        <translation>Mode alpha</translation>
+    </message>
+    <message>
+        <source>Opaque</source>
+        <translation>Opaque</translation>
+    </message>
+    <message>
+        <source>Mask</source>
+        <translation>Masque</translation>
+    </message>
+    <message>
+        <source>Blend</source>
+        <translation>Mélange</translation>
+    </message>
+    <message>
+        <source>Alpha cutoff</source>
+        <translation>Seuil alpha</translation>
+    </message>
+    <message>
+        <source>Double sided</source>
+        <translation>Double face</translation>
+    </message>
+    <message>
+        <source>Node</source>
+        <translation>Nœud</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nom</translation>
+    </message>
+    <message>
+        <source>Visible</source>
+        <translation>Visible</translation>
+    </message>
+    <message>
+        <source>Transform</source>
+        <translation>Transformation</translation>
+    </message>
+    <message>
+        <source>Position %1</source>
+        <translation>Position %1</translation>
+    </message>
+    <message>
+        <source>Rotation %1 (degrees)</source>
+        <translation>Rotation %1 (degrés)</translation>
+    </message>
+    <message>
+        <source>Scale %1</source>
+        <translation>Échelle %1</translation>
+    </message>
+    <message>
+        <source>Shape</source>
+        <translation>Forme</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Type</translation>
+    </message>
+    <message>
+        <source>Sphere</source>
+        <translation>Sphère</translation>
+    </message>
+    <message>
+        <source>Quad</source>
+        <translation>Quadrilatère</translation>
+    </message>
+    <message>
+        <source>Disk</source>
+        <translation>Disque</translation>
+    </message>
+    <message>
+        <source>Box</source>
+        <translation>Boîte</translation>
+    </message>
+    <message>
+        <source>Cylinder</source>
+        <translation>Cylindre</translation>
+    </message>
+    <message>
+        <source>Ground plane</source>
+        <translation>Plan du sol</translation>
+    </message>
+    <message>
+        <source>Radius (m)</source>
+        <translation>Rayon (m)</translation>
+    </message>
+    <message>
+        <source>Height (m)</source>
+        <translation>Hauteur (m)</translation>
+    </message>
+    <message>
+        <source>Size %1 (m)</source>
+        <translation>Taille %1 (m)</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Lumière</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Type</translation>
+    </message>
+    <message>
+        <source>Sun</source>
+        <translation>Soleil</translation>
+    </message>
+    <message>
+        <source>Point</source>
+        <translation>Ponctuelle</translation>
+    </message>
+    <message>
+        <source>Spot</source>
+        <translation>Projecteur</translation>
+    </message>
+    <message>
+        <source>Colour</source>
+        <translation>Couleur</translation>
+    </message>
+    <message>
+        <source>lux</source>
+        <translation>lux</translation>
+    </message>
+    <message>
+        <source>cd</source>
+        <translation>cd</translation>
+    </message>
+    <message>
+        <source>Blender units</source>
+        <translation>unités Blender</translation>
+    </message>
+    <message>
+        <source>raw units</source>
+        <translation>unités brutes</translation>
+    </message>
+    <message>
+        <source>Intensity (%1, %2)</source>
+        <translation>Intensité (%1, %2)</translation>
+    </message>
+    <message>
+        <source>Range (m, 0 = infinite)</source>
+        <translation>Portée (m, 0 = infinie)</translation>
+    </message>
+    <message>
+        <source>Inner cone (degrees)</source>
+        <translation>Cône intérieur (degrés)</translation>
+    </message>
+    <message>
+        <source>Outer cone (degrees)</source>
+        <translation>Cône extérieur (degrés)</translation>
+    </message>
+    <message>
+        <source>Sun angular diameter (degrees)</source>
+        <translation>Diamètre angulaire du soleil (degrés)</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>Caméra</translation>
+    </message>
+    <message>
+        <source>Projection</source>
+        <translation>Projection</translation>
+    </message>
+    <message>
+        <source>Perspective</source>
+        <translation>Perspective</translation>
+    </message>
+    <message>
+        <source>Orthographic</source>
+        <translation>Orthographique</translation>
+    </message>
+    <message>
+        <source>Vertical field of view (degrees)</source>
+        <translation>Champ de vision vertical (degrés)</translation>
+    </message>
+    <message>
+        <source>Lens radius (m)</source>
+        <translation>Rayon de l'objectif (m)</translation>
+    </message>
+    <message>
+        <source>Focus distance (m)</source>
+        <translation>Distance de mise au point (m)</translation>
+    </message>
+    <message>
+        <source>Exposure (EV)</source>
+        <translation>Exposition (IL)</translation>
+    </message>
+    <message>
+        <source>Near clip (m)</source>
+        <translation>Plan de découpe proche (m)</translation>
+    </message>
+    <message>
+        <source>Active camera</source>
+        <translation>Caméra active</translation>
+    </message>
+    <message>
+        <source>Environment</source>
+        <translation>Environnement</translation>
+    </message>
+    <message>
+        <source>HDR file</source>
+        <translation>Fichier HDR</translation>
+    </message>
+    <message>
+        <source>Colour (no file)</source>
+        <translation>Couleur (sans fichier)</translation>
+    </message>
+    <message>
+        <source>Intensity</source>
+        <translation>Intensité</translation>
+    </message>
+    <message>
+        <source>Rotation (degrees)</source>
+        <translation>Rotation (degrés)</translation>
+    </message>
+    <message>
+        <source>Render settings</source>
+        <translation>Paramètres de rendu</translation>
+    </message>
+    <message>
+        <source>Configuration</source>
+        <translation>Configuration</translation>
+    </message>
+    <message>
+        <source>Width (px)</source>
+        <translation>Largeur (px)</translation>
+    </message>
+    <message>
+        <source>Height (px)</source>
+        <translation>Hauteur (px)</translation>
+    </message>
+    <message>
+        <source>Samples per pixel</source>
+        <translation>Échantillons par pixel</translation>
+    </message>
+    <message>
+        <source>Bounces</source>
+        <translation>Rebonds</translation>
+    </message>
+    <message>
+        <source>Seed</source>
+        <translation>Graine</translation>
+    </message>
+    <message>
+        <source>Tonemapper</source>
+        <translation>Mappage des tons</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Aucun</translation>
+    </message>
+    <message>
+        <source>ACES (fitted)</source>
+        <translation>ACES (approché)</translation>
+    </message>
+    <message>
+        <source>Khronos PBR Neutral</source>
+        <translation>Khronos PBR Neutral</translation>
+    </message>
+    <message>
+        <source>Radiance clamp (0 = off)</source>
+        <translation>Limite de luminance (0 = désactivée)</translation>
+    </message>
+    <message>
+        <source>Light units</source>
+        <translation>Unités de lumière</translation>
+    </message>
+    <message>
+        <source>Blender (W = lm / 683)</source>
+        <translation>Blender (W = lm / 683)</translation>
+    </message>
+    <message>
+        <source>Raw</source>
+        <translation>Brutes</translation>
+    </message>
+</context>
+</TS>

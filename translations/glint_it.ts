@@ -1,0 +1,1302 @@
+<?xml version='1.0' encoding='utf-8'?>
+<TS version="2.1" language="it" sourcelanguage="en">
+<context>
+    <name>RenderView</name>
+    <message>
+        <source>Viewport</source>
+        <translation>Vista</translation>
+    </message>
+    <message>
+        <source>A</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <source>B</source>
+        <translation>B</translation>
+    </message>
+    <message>
+        <source>Pixel %1, %2
+R %3  G %4  B %5 (linear)</source>
+        <translation>Pixel %1, %2
+R %3  G %4  B %5 (lineare)</translation>
+    </message>
+</context>
+<context>
+    <name>TimeRuler</name>
+    <message>
+        <source>Time ruler</source>
+        <translation>Righello temporale</translation>
+    </message>
+</context>
+<context>
+    <name>TimelinePanel</name>
+    <message>
+        <source>Timeline</source>
+        <translation>Timeline</translation>
+    </message>
+    <message>
+        <source>Path camera</source>
+        <translation>Camera del percorso</translation>
+    </message>
+    <message>
+        <source>  %1 s  (frame %2)</source>
+        <translation>  %1 s  (fotogramma %2)</translation>
+    </message>
+    <message>
+        <source>Add key</source>
+        <translation>Aggiungi chiave</translation>
+    </message>
+    <message>
+        <source>Add a camera-path key from the current view at the current time</source>
+        <translation>Aggiunge una chiave del percorso della camera dalla vista attuale all'istante attuale</translation>
+    </message>
+    <message>
+        <source>Delete key</source>
+        <translation>Elimina chiave</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Riproduci</translation>
+    </message>
+    <message>
+        <source>Loop</source>
+        <translation>Ciclo</translation>
+    </message>
+    <message>
+        <source>Constant speed</source>
+        <translation>Velocità costante</translation>
+    </message>
+    <message>
+        <source>X</source>
+        <translation>X</translation>
+    </message>
+    <message>
+        <source>Y</source>
+        <translation>Y</translation>
+    </message>
+    <message>
+        <source>Z</source>
+        <translation>Z</translation>
+    </message>
+    <message>
+        <source>FOV</source>
+        <translation>Campo visivo</translation>
+    </message>
+    <message>
+        <source>Focus</source>
+        <translation>Fuoco</translation>
+    </message>
+    <message>
+        <source>Lens</source>
+        <translation>Obiettivo</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Tempo</translation>
+    </message>
+    <message>
+        <source>Key %1</source>
+        <translation>Chiave %1</translation>
+    </message>
+</context>
+<context>
+    <name>Viewport</name>
+    <message>
+        <source>Path traced</source>
+        <translation>Path tracing</translation>
+    </message>
+    <message>
+        <source>Solid</source>
+        <translation>Solido</translation>
+    </message>
+    <message>
+        <source>Wireframe</source>
+        <translation>Wireframe</translation>
+    </message>
+    <message>
+        <source>Normals</source>
+        <translation>Normali</translation>
+    </message>
+    <message>
+        <source>Albedo</source>
+        <translation>Albedo</translation>
+    </message>
+    <message>
+        <source>Ambient occlusion</source>
+        <translation>Occlusione ambientale</translation>
+    </message>
+    <message>
+        <source>Motion vectors</source>
+        <translation>Vettori di movimento</translation>
+    </message>
+    <message>
+        <source>Variance</source>
+        <translation>Varianza</translation>
+    </message>
+    <message>
+        <source>Depth</source>
+        <translation>Profondità</translation>
+    </message>
+    <message>
+        <source>Viewport</source>
+        <translation>Vista</translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation>Sposta</translation>
+    </message>
+    <message>
+        <source>Rotate</source>
+        <translation>Ruota</translation>
+    </message>
+    <message>
+        <source>Scale</source>
+        <translation>Scala</translation>
+    </message>
+    <message>
+        <source>Frame selection</source>
+        <translation>Inquadra selezione</translation>
+    </message>
+    <message>
+        <source>Make scene camera from view</source>
+        <translation>Crea camera della scena dalla vista</translation>
+    </message>
+    <message>
+        <source>Look through selected camera</source>
+        <translation>Guarda dalla camera selezionata</translation>
+    </message>
+    <message>
+        <source>Snap (Ctrl inverts while dragging)</source>
+        <translation>Aggancio (Ctrl inverte durante il trascinamento)</translation>
+    </message>
+    <message>
+        <source>Pixel inspector</source>
+        <translation>Ispettore pixel</translation>
+    </message>
+    <message>
+        <source>Take snapshot A</source>
+        <translation>Cattura istantanea A</translation>
+    </message>
+    <message>
+        <source>Compare A | B</source>
+        <translation>Confronta A | B</translation>
+    </message>
+    <message>
+        <source>%1 spp  |  %2 ms/frame  |  1/%3 resolution%4</source>
+        <translation>%1 spp  |  %2 ms/fotogramma  |  risoluzione 1/%3%4</translation>
+    </message>
+    <message>
+        <source>  |  paused</source>
+        <translation>  |  in pausa</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::Autosave</name>
+    <message>
+        <source>Cannot create the autosave folder %1</source>
+        <translation>Impossibile creare la cartella di salvataggio automatico %1</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::ColorField</name>
+    <message>
+        <source>Choose a colour</source>
+        <translation>Scegli un colore</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::CommandLabels</name>
+    <message>
+        <source>Rename</source>
+        <translation>Rinomina</translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation>Sposta</translation>
+    </message>
+    <message>
+        <source>Show/hide</source>
+        <translation>Mostra/nascondi</translation>
+    </message>
+    <message>
+        <source>Edit component</source>
+        <translation>Modifica componente</translation>
+    </message>
+    <message>
+        <source>Reparent</source>
+        <translation>Cambia genitore</translation>
+    </message>
+    <message>
+        <source>Edit settings</source>
+        <translation>Modifica impostazioni</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Rimuovi</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Elimina</translation>
+    </message>
+    <message>
+        <source>Duplicate</source>
+        <translation>Duplica</translation>
+    </message>
+    <message>
+        <source>Add camera key</source>
+        <translation>Aggiungi chiave camera</translation>
+    </message>
+    <message>
+        <source>Edit camera key</source>
+        <translation>Modifica chiave camera</translation>
+    </message>
+    <message>
+        <source>Move camera key</source>
+        <translation>Sposta chiave camera</translation>
+    </message>
+    <message>
+        <source>Remove camera key</source>
+        <translation>Rimuovi chiave camera</translation>
+    </message>
+    <message>
+        <source>Camera path mode</source>
+        <translation>Modalità del percorso camera</translation>
+    </message>
+    <message>
+        <source>mesh</source>
+        <translation>mesh</translation>
+    </message>
+    <message>
+        <source>material</source>
+        <translation>materiale</translation>
+    </message>
+    <message>
+        <source>texture</source>
+        <translation>texture</translation>
+    </message>
+    <message>
+        <source>image</source>
+        <translation>immagine</translation>
+    </message>
+    <message>
+        <source>sampler</source>
+        <translation>campionatore</translation>
+    </message>
+    <message>
+        <source>Add %1</source>
+        <translation>Aggiungi %1</translation>
+    </message>
+    <message>
+        <source>Remove %1</source>
+        <translation>Rimuovi %1</translation>
+    </message>
+    <message>
+        <source>Duplicate %1</source>
+        <translation>Duplica %1</translation>
+    </message>
+    <message>
+        <source>Edit %1</source>
+        <translation>Modifica %1</translation>
+    </message>
+    <message>
+        <source>Import %1</source>
+        <translation>Importa %1</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::Document</name>
+    <message>
+        <source>The scene has no file name yet: use Save As.</source>
+        <translation>La scena non ha ancora un nome di file: usa Salva con nome.</translation>
+    </message>
+    <message>
+        <source>Import %1</source>
+        <translation>Importa %1</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>Senza titolo</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::EditOperations</name>
+    <message>
+        <source>Nothing is selected.</source>
+        <translation>Nessuna selezione.</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Elimina</translation>
+    </message>
+    <message>
+        <source>Duplicate</source>
+        <translation>Duplica</translation>
+    </message>
+    <message>
+        <source>The node no longer exists.</source>
+        <translation>Il nodo non esiste più.</translation>
+    </message>
+    <message>
+        <source>A node cannot be moved into itself or its own children.</source>
+        <translation>Un nodo non può essere spostato in sé stesso o nei propri figli.</translation>
+    </message>
+    <message>
+        <source>Reparent</source>
+        <translation>Cambia genitore</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::HistoryModel</name>
+    <message>
+        <source>&lt;empty&gt;</source>
+        <translation>&lt;vuoto&gt;</translation>
+    </message>
+    <message>
+        <source> (saved)</source>
+        <translation> (salvato)</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::HistoryPanel</name>
+    <message>
+        <source>Undo history</source>
+        <translation>Cronologia annullamenti</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::LogPanel</name>
+    <message>
+        <source>Log messages</source>
+        <translation>Messaggi del registro</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Svuota</translation>
+    </message>
+    <message>
+        <source>Clear the log</source>
+        <translation>Svuota il registro</translation>
+    </message>
+    <message>
+        <source>info</source>
+        <translation>info</translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation>avviso</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>errore</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::MainWindow</name>
+    <message>
+        <source>Glint scene editor</source>
+        <translation>Editor di scene Glint</translation>
+    </message>
+    <message>
+        <source>Scene to open</source>
+        <translation>Scena da aprire</translation>
+    </message>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation>Salvataggio automatico non riuscito: %1</translation>
+    </message>
+    <message>
+        <source>The viewport is not available in this build.</source>
+        <translation>La vista non è disponibile in questa build.</translation>
+    </message>
+    <message>
+        <source>Viewport</source>
+        <translation>Vista</translation>
+    </message>
+    <message>
+        <source>Outliner</source>
+        <translation>Struttura</translation>
+    </message>
+    <message>
+        <source>Undo history</source>
+        <translation>Cronologia annullamenti</translation>
+    </message>
+    <message>
+        <source>Properties</source>
+        <translation>Proprietà</translation>
+    </message>
+    <message>
+        <source>Scene</source>
+        <translation>Scena</translation>
+    </message>
+    <message>
+        <source>Log</source>
+        <translation>Registro</translation>
+    </message>
+    <message>
+        <source>Nothing selected</source>
+        <translation>Nessuna selezione</translation>
+    </message>
+    <message>
+        <source>Selected: %1</source>
+        <translation>Selezionato: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n nodes selected</source>
+        <translation><numerusform>%n nodo selezionato</numerusform><numerusform>%n nodi selezionati</numerusform></translation>
+    </message>
+    <message>
+        <source>%1 nodes, %2 triangles, configuration: %3</source>
+        <translation>%1 nodi, %2 triangoli, configurazione: %3</translation>
+    </message>
+    <message>
+        <source>Selection</source>
+        <translation>Selezione</translation>
+    </message>
+    <message>
+        <source>Scene statistics</source>
+        <translation>Statistiche della scena</translation>
+    </message>
+    <message>
+        <source>Render progress</source>
+        <translation>Avanzamento del rendering</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Modifiche non salvate</translation>
+    </message>
+    <message>
+        <source>"%1" has unsaved changes. Save them first?</source>
+        <translation>"%1" ha modifiche non salvate. Salvarle prima?</translation>
+    </message>
+    <message>
+        <source>Cannot open %1: %2</source>
+        <translation>Impossibile aprire %1: %2</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Apri</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>Aperto %1</translation>
+    </message>
+    <message>
+        <source>Cannot import %1: %2</source>
+        <translation>Impossibile importare %1: %2</translation>
+    </message>
+    <message>
+        <source>Imported %1</source>
+        <translation>Importato %1</translation>
+    </message>
+    <message>
+        <source>Cannot save: %1</source>
+        <translation>Impossibile salvare: %1</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>Salvato %1</translation>
+    </message>
+    <message>
+        <source>Save scene</source>
+        <translation>Salva scena</translation>
+    </message>
+    <message>
+        <source>glTF scenes (*.gltf *.glb)</source>
+        <translation>Scene glTF (*.gltf *.glb)</translation>
+    </message>
+    <message>
+        <source>Cannot save %1: %2</source>
+        <translation>Impossibile salvare %1: %2</translation>
+    </message>
+    <message>
+        <source>an untitled scene</source>
+        <translation>una scena senza titolo</translation>
+    </message>
+    <message>
+        <source>Recover unsaved work</source>
+        <translation>Recupera il lavoro non salvato</translation>
+    </message>
+    <message>
+        <source>Glint did not close normally last time. Recover the autosaved copy of %1?</source>
+        <translation>L'ultima volta Glint non si è chiuso normalmente. Recuperare la copia salvata automaticamente di %1?</translation>
+    </message>
+    <message>
+        <source>Cannot recover the autosaved copy: %1</source>
+        <translation>Impossibile recuperare la copia salvata automaticamente: %1</translation>
+    </message>
+    <message>
+        <source>Recovered the autosaved copy of %1</source>
+        <translation>Recuperata la copia salvata automaticamente di %1</translation>
+    </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>&amp;Nuovo</translation>
+    </message>
+    <message>
+        <source>&amp;Open...</source>
+        <translation>&amp;Apri...</translation>
+    </message>
+    <message>
+        <source>Open scene</source>
+        <translation>Apri scena</translation>
+    </message>
+    <message>
+        <source>Scenes (*.gltf *.glb *.glint.json);;All files (*)</source>
+        <translation>Scene (*.gltf *.glb *.glint.json);;Tutti i file (*)</translation>
+    </message>
+    <message>
+        <source>&amp;Import...</source>
+        <translation>&amp;Importa...</translation>
+    </message>
+    <message>
+        <source>Import into the scene</source>
+        <translation>Importa nella scena</translation>
+    </message>
+    <message>
+        <source>Scenes and models (*.gltf *.glb *.obj *.ply *.stl *.fbx *.dae *.3ds);;All files (*)</source>
+        <translation>Scene e modelli (*.gltf *.glb *.obj *.ply *.stl *.fbx *.dae *.3ds);;Tutti i file (*)</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Salva</translation>
+    </message>
+    <message>
+        <source>Save &amp;As...</source>
+        <translation>Salva &amp;con nome...</translation>
+    </message>
+    <message>
+        <source>&amp;Preferences...</source>
+        <translation>&amp;Preferenze...</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Esci</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Annulla</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Ripeti</translation>
+    </message>
+    <message>
+        <source>&amp;Delete</source>
+        <translation>&amp;Elimina</translation>
+    </message>
+    <message>
+        <source>D&amp;uplicate</source>
+        <translation>D&amp;uplica</translation>
+    </message>
+    <message>
+        <source>Select &amp;All</source>
+        <translation>Seleziona &amp;tutto</translation>
+    </message>
+    <message>
+        <source>Select &amp;None</source>
+        <translation>&amp;Deseleziona tutto</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;File</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>Apri &amp;recenti</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Modifica</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Visualizza</translation>
+    </message>
+    <message>
+        <source>&amp;Panels</source>
+        <translation>&amp;Pannelli</translation>
+    </message>
+    <message>
+        <source>&amp;Theme</source>
+        <translation>&amp;Tema</translation>
+    </message>
+    <message>
+        <source>System</source>
+        <translation>Sistema</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Luce</translation>
+    </message>
+    <message>
+        <source>Dark</source>
+        <translation>Scuro</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Aiuto</translation>
+    </message>
+    <message>
+        <source>&amp;About Glint</source>
+        <translation>&amp;Informazioni su Glint</translation>
+    </message>
+    <message>
+        <source>About Glint</source>
+        <translation>Informazioni su Glint</translation>
+    </message>
+    <message>
+        <source>Glint %1: a scene editor with a built-in OpenGL 4.1 path tracer.</source>
+        <translation>Glint %1: un editor di scene con un path tracer OpenGL 4.1 integrato.</translation>
+    </message>
+    <message>
+        <source>About &amp;Qt</source>
+        <translation>Informazioni su &amp;Qt</translation>
+    </message>
+    <message>
+        <source>Main</source>
+        <translation>Principale</translation>
+    </message>
+    <message>
+        <source>Main toolbar</source>
+        <translation>Barra degli strumenti principale</translation>
+    </message>
+    <message>
+        <source>View</source>
+        <translation>Vista</translation>
+    </message>
+    <message>
+        <source>View toolbar</source>
+        <translation>Barra degli strumenti della vista</translation>
+    </message>
+    <message>
+        <source>Clear the list</source>
+        <translation>Svuota l'elenco</translation>
+    </message>
+    <message>
+        <source>&amp;Undo %1</source>
+        <translation>&amp;Annulla %1</translation>
+    </message>
+    <message>
+        <source>&amp;Redo %1</source>
+        <translation>&amp;Ripeti %1</translation>
+    </message>
+    <message>
+        <source>The new language applies after a restart.</source>
+        <translation>La nuova lingua si applica dopo un riavvio.</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::OutlinerModel</name>
+    <message>
+        <source>Mesh</source>
+        <translation>Mesh</translation>
+    </message>
+    <message>
+        <source>Shape</source>
+        <translation>Forma</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Luce</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>Camera</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>Gruppo</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <source>Visible</source>
+        <translation>Visibile</translation>
+    </message>
+    <message>
+        <source>Hidden</source>
+        <translation>Nascosto</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nome</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::OutlinerPanel</name>
+    <message>
+        <source>Filter by name</source>
+        <translation>Filtra per nome</translation>
+    </message>
+    <message>
+        <source>Outliner filter</source>
+        <translation>Filtro della struttura</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Aggiungi</translation>
+    </message>
+    <message>
+        <source>Add a shape, light or camera</source>
+        <translation>Aggiungi una forma, una luce o una camera</translation>
+    </message>
+    <message>
+        <source>Scene outliner</source>
+        <translation>Struttura della scena</translation>
+    </message>
+    <message>
+        <source>Shape</source>
+        <translation>Forma</translation>
+    </message>
+    <message>
+        <source>Sphere</source>
+        <translation>Sfera</translation>
+    </message>
+    <message>
+        <source>Box</source>
+        <translation>Parallelepipedo</translation>
+    </message>
+    <message>
+        <source>Quad</source>
+        <translation>Quadrilatero</translation>
+    </message>
+    <message>
+        <source>Disk</source>
+        <translation>Disco</translation>
+    </message>
+    <message>
+        <source>Cylinder</source>
+        <translation>Cilindro</translation>
+    </message>
+    <message>
+        <source>Ground plane</source>
+        <translation>Piano del terreno</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Luce</translation>
+    </message>
+    <message>
+        <source>Point light</source>
+        <translation>Luce puntiforme</translation>
+    </message>
+    <message>
+        <source>Spot light</source>
+        <translation>Faretto</translation>
+    </message>
+    <message>
+        <source>Sun</source>
+        <translation>Sole</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>Camera</translation>
+    </message>
+    <message>
+        <source>Empty group</source>
+        <translation>Gruppo vuoto</translation>
+    </message>
+    <message>
+        <source>Rename</source>
+        <translation>Rinomina</translation>
+    </message>
+    <message>
+        <source>Duplicate</source>
+        <translation>Duplica</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Elimina</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::Preferences</name>
+    <message>
+        <source>System language</source>
+        <translation>Lingua di sistema</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::PreferencesDialog</name>
+    <message>
+        <source>Preferences</source>
+        <translation>Preferenze</translation>
+    </message>
+    <message>
+        <source>General</source>
+        <translation>Generale</translation>
+    </message>
+    <message>
+        <source>Keymap</source>
+        <translation>Scorciatoie</translation>
+    </message>
+    <message>
+        <source>System</source>
+        <translation>Sistema</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Luce</translation>
+    </message>
+    <message>
+        <source>Dark</source>
+        <translation>Scuro</translation>
+    </message>
+    <message>
+        <source>Theme</source>
+        <translation>Tema</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Lingua</translation>
+    </message>
+    <message>
+        <source>A new language applies to menus and panels after a restart.</source>
+        <translation>Una nuova lingua si applica a menu e pannelli dopo un riavvio.</translation>
+    </message>
+    <message>
+        <source> min</source>
+        <translation> min</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>Disattivato</translation>
+    </message>
+    <message>
+        <source>Autosave interval</source>
+        <translation>Intervallo di salvataggio automatico</translation>
+    </message>
+    <message>
+        <source>Autosave every</source>
+        <translation>Salvataggio automatico ogni</translation>
+    </message>
+    <message>
+        <source>Command</source>
+        <translation>Comando</translation>
+    </message>
+    <message>
+        <source>Shortcut</source>
+        <translation>Scorciatoia</translation>
+    </message>
+    <message>
+        <source>Shortcut for %1</source>
+        <translation>Scorciatoia per %1</translation>
+    </message>
+    <message>
+        <source>Shortcut conflict</source>
+        <translation>Conflitto di scorciatoie</translation>
+    </message>
+    <message>
+        <source>%1 is used by both "%2" and "%3".</source>
+        <translation>%1 è usata sia da "%2" sia da "%3".</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::PropertiesPanel</name>
+    <message>
+        <source>Scene settings</source>
+        <translation>Impostazioni della scena</translation>
+    </message>
+    <message>
+        <source>Properties</source>
+        <translation>Proprietà</translation>
+    </message>
+    <message>
+        <source>Select a node in the outliner or the viewport to edit it.</source>
+        <translation>Seleziona un nodo nella struttura o nella vista per modificarlo.</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::PropertyForm</name>
+    <message>
+        <source>Texture %1</source>
+        <translation>Texture %1</translation>
+    </message>
+    <message>
+        <source>%1 thumbnail</source>
+        <translation>Miniatura di %1</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(nessuna)</translation>
+    </message>
+    <message>
+        <source>unnamed</source>
+        <translation>senza nome</translation>
+    </message>
+    <message>
+        <source>Material: %1</source>
+        <translation>Materiale: %1</translation>
+    </message>
+    <message>
+        <source>Base colour</source>
+        <translation>Colore di base</translation>
+    </message>
+    <message>
+        <source>Opacity</source>
+        <translation>Opacità</translation>
+    </message>
+    <message>
+        <source>Base colour texture</source>
+        <translation>Texture del colore di base</translation>
+    </message>
+    <message>
+        <source>Metallic</source>
+        <translation>Metallicità</translation>
+    </message>
+    <message>
+        <source>Roughness</source>
+        <translation>Rugosità</translation>
+    </message>
+    <message>
+        <source>Metallic-roughness texture</source>
+        <translation>Texture metallicità-rugosità</translation>
+    </message>
+    <message>
+        <source>Normal texture</source>
+        <translation>Texture delle normali</translation>
+    </message>
+    <message>
+        <source>Occlusion texture</source>
+        <translation>Texture di occlusione</translation>
+    </message>
+    <message>
+        <source>Emission</source>
+        <translation>Emissione</translation>
+    </message>
+    <message>
+        <source>Emission strength</source>
+        <translation>Intensità di emissione</translation>
+    </message>
+    <message>
+        <source>Emission texture</source>
+        <translation>Texture di emissione</translation>
+    </message>
+    <message>
+        <source>Specular</source>
+        <translation>Speculare</translation>
+    </message>
+    <message>
+        <source>Specular colour</source>
+        <translation>Colore speculare</translation>
+    </message>
+    <message>
+        <source>Specular texture</source>
+        <translation>Texture speculare</translation>
+    </message>
+    <message>
+        <source>Specular colour texture</source>
+        <translation>Texture del colore speculare</translation>
+    </message>
+    <message>
+        <source>Transmission</source>
+        <translation>Trasmissione</translation>
+    </message>
+    <message>
+        <source>Transmission texture</source>
+        <translation>Texture di trasmissione</translation>
+    </message>
+    <message>
+        <source>Index of refraction</source>
+        <translation>Indice di rifrazione</translation>
+    </message>
+    <message>
+        <source>Thickness</source>
+        <translation>Spessore</translation>
+    </message>
+    <message>
+        <source>Thickness texture</source>
+        <translation>Texture dello spessore</translation>
+    </message>
+    <message>
+        <source>Attenuation distance (m)</source>
+        <translation>Distanza di attenuazione (m)</translation>
+    </message>
+    <message>
+        <source>Attenuation colour</source>
+        <translation>Colore di attenuazione</translation>
+    </message>
+    <message>
+        <source>Alpha mode</source>
+        <translation>Modalità alfa</translation>
+    </message>
+    <message>
+        <source>Opaque</source>
+        <translation>Opaco</translation>
+    </message>
+    <message>
+        <source>Mask</source>
+        <translation>Maschera</translation>
+    </message>
+    <message>
+        <source>Blend</source>
+        <translation>Fusione</translation>
+    </message>
+    <message>
+        <source>Alpha cutoff</source>
+        <translation>Soglia alfa</translation>
+    </message>
+    <message>
+        <source>Double sided</source>
+        <translation>Doppia faccia</translation>
+    </message>
+    <message>
+        <source>Node</source>
+        <translation>Nodo</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nome</translation>
+    </message>
+    <message>
+        <source>Visible</source>
+        <translation>Visibile</translation>
+    </message>
+    <message>
+        <source>Transform</source>
+        <translation>Trasformazione</translation>
+    </message>
+    <message>
+        <source>Position %1</source>
+        <translation>Posizione %1</translation>
+    </message>
+    <message>
+        <source>Rotation %1 (degrees)</source>
+        <translation>Rotazione %1 (gradi)</translation>
+    </message>
+    <message>
+        <source>Scale %1</source>
+        <translation>Scala %1</translation>
+    </message>
+    <message>
+        <source>Shape</source>
+        <translation>Forma</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <source>Sphere</source>
+        <translation>Sfera</translation>
+    </message>
+    <message>
+        <source>Quad</source>
+        <translation>Quadrilatero</translation>
+    </message>
+    <message>
+        <source>Disk</source>
+        <translation>Disco</translation>
+    </message>
+    <message>
+        <source>Box</source>
+        <translation>Parallelepipedo</translation>
+    </message>
+    <message>
+        <source>Cylinder</source>
+        <translation>Cilindro</translation>
+    </message>
+    <message>
+        <source>Ground plane</source>
+        <translation>Piano del terreno</translation>
+    </message>
+    <message>
+        <source>Radius (m)</source>
+        <translation>Raggio (m)</translation>
+    </message>
+    <message>
+        <source>Height (m)</source>
+        <translation>Altezza (m)</translation>
+    </message>
+    <message>
+        <source>Size %1 (m)</source>
+        <translation>Dimensione %1 (m)</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Luce</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <source>Sun</source>
+        <translation>Sole</translation>
+    </message>
+    <message>
+        <source>Point</source>
+        <translation>Puntiforme</translation>
+    </message>
+    <message>
+        <source>Spot</source>
+        <translation>Faretto</translation>
+    </message>
+    <message>
+        <source>Colour</source>
+        <translation>Colore</translation>
+    </message>
+    <message>
+        <source>lux</source>
+        <translation>lux</translation>
+    </message>
+    <message>
+        <source>cd</source>
+        <translation>cd</translation>
+    </message>
+    <message>
+        <source>Blender units</source>
+        <translation>unità Blender</translation>
+    </message>
+    <message>
+        <source>raw units</source>
+        <translation>unità grezze</translation>
+    </message>
+    <message>
+        <source>Intensity (%1, %2)</source>
+        <translation>Intensità (%1, %2)</translation>
+    </message>
+    <message>
+        <source>Range (m, 0 = infinite)</source>
+        <translation>Portata (m, 0 = infinita)</translation>
+    </message>
+    <message>
+        <source>Inner cone (degrees)</source>
+        <translation>Cono interno (gradi)</translation>
+    </message>
+    <message>
+        <source>Outer cone (degrees)</source>
+        <translation>Cono esterno (gradi)</translation>
+    </message>
+    <message>
+        <source>Sun angular diameter (degrees)</source>
+        <translation>Diametro angolare del sole (gradi)</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>Camera</translation>
+    </message>
+    <message>
+        <source>Projection</source>
+        <translation>Proiezione</translation>
+    </message>
+    <message>
+        <source>Perspective</source>
+        <translation>Prospettica</translation>
+    </message>
+    <message>
+        <source>Orthographic</source>
+        <translation>Ortografica</translation>
+    </message>
+    <message>
+        <source>Vertical field of view (degrees)</source>
+        <translation>Campo visivo verticale (gradi)</translation>
+    </message>
+    <message>
+        <source>Lens radius (m)</source>
+        <translation>Raggio dell'obiettivo (m)</translation>
+    </message>
+    <message>
+        <source>Focus distance (m)</source>
+        <translation>Distanza di messa a fuoco (m)</translation>
+    </message>
+    <message>
+        <source>Exposure (EV)</source>
+        <translation>Esposizione (EV)</translation>
+    </message>
+    <message>
+        <source>Near clip (m)</source>
+        <translation>Piano di taglio vicino (m)</translation>
+    </message>
+    <message>
+        <source>Active camera</source>
+        <translation>Camera attiva</translation>
+    </message>
+    <message>
+        <source>Environment</source>
+        <translation>Ambiente</translation>
+    </message>
+    <message>
+        <source>HDR file</source>
+        <translation>File HDR</translation>
+    </message>
+    <message>
+        <source>Colour (no file)</source>
+        <translation>Colore (senza file)</translation>
+    </message>
+    <message>
+        <source>Intensity</source>
+        <translation>Intensità</translation>
+    </message>
+    <message>
+        <source>Rotation (degrees)</source>
+        <translation>Rotazione (gradi)</translation>
+    </message>
+    <message>
+        <source>Render settings</source>
+        <translation>Impostazioni di rendering</translation>
+    </message>
+    <message>
+        <source>Configuration</source>
+        <translation>Configurazione</translation>
+    </message>
+    <message>
+        <source>Width (px)</source>
+        <translation>Larghezza (px)</translation>
+    </message>
+    <message>
+        <source>Height (px)</source>
+        <translation>Altezza (px)</translation>
+    </message>
+    <message>
+        <source>Samples per pixel</source>
+        <translation>Campioni per pixel</translation>
+    </message>
+    <message>
+        <source>Bounces</source>
+        <translation>Rimbalzi</translation>
+    </message>
+    <message>
+        <source>Seed</source>
+        <translation>Seme</translation>
+    </message>
+    <message>
+        <source>Tonemapper</source>
+        <translation>Tone mapping</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Nessuno</translation>
+    </message>
+    <message>
+        <source>ACES (fitted)</source>
+        <translation>ACES (approssimato)</translation>
+    </message>
+    <message>
+        <source>Khronos PBR Neutral</source>
+        <translation>Khronos PBR Neutral</translation>
+    </message>
+    <message>
+        <source>Radiance clamp (0 = off)</source>
+        <translation>Limite di radianza (0 = disattivato)</translation>
+    </message>
+    <message>
+        <source>Light units</source>
+        <translation>Unità di luce</translation>
+    </message>
+    <message>
+        <source>Blender (W = lm / 683)</source>
+        <translation>Blender (W = lm / 683)</translation>
+    </message>
+    <message>
+        <source>Raw</source>
+        <translation>Grezze</translation>
+    </message>
+</context>
+</TS>
