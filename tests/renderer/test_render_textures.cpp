@@ -31,7 +31,7 @@ int wrapIndex(float x, Wrap mode, int size) {
 }
 
 // A white-lit Lambert quad filling the image, its base colour from `texels`.
-// `halfSize` > 0.5 leaves a border of the (white) environment around the quad.
+// `halfSize` > 0.5 leaves a border of the (white) environment around the quad; 0: no camera.
 Scene texturedScene(const Texels& texels, const Sampler& s, glm::vec2 uvMin, glm::vec2 uvMax,
                     const TextureTransform& transform = {}, float halfSize = 0.5f) {
     Scene scene;
@@ -40,7 +40,7 @@ Scene texturedScene(const Texels& texels, const Sampler& s, glm::vec2 uvMin, glm
     m.baseColorTexture = ref(addTexture(scene, texels, s));
     m.baseColorTexture.transform = transform;
     addQuad(scene, texturedQuad(1.0f, scene.materials.add(m), uvMin, uvMax));
-    addTopCamera(scene, halfSize);
+    if (halfSize > 0.0f) addTopCamera(scene, halfSize);
     return scene;
 }
 
@@ -150,7 +150,7 @@ private slots:
     }
 
     // 32x32, 1 spp, seed 5. A 64x64 one-texel checkerboard (sRGB 0/255) on a quad covering 8x8
-    // pixels: each pixel spans 8x8 texels, the ray cone picks mip level 3, and every inner pixel is
+    // pixels (orthographic, and perspective from 4 m): each pixel spans 8x8 texels, the ray cone picks mip level 3, and every inner pixel is
     // the checkerboard's mean, 0.5 in linear light (within 0.01; level 3 holds 0.5 after 8-bit sRGB
     // rounding: 0.503; measured 0.002 off). Sampled at level 0 alone (minFilter LINEAR) the same pixels
     // scatter by more than 0.05 (measured 0.35).
@@ -161,18 +161,23 @@ private slots:
                 const std::uint8_t v = (x + y) % 2 ? 255 : 0;
                 checker.rgba.insert(checker.rgba.end(), {v, v, v, 255});
             }
-        const auto spread = [&](Filter minFilter, double& worst) {
+        const auto spread = [&](Filter minFilter, bool perspective, double& worst) {
             Sampler s = sampler(Filter::Linear);
             s.minFilter = minFilter;
-            const auto out = renderScene(*renderer_, texturedScene(checker, s, {0, 0}, {1, 1}, {}, 2.0f), 32, 1, 5);
+            Scene scene = texturedScene(checker, s, {0, 0}, {1, 1}, {}, perspective ? 0.0f : 2.0f);
+            // 4 m up, a 4 m wide view at the quad: the same 8x8 pixels.
+            if (perspective) addPerspectiveCamera(scene, {0.0f, 4.0f, 0.0f}, glm::vec3(0.0f), 2.0f * std::atan(0.5f));
+            const auto out = renderScene(*renderer_, scene, 32, 1, 5);
             worst = 0.0;
             for (int y = 13; y <= 18; ++y)
                 for (int x = 13; x <= 18; ++x) worst = std::max(worst, std::abs(pixel(out.radiance, 32, x, y, 0) - 0.5));
         };
-        double mipmapped = 0.0, levelZero = 0.0;
-        spread(Filter::LinearMipmapLinear, mipmapped);
-        spread(Filter::Linear, levelZero);
+        double mipmapped = 0.0, perspective = 0.0, levelZero = 0.0;
+        spread(Filter::LinearMipmapLinear, false, mipmapped);
+        spread(Filter::LinearMipmapLinear, true, perspective);
+        spread(Filter::Linear, false, levelZero);
         QVERIFY2(mipmapped < 0.01, qPrintable(QString("mipmapped: %1 off the mean").arg(mipmapped)));
+        QVERIFY2(perspective < 0.01, qPrintable(QString("mipmapped, perspective: %1 off the mean").arg(perspective)));
         QVERIFY2(levelZero > 0.05, qPrintable(QString("level 0 only: %1 off the mean").arg(levelZero)));
     }
 };
