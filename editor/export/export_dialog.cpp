@@ -1,0 +1,180 @@
+#include "editor/export/export_dialog.h"
+
+#include "editor/document/document.h"
+#include "editor/viewport/viewport.h"
+#include "renderer/configuration.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QProgressDialog>
+#include <QPushButton>
+#include <QSpinBox>
+
+#include <cmath>
+
+namespace glint::editor {
+
+namespace {
+
+QSpinBox* spin(QWidget* parent, int lo, int hi, int value, const QString& name) {
+    auto* box = new QSpinBox(parent);
+    box->setRange(lo, hi);
+    box->setValue(value);
+    box->setAccessibleName(name);
+    return box;
+}
+
+// The last frame of the project's animation at its fps (0 when there is none).
+int defaultLastFrame(const Scene& scene) {
+    const Timeline& t = scene.settings.timeline;
+    double end = t.end;
+    if (end <= t.start)
+        for (const auto& [id, node] : scene.nodes())
+            if (const auto* camera = node.get<Camera>(); camera && !camera->path.empty()) end = std::max(end, camera->path.keys.back().time);
+    const double fps = double(t.fpsNumerator) / std::max(1, t.fpsDenominator);
+    return std::max(0, int(std::floor((end - t.start) * fps + 1e-6)));
+}
+
+} // namespace
+
+ExportDialog::ExportDialog(Document& document, Kind kind, Viewport* viewport, QWidget* parent)
+    : QDialog(parent), document_(document), viewport_(viewport) {
+    setWindowTitle(kind == Kind::Still ? tr("Export image") : tr("Export animation"));
+    buildForm(kind);
+    connect(&controller_, &ExportController::finished, this, &ExportDialog::onFinished);
+    if (viewport_) connect(&controller_, &ExportController::running, viewport_, &Viewport::setPaused);
+}
+
+void ExportDialog::buildForm(Kind kind) {
+    const Scene& scene = document_.scene();
+    const RenderSettings& r = scene.settings.render;
+    auto* form = new QFormLayout;
+    const QString base = document_.filePath().isEmpty() ? QStringLiteral("render") : QFileInfo(document_.filePath()).completeBaseName();
+    const QString folder = document_.filePath().isEmpty() ? QString() : QFileInfo(document_.filePath()).absolutePath() + "/";
+    out_ = new QLineEdit(folder + base + (kind == Kind::Still ? ".exr" : "_####.exr"), this);
+    out_->setAccessibleName(tr("Output file"));
+    auto* browse = new QPushButton(tr("Browse..."), this);
+    connect(browse, &QPushButton::clicked, this, [this] {
+        const QString file = QFileDialog::getSaveFileName(this, tr("Output file"), out_->text(), tr("Images (*.exr *.png *.jpg *.tif)"));
+        if (!file.isEmpty()) out_->setText(file);
+    });
+    auto* outRow = new QHBoxLayout;
+    outRow->addWidget(out_);
+    outRow->addWidget(browse);
+    form->addRow(tr("Output"), outRow);
+    width_ = spin(this, 1, 16384, r.width, tr("Width"));
+    height_ = spin(this, 1, 16384, r.height, tr("Height"));
+    auto* sizeRow = new QHBoxLayout;
+    sizeRow->addWidget(width_);
+    sizeRow->addWidget(height_);
+    form->addRow(tr("Size"), sizeRow);
+    configuration_ = new QComboBox(this);
+    configuration_->setAccessibleName(tr("Configuration"));
+    for (const auto c : {renderer::Configuration::Accumulate, renderer::Configuration::Reference, renderer::Configuration::Baseline,
+                         renderer::Configuration::Realistic, renderer::Configuration::Full, renderer::Configuration::Heavy})
+        configuration_->addItem(QString::fromUtf8(renderer::configurationName(c).data(), qsizetype(renderer::configurationName(c).size())));
+    configuration_->setCurrentText(QString::fromStdString(r.configuration));
+    form->addRow(tr("Configuration"), configuration_);
+    spp_ = spin(this, 1, 1 << 20, r.spp, tr("Samples per pixel"));
+    form->addRow(tr("Samples per pixel"), spp_);
+    seed_ = spin(this, 0, 1 << 30, int(r.seed), tr("Seed"));
+    form->addRow(tr("Seed"), seed_);
+    aovs_ = new QLineEdit(QStringLiteral("all"), this);
+    aovs_->setAccessibleName(tr("EXR layers"));
+    aovs_->setToolTip(tr("all, none, or a list of albedo, normal, depth, id, variance"));
+    form->addRow(tr("EXR layers"), aovs_);
+    animation_ = new QCheckBox(tr("Animation"), this);
+    animation_->setChecked(kind == Kind::Animation);
+    animation_->setVisible(false);
+    first_ = spin(this, 0, 1 << 24, 0, tr("First frame"));
+    last_ = spin(this, 0, 1 << 24, defaultLastFrame(scene), tr("Last frame"));
+    if (kind == Kind::Animation) {
+        auto* range = new QHBoxLayout;
+        range->addWidget(first_);
+        range->addWidget(last_);
+        form->addRow(tr("Frames"), range);
+    } else {
+        first_->hide();
+        last_->hide();
+    }
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Cancel, this);
+    buttons->addButton(tr("Export"), QDialogButtonBox::AcceptRole);
+    connect(buttons, &QDialogButtonBox::accepted, this, &ExportDialog::startExport);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(form);
+    layout->addWidget(buttons);
+}
+
+ExportSettings ExportDialog::settings() const {
+    const Scene& scene = document_.scene();
+    ExportSettings s;
+    s.sceneFile = document_.filePath().toStdString();
+    s.out = out_->text().toStdString();
+    s.width = width_->value();
+    s.height = height_->value();
+    s.spp = spp_->value();
+    s.seed = std::uint32_t(seed_->value());
+    s.configuration = configuration_->currentText().toStdString();
+    s.aovs = aovs_->text().trimmed().toStdString();
+    s.animation = animation_->isChecked();
+    s.firstFrame = first_->value();
+    s.lastFrame = last_->value();
+    s.fpsNumerator = scene.settings.timeline.fpsNumerator;
+    s.fpsDenominator = scene.settings.timeline.fpsDenominator;
+    if (!s.animation && document_.currentTime() != 0.0) s.time = document_.currentTime();
+    return s;
+}
+
+void ExportDialog::setSettings(const ExportSettings& s) {
+    out_->setText(QString::fromStdString(s.out.string()));
+    width_->setValue(s.width);
+    height_->setValue(s.height);
+    spp_->setValue(s.spp);
+    seed_->setValue(int(s.seed));
+    configuration_->setCurrentText(QString::fromStdString(s.configuration));
+    aovs_->setText(QString::fromStdString(s.aovs));
+    first_->setValue(s.firstFrame);
+    last_->setValue(s.lastFrame);
+}
+
+void ExportDialog::startExport() {
+    try {
+        controller_.start(document_.scene(), settings());
+    } catch (const std::exception& e) {
+        QMessageBox::warning(this, windowTitle(), QString::fromStdString(e.what()));
+        return;
+    }
+    progress_ = new QProgressDialog(tr("Rendering..."), tr("Cancel"), 0, 100, this);
+    progress_->setWindowModality(Qt::WindowModal);
+    progress_->setMinimumDuration(0);
+    progress_->setAutoReset(false);
+    progress_->setAutoClose(false);
+    connect(&controller_, &ExportController::progress, progress_, [this](int done, int total) {
+        progress_->setMaximum(total);
+        progress_->setValue(done);
+    });
+    connect(progress_, &QProgressDialog::canceled, &controller_, &ExportController::cancel);
+    progress_->show();
+}
+
+void ExportDialog::onFinished(const QString& error, bool cancelled) {
+    if (progress_) {
+        progress_->deleteLater();
+        progress_ = nullptr;
+    }
+    if (!error.isEmpty()) {
+        QMessageBox::warning(this, windowTitle(), error);
+        return;
+    }
+    if (!cancelled) accept();
+}
+
+} // namespace glint::editor

@@ -1,0 +1,54 @@
+#pragma once
+// Export still / export animation: size, samples, configuration, output file (the format follows
+// its extension: .exr with AOVs, .png, .jpg, .tif), AOV layers, frame range. The export runs in
+// the background (ExportController) with a progress dialog and cancel; the viewport passed in is
+// paused meanwhile.
+#include "editor/export/export_job.h"
+
+#include <QDialog>
+
+class QCheckBox;
+class QComboBox;
+class QLineEdit;
+class QProgressDialog;
+class QSpinBox;
+
+namespace glint::editor {
+
+class Document;
+class Viewport;
+
+class ExportDialog : public QDialog {
+    Q_OBJECT
+public:
+    enum class Kind { Still, Animation };
+    ExportDialog(Document& document, Kind kind, Viewport* viewport = nullptr, QWidget* parent = nullptr);
+
+    ExportSettings settings() const;      // from the fields
+    void setSettings(const ExportSettings& settings);
+    ExportController& controller() { return controller_; }
+
+public slots:
+    void startExport(); // validates, starts, shows progress; reports errors in a message box
+
+private:
+    void buildForm(Kind kind);
+    void onFinished(const QString& error, bool cancelled);
+
+    Document& document_;
+    Viewport* viewport_;
+    ExportController controller_;
+    QLineEdit* out_ = nullptr;
+    QSpinBox* width_ = nullptr;
+    QSpinBox* height_ = nullptr;
+    QSpinBox* spp_ = nullptr;
+    QSpinBox* seed_ = nullptr;
+    QComboBox* configuration_ = nullptr;
+    QLineEdit* aovs_ = nullptr;
+    QCheckBox* animation_ = nullptr;
+    QSpinBox* first_ = nullptr;
+    QSpinBox* last_ = nullptr;
+    QProgressDialog* progress_ = nullptr;
+};
+
+} // namespace glint::editor

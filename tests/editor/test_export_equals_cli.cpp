@@ -1,0 +1,156 @@
+// The editor's export equals `glint render` for the same settings: the PNG byte for byte, the EXR
+// channel for channel bit-exact with the same header attributes except the render time. Also:
+// cancel leaves no file, and bad settings are refused before anything starts.
+// Scene: shapes under a grey sky and a camera, 48x32 px, 4 spp, accumulate, seed 0.
+#include "test_viewport_scene.h"
+
+#include "editor/export/export_job.h"
+#include "scene/history/node_commands.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <QFile>
+#include <QProcess>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace glint;
+using namespace glint::editor;
+
+namespace {
+
+struct ExrContents {
+    std::vector<std::string> channels;
+    std::vector<float> pixels;
+    std::map<std::string, std::string> attributes;
+};
+
+ExrContents readExr(const std::string& file) {
+    ExrContents c;
+    auto in = OIIO::ImageInput::open(file);
+    if (!in) return c;
+    const OIIO::ImageSpec& spec = in->spec();
+    c.channels = spec.channelnames;
+    c.pixels.resize(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(spec.nchannels));
+    in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, c.pixels.data());
+    for (const auto& p : spec.extra_attribs) c.attributes[p.name().string()] = p.get_string();
+    return c;
+}
+
+QByteArray bytesOf(const QString& file) {
+    QFile f(file);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+} // namespace
+
+class TestExportEqualsCli : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() {
+        QVERIFY(dir_.isValid());
+        test::buildShapesScene(document_);
+        Node camera;
+        camera.name = "cam";
+        camera.local.translation = {0.0f, 0.3f, 4.0f};
+        camera.component = Camera{};
+        document_.push(std::make_unique<AddNode>(std::move(camera)));
+        QCOMPARE(document_.saveAs(dir_.filePath("scene.gltf")), QString());
+    }
+
+    void stillEqualsCommandLine_data() {
+        QTest::addColumn<QString>("extension");
+        QTest::newRow("exr") << "exr";
+        QTest::newRow("png") << "png";
+    }
+
+    void stillEqualsCommandLine() {
+        QFETCH(QString, extension);
+        const QString editorFile = dir_.filePath("editor." + extension), cliFile = dir_.filePath("cli." + extension);
+        ExportSettings s;
+        s.sceneFile = document_.filePath().toStdString();
+        s.out = editorFile.toStdString();
+        s.width = 48;
+        s.height = 32;
+        s.spp = 4;
+        s.configuration = "accumulate";
+        ExportController controller;
+        QSignalSpy finished(&controller, &ExportController::finished);
+        QSignalSpy running(&controller, &ExportController::running);
+        controller.start(document_.scene(), s);
+        QVERIFY(finished.wait(60000));
+        QCOMPARE(finished.first().at(0).toString(), QString());
+        QCOMPARE(running.size(), 2); // paused the viewport and resumed it
+        QCOMPARE(controller.files(), QStringList{editorFile});
+
+        QProcess cli;
+        cli.start(GLINT_EXECUTABLE, {"render", document_.filePath(), "--size", "48x32", "--spp", "4", "--config", "accumulate",
+                                     "--out", cliFile});
+        QVERIFY(cli.waitForFinished(60000));
+        QVERIFY2(cli.exitCode() == 0, cli.readAllStandardError().constData());
+
+        if (extension == "png") {
+            const QByteArray a = bytesOf(editorFile), b = bytesOf(cliFile);
+            QVERIFY(!a.isEmpty());
+            QVERIFY(a == b);
+            return;
+        }
+        ExrContents a = readExr(editorFile.toStdString()), b = readExr(cliFile.toStdString());
+        QVERIFY(!a.pixels.empty());
+        QCOMPARE(a.channels, b.channels);
+        QVERIFY(std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)) == 0 && a.pixels.size() == b.pixels.size());
+        QVERIFY(a.attributes.count("glint:renderTimeMs") && a.attributes.count("glint:settingsHash"));
+        a.attributes.erase("glint:renderTimeMs");
+        b.attributes.erase("glint:renderTimeMs");
+        QCOMPARE(a.attributes, b.attributes);
+    }
+
+    void cancelWritesNothing() {
+        ExportSettings s;
+        s.sceneFile = document_.filePath().toStdString();
+        s.out = dir_.filePath("cancelled.exr").toStdString();
+        s.width = 64;
+        s.height = 64;
+        s.spp = 100000;
+        ExportController controller;
+        QSignalSpy finished(&controller, &ExportController::finished);
+        QSignalSpy progress(&controller, &ExportController::progress);
+        controller.start(document_.scene(), s);
+        QVERIFY(progress.wait(60000)); // rendering has begun
+        controller.cancel();
+        QVERIFY(finished.wait(60000));
+        QCOMPARE(finished.first().at(1).toBool(), true);
+        QVERIFY(!QFile::exists(dir_.filePath("cancelled.exr")));
+    }
+
+    void badSettingsAreRefusedUpFront() {
+        ExportSettings s;
+        s.sceneFile = document_.filePath().toStdString();
+        s.out = dir_.filePath("x.exr").toStdString();
+        s.configuration = "nonsense";
+        ExportController controller;
+        QVERIFY_THROWS_EXCEPTION(std::runtime_error, controller.start(document_.scene(), s));
+        QVERIFY(!controller.isRunning());
+        s.configuration = "accumulate";
+        s.animation = true;
+        s.out = dir_.filePath("no_pattern.exr").toStdString();
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, controller.start(document_.scene(), s));
+    }
+
+    void framePathsAndTimes() {
+        QCOMPARE(QString::fromStdString(framePath("out/shot_####.exr", 7).string()), QString("out/shot_0007.exr"));
+        QCOMPARE(QString::fromStdString(framePath("shot_#.png", 123).string()), QString("shot_123.png"));
+        ExportSettings s;
+        s.fpsNumerator = 24000;
+        s.fpsDenominator = 1001;
+        QCOMPARE(exportFrameTime(document_.scene(), s, 24), 24.0 * 1001.0 / 24000.0);
+    }
+
+private:
+    QTemporaryDir dir_;
+    Document document_;
+};
+
+QTEST_MAIN(TestExportEqualsCli)
+#include "test_export_equals_cli.moc"
