@@ -4,9 +4,11 @@
 #include "frame_pattern.h"
 #include "frame_progress.h"
 #include "frame_render.h"
+#include "history_animation.h"
 #include "report.h"
 #include "video_from_frames.h"
 
+#include "renderer/configuration.h"
 #include "renderer/output/frame_check.h"
 #include "renderer/output/image_files.h"
 #include "scene/anim/scene_at_time.h"
@@ -21,10 +23,10 @@ namespace glint::cli {
 
 namespace {
 
-// Configurations that keep history between frames (TAA, SVGF) need the frame renderer of the
-// real-time path; until the command line drives it, only per-frame converged ones animate.
-bool hasHistory(const std::string& configuration) {
-    return configuration != "accumulate" && configuration != "reference";
+// Configurations that keep history between frames (TAA, SVGF) render in chunks.
+bool hasHistory(const RenderOptions& o, const Scene& scene) {
+    const auto configuration = renderer::parseConfiguration(o.common.config.value_or(scene.settings.render.configuration));
+    return configuration && !renderer::traitsOf(*configuration).accumulate;
 }
 
 std::optional<std::string> fromEnvironment(const std::string& name) {
@@ -51,6 +53,26 @@ void renderFrame(renderer::OfflineRenderer& gpu, const RenderOptions& o, const S
     progress.rendered(frame, job.out.string());
 }
 
+int renderConverged(const RenderOptions& o, const Scene& scene, const FramePattern& pattern, const std::vector<int>& frames,
+                    const Fps& fps, const StopSignal& stop) {
+    renderer::OfflineRenderer gpu(o.common.requireGpu);
+    std::fprintf(stderr, "glint: GL_RENDERER: %s\n", gpu.glRenderer().c_str());
+    FrameProgress progress(int(frames.size()));
+    for (int frame : frames) {
+        try {
+            renderFrame(gpu, o, scene, pattern, frame, fps, stop, progress);
+        } catch (const RenderStopped&) {
+            std::fprintf(stderr, "glint: stopped by signal %d; frame %d discarded\n", stop.signalNumber(), frame);
+            return stop.exitCode();
+        }
+        if (stop.requested()) {
+            std::fprintf(stderr, "glint: stopped by signal %d after frame %d\n", stop.signalNumber(), frame);
+            return stop.exitCode();
+        }
+    }
+    return kSuccess;
+}
+
 } // namespace
 
 void validateAnimationOptions(const RenderOptions& o) {
@@ -67,9 +89,6 @@ void validateAnimationOptions(const RenderOptions& o) {
     } catch (const std::invalid_argument& e) {
         throw CLI::ValidationError("--out", e.what());
     }
-    if (o.common.config && hasHistory(*o.common.config))
-        throw CLI::ValidationError("--config", "animations render with accumulate or reference so far; the history "
-                                               "configurations (TAA/SVGF) are not available for --animation yet");
     if (o.video && (o.shard || o.shards))
         throw CLI::ValidationError("--video", "a shard has only some frames: encode once all shards are done (glint encode)");
 }
@@ -88,26 +107,22 @@ int renderAnimation(const RenderOptions& o, const Scene& scene) {
         return kUsage;
     }
     renderer::checkOutputWritable(pattern.frame(range.first));
-    const std::vector<int> frames = framesOfShard(range, shard);
-    std::fprintf(stderr, "glint: frames %d-%d at %d/%d fps, shard %d/%d: %zu frames\n", range.first, range.last,
-                 fps.numerator, fps.denominator, shard.index, shard.count, frames.size());
-
     const StopSignal stop;
-    renderer::OfflineRenderer gpu(o.common.requireGpu);
-    std::fprintf(stderr, "glint: GL_RENDERER: %s\n", gpu.glRenderer().c_str());
-    FrameProgress progress(int(frames.size()));
-    for (int frame : frames) {
-        try {
-            renderFrame(gpu, o, scene, pattern, frame, fps, stop, progress);
-        } catch (const RenderStopped&) {
-            std::fprintf(stderr, "glint: stopped by signal %d; frame %d discarded\n", stop.signalNumber(), frame);
-            return stop.exitCode();
-        }
-        if (stop.requested()) {
-            std::fprintf(stderr, "glint: stopped by signal %d after frame %d\n", stop.signalNumber(), frame);
-            return stop.exitCode();
-        }
+    int exitCode = kSuccess;
+    std::fprintf(stderr, "glint: frames %d-%d at %d/%d fps, shard %d/%d: ", range.first, range.last, fps.numerator,
+                 fps.denominator, shard.index, shard.count);
+    if (hasHistory(o, scene)) {
+        const auto chunks = chunksOfShard(range, shard, o.chunkFrames, o.warmupFrames);
+        std::fprintf(stderr, "%d frames in %zu chunks of %d (history reset per chunk, %d warm-up frames)\n",
+                     outputFrameCount(chunks), chunks.size(), o.chunkFrames, o.warmupFrames);
+        FrameProgress progress(outputFrameCount(chunks));
+        exitCode = renderHistoryChunks(o, scene, pattern, chunks, fps, stop, progress);
+    } else {
+        const std::vector<int> frames = framesOfShard(range, shard);
+        std::fprintf(stderr, "%zu frames\n", frames.size());
+        exitCode = renderConverged(o, scene, pattern, frames, fps, stop);
     }
+    if (exitCode != kSuccess) return exitCode;
     if (o.video) encodeFrames(pattern, range, fps, *o.video, o.codec);
     return kSuccess;
 }

@@ -58,8 +58,14 @@ void addAnimationOptions(CLI::App& cmd, RenderOptions& o) {
                                          "Render shard I of N (0 <= I < N); default: from SLURM_ARRAY_TASK_ID/"
                                          "_MIN/_COUNT or JOB_COMPLETION_INDEX, else all frames")
         ->check(CLI::Validator(rejection([](const std::string& v) { parseShard(v); }), "I/N", "shard"));
-    cmd.add_option("--shards", o.shards, "Shard count N with a Kubernetes indexed job's JOB_COMPLETION_INDEX")
+    cmd.add_option("--shards", o.shards, "Shard count N with a Kubernetes indexed job's JOB_COMPLETION_INDEX (default: none)")
         ->check(CLI::Range(1, 1 << 20));
+    cmd.add_option("--chunk", o.chunkFrames, "History configurations (TAA/SVGF): frames per chunk, history reset at "
+                                              "each chunk start; shards take whole chunks (default: 24)")
+        ->check(CLI::Range(1, 1 << 20));
+    cmd.add_option("--warmup", o.warmupFrames, "History configurations: frames rendered and discarded before each "
+                                               "chunk to fill its history (default: 8)")
+        ->check(CLI::Range(0, 1 << 20));
     cmd.add_option("--video", o.video, "Also encode the frames into this video (.mp4, .mov, .mkv) (default: none)")
         ->check(CLI::Validator(rejection([](const std::string& v) { video::defaultCodecFor(v); }), "FILE", "video"));
     cmd.add_option("--codec", o.codec, "Codec for --video: h264, prores, ffv1 (default: from the container)")

@@ -33,7 +33,7 @@ void addCommonRenderOptions(CLI::App& cmd, CommonRenderOptions& o) {
                                          "Image size WxH in pixels (default: the project's render size)");
     cmd.add_option("--spp", o.spp, "Samples per pixel (per frame with --config; default: the project's)")
         ->check(CLI::Range(1, 1 << 20));
-    cmd.add_option("--seed", o.seed, "Random seed (default: 0)");
+    cmd.add_option("--seed", o.seed, "Random seed; animation frame k uses seed + k (default: 0)");
     cmd.add_option("--bounces", o.bounces, "Maximum path length in bounces; 0 = emitters and direct light only "
                                           "(default: the project's)")
         ->check(CLI::Range(0, 1024));

@@ -20,7 +20,12 @@ void printSampleProgress(int done, int total) {
 
 RenderPlan planImage(const RenderOptions& o, const FrameJob& job) {
     RenderPlan plan = planRender(*job.scene, o.scene, o.common);
-    if (job.frame) {
+    if (job.history) {
+        // The noise varies with the frame index inside the chunk; K and W decide the history.
+        plan.metadata["spp"] = o.common.spp ? std::to_string(*o.common.spp) : std::string("configuration");
+        plan.metadata["chunk"] = std::to_string(o.chunkFrames) + "+" + std::to_string(o.warmupFrames) + " warm-up";
+        if (job.frame) plan.metadata["frame"] = std::to_string(*job.frame);
+    } else if (job.frame) {
         // Each frame its own noise (a fixed pattern would crawl over a moving image), and the
         // same noise for the same frame in every run and shard.
         plan.request.seed = o.common.seed + static_cast<std::uint32_t>(*job.frame);

@@ -21,6 +21,7 @@ struct FrameJob {
     std::optional<double> time;
     std::optional<int> frame;     // animation frames: the number, and the seed offset
     std::optional<Fps> fps;
+    bool history = false;         // a frame of a history chunk: one seed for the chunk, K and W hashed
 };
 
 // The plan of one image with its sealed settings hash (before rendering: --resume compares it).

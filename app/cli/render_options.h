@@ -20,6 +20,8 @@ struct RenderOptions {
     bool resume = true;
     std::optional<Shard> shard;
     std::optional<int> shards; // N for Kubernetes indexed jobs
+    int chunkFrames = kDefaultChunkFrames;   // history configurations: frames per chunk (K)
+    int warmupFrames = kDefaultWarmupFrames; // and discarded warm-up frames before a chunk (W)
     std::optional<std::string> video;
     std::optional<std::string> codec;
     CommonRenderOptions common;
