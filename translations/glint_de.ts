@@ -1,6 +1,93 @@
 <?xml version='1.0' encoding='utf-8'?>
 <TS version="2.1" language="de" sourcelanguage="en">
 <context>
+    <name>ExportDialog</name>
+    <message>
+        <source>Export image</source>
+        <translation>Bild exportieren</translation>
+    </message>
+    <message>
+        <source>Export animation</source>
+        <translation>Animation exportieren</translation>
+    </message>
+    <message>
+        <source>Output file</source>
+        <translation>Ausgabedatei</translation>
+    </message>
+    <message>
+        <source>Browse...</source>
+        <translation>Durchsuchen...</translation>
+    </message>
+    <message>
+        <source>Images (*.exr *.png *.jpg *.tif)</source>
+        <translation>Bilder (*.exr *.png *.jpg *.tif)</translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation>Ausgabe</translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation>Breite</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Höhe</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>Größe</translation>
+    </message>
+    <message>
+        <source>Configuration</source>
+        <translation>Konfiguration</translation>
+    </message>
+    <message>
+        <source>Samples per pixel</source>
+        <translation>Samples pro Pixel</translation>
+    </message>
+    <message>
+        <source>Seed</source>
+        <translation>Startwert</translation>
+    </message>
+    <message>
+        <source>EXR layers</source>
+        <translation>EXR-Ebenen</translation>
+    </message>
+    <message>
+        <source>all, none, or a list of albedo, normal, depth, id, variance</source>
+        <translation>all, none oder eine Liste aus albedo, normal, depth, id, variance</translation>
+    </message>
+    <message>
+        <source>Animation</source>
+        <translation>Animation</translation>
+    </message>
+    <message>
+        <source>First frame</source>
+        <translation>Erstes Bild</translation>
+    </message>
+    <message>
+        <source>Last frame</source>
+        <translation>Letztes Bild</translation>
+    </message>
+    <message>
+        <source>Frames</source>
+        <translation>Bilder</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exportieren</translation>
+    </message>
+    <message>
+        <source>Rendering...</source>
+        <translation>Rendern...</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+</context>
+<context>
     <name>RenderView</name>
     <message>
         <source>Viewport</source>
@@ -684,6 +771,18 @@ R %3  G %4  B %5 (linear)</translation>
         <source>The new language applies after a restart.</source>
         <translation>Die neue Sprache gilt nach einem Neustart.</translation>
     </message>
+    <message>
+        <source>Timeline</source>
+        <translation>Zeitleiste</translation>
+    </message>
+    <message>
+        <source>Export &amp;Image...</source>
+        <translation>&amp;Bild exportieren...</translation>
+    </message>
+    <message>
+        <source>Export A&amp;nimation...</source>
+        <translation>A&amp;nimation exportieren...</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::OutlinerModel</name>
@@ -1297,6 +1396,22 @@ R %3  G %4  B %5 (linear)</translation>
     <message>
         <source>Raw</source>
         <translation>Roh</translation>
+    </message>
+    <message>
+        <source>Browse...</source>
+        <translation>Durchsuchen...</translation>
+    </message>
+    <message>
+        <source>Choose an HDR environment file</source>
+        <translation>HDR-Umgebungsdatei wählen</translation>
+    </message>
+    <message>
+        <source>Environment map</source>
+        <translation>Umgebungskarte</translation>
+    </message>
+    <message>
+        <source>HDR images (*.hdr *.exr);;All files (*)</source>
+        <translation>HDR-Bilder (*.hdr *.exr);;Alle Dateien (*)</translation>
     </message>
 </context>
 </TS>

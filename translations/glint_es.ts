@@ -1,6 +1,93 @@
 <?xml version='1.0' encoding='utf-8'?>
 <TS version="2.1" language="es" sourcelanguage="en">
 <context>
+    <name>ExportDialog</name>
+    <message>
+        <source>Export image</source>
+        <translation>Exportar imagen</translation>
+    </message>
+    <message>
+        <source>Export animation</source>
+        <translation>Exportar animación</translation>
+    </message>
+    <message>
+        <source>Output file</source>
+        <translation>Archivo de salida</translation>
+    </message>
+    <message>
+        <source>Browse...</source>
+        <translation>Examinar...</translation>
+    </message>
+    <message>
+        <source>Images (*.exr *.png *.jpg *.tif)</source>
+        <translation>Imágenes (*.exr *.png *.jpg *.tif)</translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation>Salida</translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation>Ancho</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Alto</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>Tamaño</translation>
+    </message>
+    <message>
+        <source>Configuration</source>
+        <translation>Configuración</translation>
+    </message>
+    <message>
+        <source>Samples per pixel</source>
+        <translation>Muestras por píxel</translation>
+    </message>
+    <message>
+        <source>Seed</source>
+        <translation>Semilla</translation>
+    </message>
+    <message>
+        <source>EXR layers</source>
+        <translation>Capas EXR</translation>
+    </message>
+    <message>
+        <source>all, none, or a list of albedo, normal, depth, id, variance</source>
+        <translation>all, none, o una lista de albedo, normal, depth, id, variance</translation>
+    </message>
+    <message>
+        <source>Animation</source>
+        <translation>Animación</translation>
+    </message>
+    <message>
+        <source>First frame</source>
+        <translation>Primer fotograma</translation>
+    </message>
+    <message>
+        <source>Last frame</source>
+        <translation>Último fotograma</translation>
+    </message>
+    <message>
+        <source>Frames</source>
+        <translation>Fotogramas</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exportar</translation>
+    </message>
+    <message>
+        <source>Rendering...</source>
+        <translation>Renderizando...</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+</context>
+<context>
     <name>RenderView</name>
     <message>
         <source>Viewport</source>
@@ -684,6 +771,18 @@ R %3  G %4  B %5 (lineal)</translation>
         <source>The new language applies after a restart.</source>
         <translation>El nuevo idioma se aplica tras reiniciar.</translation>
     </message>
+    <message>
+        <source>Timeline</source>
+        <translation>Línea de tiempo</translation>
+    </message>
+    <message>
+        <source>Export &amp;Image...</source>
+        <translation>Exportar &amp;imagen...</translation>
+    </message>
+    <message>
+        <source>Export A&amp;nimation...</source>
+        <translation>Exportar a&amp;nimación...</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::OutlinerModel</name>
@@ -1297,6 +1396,22 @@ R %3  G %4  B %5 (lineal)</translation>
     <message>
         <source>Raw</source>
         <translation>Sin convertir</translation>
+    </message>
+    <message>
+        <source>Browse...</source>
+        <translation>Examinar...</translation>
+    </message>
+    <message>
+        <source>Choose an HDR environment file</source>
+        <translation>Elegir un archivo de entorno HDR</translation>
+    </message>
+    <message>
+        <source>Environment map</source>
+        <translation>Mapa de entorno</translation>
+    </message>
+    <message>
+        <source>HDR images (*.hdr *.exr);;All files (*)</source>
+        <translation>Imágenes HDR (*.hdr *.exr);;Todos los archivos (*)</translation>
     </message>
 </context>
 </TS>

@@ -1,6 +1,93 @@
 <?xml version='1.0' encoding='utf-8'?>
 <TS version="2.1" language="fr" sourcelanguage="en">
 <context>
+    <name>ExportDialog</name>
+    <message>
+        <source>Export image</source>
+        <translation>Exporter une image</translation>
+    </message>
+    <message>
+        <source>Export animation</source>
+        <translation>Exporter une animation</translation>
+    </message>
+    <message>
+        <source>Output file</source>
+        <translation>Fichier de sortie</translation>
+    </message>
+    <message>
+        <source>Browse...</source>
+        <translation>Parcourir...</translation>
+    </message>
+    <message>
+        <source>Images (*.exr *.png *.jpg *.tif)</source>
+        <translation>Images (*.exr *.png *.jpg *.tif)</translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation>Sortie</translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation>Largeur</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Hauteur</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>Taille</translation>
+    </message>
+    <message>
+        <source>Configuration</source>
+        <translation>Configuration</translation>
+    </message>
+    <message>
+        <source>Samples per pixel</source>
+        <translation>Échantillons par pixel</translation>
+    </message>
+    <message>
+        <source>Seed</source>
+        <translation>Graine</translation>
+    </message>
+    <message>
+        <source>EXR layers</source>
+        <translation>Calques EXR</translation>
+    </message>
+    <message>
+        <source>all, none, or a list of albedo, normal, depth, id, variance</source>
+        <translation>all, none, ou une liste parmi albedo, normal, depth, id, variance</translation>
+    </message>
+    <message>
+        <source>Animation</source>
+        <translation>Animation</translation>
+    </message>
+    <message>
+        <source>First frame</source>
+        <translation>Première image</translation>
+    </message>
+    <message>
+        <source>Last frame</source>
+        <translation>Dernière image</translation>
+    </message>
+    <message>
+        <source>Frames</source>
+        <translation>Images</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exporter</translation>
+    </message>
+    <message>
+        <source>Rendering...</source>
+        <translation>Rendu en cours...</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Annuler</translation>
+    </message>
+</context>
+<context>
     <name>RenderView</name>
     <message>
         <source>Viewport</source>
@@ -684,6 +771,18 @@ R %3  V %4  B %5 (linéaire)</translation>
         <source>The new language applies after a restart.</source>
         <translation>La nouvelle langue s'applique après un redémarrage.</translation>
     </message>
+    <message>
+        <source>Timeline</source>
+        <translation>Chronologie</translation>
+    </message>
+    <message>
+        <source>Export &amp;Image...</source>
+        <translation>Exporter une &amp;image...</translation>
+    </message>
+    <message>
+        <source>Export A&amp;nimation...</source>
+        <translation>Exporter une a&amp;nimation...</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::OutlinerModel</name>
@@ -1297,6 +1396,22 @@ R %3  V %4  B %5 (linéaire)</translation>
     <message>
         <source>Raw</source>
         <translation>Brutes</translation>
+    </message>
+    <message>
+        <source>Browse...</source>
+        <translation>Parcourir...</translation>
+    </message>
+    <message>
+        <source>Choose an HDR environment file</source>
+        <translation>Choisir un fichier d'environnement HDR</translation>
+    </message>
+    <message>
+        <source>Environment map</source>
+        <translation>Carte d'environnement</translation>
+    </message>
+    <message>
+        <source>HDR images (*.hdr *.exr);;All files (*)</source>
+        <translation>Images HDR (*.hdr *.exr);;Tous les fichiers (*)</translation>
     </message>
 </context>
 </TS>

@@ -1,6 +1,93 @@
 <?xml version='1.0' encoding='utf-8'?>
 <TS version="2.1" language="it" sourcelanguage="en">
 <context>
+    <name>ExportDialog</name>
+    <message>
+        <source>Export image</source>
+        <translation>Esporta immagine</translation>
+    </message>
+    <message>
+        <source>Export animation</source>
+        <translation>Esporta animazione</translation>
+    </message>
+    <message>
+        <source>Output file</source>
+        <translation>File di uscita</translation>
+    </message>
+    <message>
+        <source>Browse...</source>
+        <translation>Sfoglia...</translation>
+    </message>
+    <message>
+        <source>Images (*.exr *.png *.jpg *.tif)</source>
+        <translation>Immagini (*.exr *.png *.jpg *.tif)</translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation>Uscita</translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation>Larghezza</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Altezza</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>Dimensione</translation>
+    </message>
+    <message>
+        <source>Configuration</source>
+        <translation>Configurazione</translation>
+    </message>
+    <message>
+        <source>Samples per pixel</source>
+        <translation>Campioni per pixel</translation>
+    </message>
+    <message>
+        <source>Seed</source>
+        <translation>Seme</translation>
+    </message>
+    <message>
+        <source>EXR layers</source>
+        <translation>Livelli EXR</translation>
+    </message>
+    <message>
+        <source>all, none, or a list of albedo, normal, depth, id, variance</source>
+        <translation>all, none, oppure un elenco tra albedo, normal, depth, id, variance</translation>
+    </message>
+    <message>
+        <source>Animation</source>
+        <translation>Animazione</translation>
+    </message>
+    <message>
+        <source>First frame</source>
+        <translation>Primo fotogramma</translation>
+    </message>
+    <message>
+        <source>Last frame</source>
+        <translation>Ultimo fotogramma</translation>
+    </message>
+    <message>
+        <source>Frames</source>
+        <translation>Fotogrammi</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Esporta</translation>
+    </message>
+    <message>
+        <source>Rendering...</source>
+        <translation>Rendering in corso...</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Annulla</translation>
+    </message>
+</context>
+<context>
     <name>RenderView</name>
     <message>
         <source>Viewport</source>
@@ -684,6 +771,18 @@ R %3  G %4  B %5 (lineare)</translation>
         <source>The new language applies after a restart.</source>
         <translation>La nuova lingua si applica dopo un riavvio.</translation>
     </message>
+    <message>
+        <source>Timeline</source>
+        <translation>Timeline</translation>
+    </message>
+    <message>
+        <source>Export &amp;Image...</source>
+        <translation>Esporta &amp;immagine...</translation>
+    </message>
+    <message>
+        <source>Export A&amp;nimation...</source>
+        <translation>Esporta a&amp;nimazione...</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::OutlinerModel</name>
@@ -1297,6 +1396,22 @@ R %3  G %4  B %5 (lineare)</translation>
     <message>
         <source>Raw</source>
         <translation>Grezze</translation>
+    </message>
+    <message>
+        <source>Browse...</source>
+        <translation>Sfoglia...</translation>
+    </message>
+    <message>
+        <source>Choose an HDR environment file</source>
+        <translation>Scegli un file d'ambiente HDR</translation>
+    </message>
+    <message>
+        <source>Environment map</source>
+        <translation>Mappa d'ambiente</translation>
+    </message>
+    <message>
+        <source>HDR images (*.hdr *.exr);;All files (*)</source>
+        <translation>Immagini HDR (*.hdr *.exr);;Tutti i file (*)</translation>
     </message>
 </context>
 </TS>

@@ -11,7 +11,12 @@
 #include "editor/properties/properties_panel.h"
 
 #if defined(GLINT_HAVE_VIEWPORT)
+#include "editor/viewport/render_view.h"
+#include "editor/viewport/view_camera.h"
 #include "editor/viewport/viewport.h"
+#endif
+#if defined(GLINT_HAVE_TIMELINE)
+#include "editor/timeline/timeline_panel.h"
 #endif
 
 #include <QApplication>
@@ -81,6 +86,7 @@ void MainWindow::createCentralView() {
 void MainWindow::createViewport() {
 #if defined(GLINT_HAVE_VIEWPORT)
     auto* viewport = new Viewport(*document_, this);
+    viewport_ = viewport;
     viewport->setAccessibleName(tr("Viewport"));
     viewportActions_ = viewport->allActions();
     connect(viewport, &Viewport::statusMessage, this, [this](const QString& text) { renderLabel_->setText(text); });
@@ -108,12 +114,26 @@ void MainWindow::createDocks() {
     auto* propertiesDock = addDock(properties_, tr("Properties"), "PropertiesDock", Qt::RightDockWidgetArea);
     auto* sceneDock = addDock(sceneSettings_, tr("Scene"), "SceneDock", Qt::RightDockWidgetArea);
     auto* logDock = addDock(log_, tr("Log"), "LogDock", Qt::BottomDockWidgetArea);
+    Q_UNUSED(logDock)
+#if defined(GLINT_HAVE_TIMELINE)
+    timeline_ = new TimelinePanel(*document_, this);
+#if defined(GLINT_HAVE_VIEWPORT)
+    if (viewport_) {
+        // New keys take the viewport's pose; a scene without a camera gets one from the view.
+        timeline_->setKeySource([this](double t) { return keyFromView(viewport_->view().camera(), t); });
+        timeline_->setCameraMaker([this] { return viewport_->makeSceneCamera(); });
+    }
+#endif
+    auto* timelineDock = addDock(timeline_, tr("Timeline"), "TimelineDock", Qt::BottomDockWidgetArea);
+    tabifyDockWidget(logDock, timelineDock);
+    timelineDock->raise();
+#endif
     splitDockWidget(outlinerDock, historyDock, Qt::Vertical);
     tabifyDockWidget(propertiesDock, sceneDock);
     propertiesDock->raise();
     // The viewport gets most of the room until the user's own layout is restored.
     resizeDocks({outlinerDock, propertiesDock}, {260, 380}, Qt::Horizontal);
-    resizeDocks({logDock}, {110}, Qt::Vertical);
+    resizeDocks({logDock}, {150}, Qt::Vertical);
     for (auto* panel : {static_cast<QObject*>(outliner_), static_cast<QObject*>(properties_),
                         static_cast<QObject*>(sceneSettings_), static_cast<QObject*>(history_)})
         connect(panel, SIGNAL(message(QString)), log_, SLOT(warning(QString)));

@@ -20,6 +20,8 @@ class HistoryPanel;
 class LogPanel;
 class OutlinerPanel;
 class PropertiesPanel;
+class TimelinePanel;
+class Viewport;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -41,6 +43,8 @@ public:
     LogPanel& log() { return *log_; }
     Autosave& autosave() { return *autosave_; }
     QWidget* centralView() const { return centralWidget(); }
+    Viewport* viewport() const { return viewport_; }       // null without the viewport
+    TimelinePanel* timeline() const { return timeline_; }  // null without the timeline
 
     // Every action with a shortcut the keymap may change.
     QList<QAction*> keymapActions() const;
@@ -69,6 +73,7 @@ private:
     void createMenus();
     void createToolBar();
     void createStatusBar();
+    void createExportActions(QMenu* file);
     void applyPreferences();
     void showPreferences();
     void restoreLayout();
@@ -88,6 +93,8 @@ private:
     PropertiesPanel* sceneSettings_ = nullptr;
     HistoryPanel* history_ = nullptr;
     LogPanel* log_ = nullptr;
+    Viewport* viewport_ = nullptr;
+    TimelinePanel* timeline_ = nullptr;
     QMenu* recentMenu_ = nullptr;
     QMenu* viewMenu_ = nullptr;
     QLabel* selectionLabel_ = nullptr;

@@ -10,6 +10,10 @@
 #include "editor/outliner/outliner_panel.h"
 #include "editor/preferences/preferences_dialog.h"
 
+#if defined(GLINT_HAVE_EXPORT)
+#include "editor/export/export_dialog.h"
+#endif
+
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
@@ -114,6 +118,7 @@ void MainWindow::createMenus() {
     file->addSeparator();
     file->addAction(find("file.save"));
     file->addAction(find("file.save_as"));
+    createExportActions(file);
     file->addSeparator();
     file->addAction(find("file.quit"));
 
@@ -158,6 +163,27 @@ void MainWindow::createMenus() {
                                .arg(QCoreApplication::applicationVersion()));
     });
     help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
+}
+
+void MainWindow::createExportActions(QMenu* file) {
+#if defined(GLINT_HAVE_EXPORT)
+    file->addSeparator();
+    auto* still = makeAction("file.export_still", tr("Export &Image..."), QKeySequence(Qt::CTRL | Qt::Key_E));
+    auto* animation = makeAction("file.export_animation", tr("Export A&nimation..."),
+                                 QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E));
+    auto open = [this](ExportDialog::Kind kind) {
+        // Modeless: the export runs in the background while the dialog shows its progress.
+        auto* dialog = new ExportDialog(*document_, kind, viewport_, this);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        dialog->show();
+    };
+    connect(still, &QAction::triggered, this, [open] { open(ExportDialog::Kind::Still); });
+    connect(animation, &QAction::triggered, this, [open] { open(ExportDialog::Kind::Animation); });
+    file->addAction(still);
+    file->addAction(animation);
+#else
+    Q_UNUSED(file)
+#endif
 }
 
 void MainWindow::createToolBar() {

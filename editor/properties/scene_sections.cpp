@@ -3,6 +3,13 @@
 
 #include "property_edits.h"
 
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QLineEdit>
+#include <QToolButton>
+
 namespace glint::editor {
 namespace {
 
@@ -23,9 +30,29 @@ PropertyForm* makeEnvironmentForm(Document& document, const Report& report, QWid
     auto* form = new PropertyForm(document, PropertyForm::tr("Environment"), parent);
     const Edit edit = settingsEditor(document, report);
     const Scene& scene = document.scene();
-    form->addText(
-        PropertyForm::tr("HDR file"), [&scene] { return QString::fromStdString(scene.settings.environment.file); },
-        [edit](const QString& file) { edit([&](ProjectSettings& s) { s.environment.file = file.toStdString(); }, 0); });
+    // The file is stored relative to the project folder (the scene file's folder once saved).
+    auto* row = new QWidget(form);
+    auto* path = new QLineEdit(row);
+    auto* browse = new QToolButton(row);
+    browse->setText(PropertyForm::tr("Browse..."));
+    browse->setAccessibleName(PropertyForm::tr("Choose an HDR environment file"));
+    auto* rowLayout = new QHBoxLayout(row);
+    rowLayout->setContentsMargins(0, 0, 0, 0);
+    rowLayout->addWidget(path, 1);
+    rowLayout->addWidget(browse);
+    auto setFile = [edit](const QString& file) {
+        edit([&](ProjectSettings& s) { s.environment.file = file.toStdString(); }, 0);
+    };
+    QObject::connect(path, &QLineEdit::editingFinished, row, [path, setFile] { setFile(path->text()); });
+    QObject::connect(browse, &QToolButton::clicked, row, [&document, row, setFile] {
+        const QString folder = document.filePath().isEmpty() ? QDir::currentPath() : QFileInfo(document.filePath()).absolutePath();
+        const QString file = QFileDialog::getOpenFileName(row, PropertyForm::tr("Environment map"), folder,
+                                                          PropertyForm::tr("HDR images (*.hdr *.exr);;All files (*)"));
+        if (!file.isEmpty()) setFile(QDir(folder).relativeFilePath(file));
+    });
+    form->addWidget(PropertyForm::tr("HDR file"), row, [&scene, path] {
+        if (!path->hasFocus()) path->setText(QString::fromStdString(scene.settings.environment.file));
+    });
     form->addColor(
         PropertyForm::tr("Colour (no file)"),
         [&scene] {
