@@ -1,11 +1,11 @@
 #include "speed_accuracy_chart.h"
 
 #include <QtCharts/QChart>
-#include <QtCharts/QChartView>
 #include <QtCharts/QLegend>
 #include <QtCharts/QLineSeries>
 #include <QtCharts/QLogValueAxis>
-#include <QtCharts/QScatterSeries>
+#include <QCoreApplication>
+#include <QGraphicsScene>
 #include <QImage>
 #include <QPainter>
 #include <QSvgGenerator>
@@ -30,8 +30,8 @@ QLogValueAxis* logAxis(const QString& title, double low, double high) {
     return axis;
 }
 
-// Chart and view own each other's parts; the view owns the chart.
-QChartView* buildChart(const std::vector<ChartCurve>& curves, const std::string& title) {
+// The chart owns its series and axes.
+QChart* buildChart(const std::vector<ChartCurve>& curves, const std::string& title) {
     auto* chart = new QChart;
     chart->setTitle(QString::fromStdString(title));
     chart->setAnimationOptions(QChart::NoAnimation);
@@ -60,23 +60,27 @@ QChartView* buildChart(const std::vector<ChartCurve>& curves, const std::string&
         s->attachAxis(y);
     }
     chart->legend()->setAlignment(Qt::AlignRight);
-    auto* view = new QChartView(chart);
-    view->setRenderHint(QPainter::Antialiasing);
-    view->resize(chartWidth, chartHeight);
-    return view;
+    return chart;
 }
 
 } // namespace
 
 void writeSpeedAccuracyChart(const std::vector<ChartCurve>& curves, const std::string& title,
                              const std::string& pngPath, const std::string& svgPath) {
-    std::unique_ptr<QChartView> view(buildChart(curves, title));
+    // A scene without a view: the chart is laid out at its fixed size and rendered twice.
+    QGraphicsScene scene;
+    QChart* chart = buildChart(curves, title);
+    scene.addItem(chart); // the scene owns the chart
+    chart->setGeometry(0, 0, chartWidth, chartHeight);
+    chart->setBackgroundRoundness(0);
+    QCoreApplication::processEvents(); // lets the chart lay out its axes and legend
+    const QRectF area(0, 0, chartWidth, chartHeight);
     QImage image(chartWidth, chartHeight, QImage::Format_ARGB32);
     image.fill(Qt::white);
     {
         QPainter painter(&image);
         painter.setRenderHint(QPainter::Antialiasing);
-        view->render(&painter);
+        scene.render(&painter, area, area);
     }
     if (!image.save(QString::fromStdString(pngPath), "PNG")) throw std::runtime_error("cannot write " + pngPath);
 
@@ -88,7 +92,7 @@ void writeSpeedAccuracyChart(const std::vector<ChartCurve>& curves, const std::s
     {
         QPainter painter;
         if (!painter.begin(&svg)) throw std::runtime_error("cannot write " + svgPath);
-        view->render(&painter);
+        scene.render(&painter, area, area);
     }
 }
 

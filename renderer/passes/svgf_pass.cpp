@@ -55,7 +55,8 @@ void SvgfPass::estimateVariance(const SvgfInputs& in) {
               {"outIllumination"},
               {{"uIllumination", temporal_[current_], 0},
                {"uMoments", temporal_[current_], 1},
-               {"uNormalDepth", in.gbuffer, normalDepthAttachment}},
+               {"uNormalDepth", in.gbuffer, normalDepthAttachment},
+               {"uObjectId", in.gbuffer, objectIdAttachment}},
               {}},
              pingPong_[0]);
 }
@@ -68,7 +69,9 @@ const gl::RenderTarget& SvgfPass::atrous(const SvgfInputs& in, const SvgfSetting
         runStage(programs_, triangle_,
                  {"reconstruction/svgf_atrous.frag.glsl",
                   {"outIllumination"},
-                  {{"uIllumination", *source, 0}, {"uNormalDepth", in.gbuffer, normalDepthAttachment}},
+                  {{"uIllumination", *source, 0},
+                   {"uNormalDepth", in.gbuffer, normalDepthAttachment},
+                   {"uObjectId", in.gbuffer, objectIdAttachment}},
                   [&](const gl::ShaderProgram& p) {
                       glUniform1i(p.uniform("uStep"), 1 << i);
                       glUniform1f(p.uniform("uSigmaLuminance"), settings.sigmaLuminance);

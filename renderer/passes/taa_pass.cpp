@@ -23,6 +23,7 @@ const gl::RenderTarget& TaaPass::execute(const TaaInputs& in, const TaaSettings&
                   glUniform1i(p.uniform("uHistoryValid"), in.historyValid ? 1 : 0);
                   glUniform1f(p.uniform("uMinBlend"), settings.minBlend);
                   glUniform1f(p.uniform("uClipGamma"), settings.clipGamma);
+                  glUniform1i(p.uniform("uPerceptualBlend"), settings.perceptualBlend ? 1 : 0);
               }},
              history_[next]);
     current_ = next;

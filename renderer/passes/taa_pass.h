@@ -9,6 +9,7 @@ namespace glint::renderer {
 struct TaaSettings {
     float minBlend = 0.1f;  // current frame's weight on a long still history (~10 frames)
     float clipGamma = 1.25f; // variance-clipping box half-size in standard deviations
+    bool perceptualBlend = false; // blend tonemapped colour (darkens noisy input; taa.frag.glsl)
 };
 
 struct TaaInputs {

@@ -5,6 +5,7 @@
 
 uniform sampler2D uIllumination;
 uniform sampler2D uNormalDepth;
+uniform sampler2D uObjectId; // filtering never crosses objects (an emitter would bleed onto its surroundings)
 uniform int uStep;
 uniform float uSigmaLuminance; // 4 in the paper
 uniform float uSigmaNormal;    // 128
@@ -28,6 +29,7 @@ void main() {
     ivec2 size = textureSize(uIllumination, 0);
     vec4 centre = texelFetch(uIllumination, pixel, 0);
     vec4 nd = texelFetch(uNormalDepth, pixel, 0);
+    float id = texelFetch(uObjectId, pixel, 0).x;
     if (nd.w < 0.0) {
         outIllumination = centre;
         return;
@@ -43,7 +45,7 @@ void main() {
             ivec2 q = pixel + ivec2(x, y) * uStep;
             if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
             vec4 qnd = texelFetch(uNormalDepth, q, 0);
-            if (qnd.w < 0.0) continue;
+            if (qnd.w < 0.0 || texelFetch(uObjectId, q, 0).x != id) continue;
             vec4 c = texelFetch(uIllumination, q, 0);
             float wz = abs(nd.w - qnd.w) / (uSigmaDepth * 0.02 * nd.w * float(uStep) * length(vec2(x, y)) + 1.0e-4);
             float wn = pow(max(dot(nd.xyz, qnd.xyz), 0.0), uSigmaNormal);

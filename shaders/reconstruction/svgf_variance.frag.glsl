@@ -5,6 +5,7 @@
 uniform sampler2D uIllumination; // rgb, a = temporal variance
 uniform sampler2D uMoments;
 uniform sampler2D uNormalDepth;
+uniform sampler2D uObjectId; // filtering never crosses objects (an emitter would bleed onto its surroundings)
 
 out vec4 outIllumination;
 
@@ -13,6 +14,7 @@ void main() {
     vec4 centre = texelFetch(uIllumination, pixel, 0);
     float historyLength = texelFetch(uMoments, pixel, 0).z;
     vec4 nd = texelFetch(uNormalDepth, pixel, 0);
+    float id = texelFetch(uObjectId, pixel, 0).x;
     if (historyLength >= 4.0 || nd.w < 0.0) {
         outIllumination = centre;
         return;
@@ -26,7 +28,7 @@ void main() {
             ivec2 q = pixel + ivec2(x, y);
             if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
             vec4 qnd = texelFetch(uNormalDepth, q, 0);
-            if (qnd.w < 0.0) continue;
+            if (qnd.w < 0.0 || texelFetch(uObjectId, q, 0).x != id) continue;
             float w = pow(max(dot(nd.xyz, qnd.xyz), 0.0), 128.0) * exp(-abs(nd.w - qnd.w) / (0.05 * nd.w + 1.0e-3));
             vec3 c = texelFetch(uIllumination, q, 0).rgb;
             float l = luminance(c);

@@ -1,6 +1,6 @@
 // Temporal anti-aliasing and accumulation: the history, reprojected by the motion vectors, is
-// clipped towards this frame's 3x3 neighbourhood (variance clipping in YCoCg, Salvi 2016) and
-// blended in a perceptual space. The blend weight grows with speed (less smear when moving) and is
+// clipped towards this frame's 3x3 neighbourhood (variance clipping in YCoCg of perceptual colour,
+// Salvi 2016) and blended (see uPerceptualBlend). The blend weight grows with speed (less smear when moving) and is
 // 1 where the surface was not visible last frame (id/depth/normal test) or history is invalid.
 // History alpha holds its length in frames, so a still view averages up to 1 / uMinBlend frames.
 #include "reconstruction/common.glsl"
@@ -15,6 +15,10 @@ uniform sampler2D uPreviousObjectId;
 uniform int uHistoryValid;
 uniform float uMinBlend;         // weight of the current frame on a still, long history
 uniform float uClipGamma;        // box half-size in standard deviations
+// 1: blend in the perceptual space too (Karis). It bounds a firefly's weight but darkens 1-spp
+// input (Jensen: mean of c/(1+l) < mean of c): -30% energy on the Cornell box, docs/DENOISING.md.
+// 0: clip there, blend linear radiance.
+uniform int uPerceptualBlend;
 
 out vec4 outColor;
 
@@ -86,5 +90,7 @@ void main() {
     float frames = min(history.a + 1.0, 1.0 / uMinBlend);
     float speed = clamp(length(motion) / 2.0, 0.0, 1.0); // pixels per frame
     float blend = mix(1.0 / frames, max(1.0 / frames, 0.5), speed);
-    outColor = vec4(linearFromPerceptual(mix(past, current, blend)), frames);
+    vec3 blended = uPerceptualBlend != 0 ? linearFromPerceptual(mix(past, current, blend))
+                                         : mix(linearFromPerceptual(past), linearFromPerceptual(current), blend);
+    outColor = vec4(blended, frames);
 }
