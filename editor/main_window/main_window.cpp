@@ -300,10 +300,13 @@ void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
 }
 
 void MainWindow::dropEvent(QDropEvent* event) {
-    // A scene file replaces the document (after asking about unsaved changes); with Ctrl held,
-    // or for formats Glint only imports, the files are merged into it.
-    const bool merge = event->modifiers().testFlag(Qt::ControlModifier);
-    for (const QUrl& url : event->mimeData()->urls()) {
+    // Ctrl held while dropping merges the files into the open scene.
+    openDropped(event->mimeData()->urls(), event->modifiers().testFlag(Qt::ControlModifier));
+    event->acceptProposedAction();
+}
+
+void MainWindow::openDropped(const QList<QUrl>& urls, bool merge) {
+    for (const QUrl& url : urls) {
         if (!url.isLocalFile()) continue;
         const QString path = url.toLocalFile();
         const QString lower = path.toLower();
@@ -314,7 +317,6 @@ void MainWindow::dropEvent(QDropEvent* event) {
             importFile(path);
         }
     }
-    event->acceptProposedAction();
 }
 
 void MainWindow::changeEvent(QEvent* event) {

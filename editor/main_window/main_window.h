@@ -6,6 +6,7 @@
 
 #include <QMainWindow>
 #include <QPalette>
+#include <QUrl>
 
 class QAction;
 class QDockWidget;
@@ -55,6 +56,9 @@ public:
     bool saveAs(const QString& path = {});
     // Offers a copy an earlier session left behind; returns whether it was recovered.
     bool offerRecovery();
+    // What dropping files does: a scene file replaces the document (after asking about unsaved
+    // changes); with `merge`, or for formats Glint only imports, files are merged into it.
+    void openDropped(const QList<QUrl>& urls, bool merge);
     // Asks about unsaved changes; false when the user cancels.
     bool maybeSave();
 

@@ -9,7 +9,10 @@
 #include "editor/main_window/main_window.h"
 #include "editor/outliner/outliner_panel.h"
 
+#include <QAction>
 #include <QApplication>
+#include <QSettings>
+#include <QUrl>
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
@@ -45,6 +48,8 @@ private slots:
     void openShowsNodesAndTitle();
     void saveReopenSaveIsByteIdentical();
     void autosaveIsRecoveredAfterACrash();
+    void droppedFilesOpenOrImport();
+    void keymapOverridesApply();
     void screenshotOfTheMainWindow();
 
 private:
@@ -110,6 +115,36 @@ void WindowTest::autosaveIsRecoveredAfterACrash() {
     QVERIFY(!QFile::exists(next.autosave().copyPath()));
     MainWindow third(panelsOnly(folder));
     QVERIFY(!third.offerRecovery());
+}
+
+void WindowTest::droppedFilesOpenOrImport() {
+    MainWindow window(panelsOnly(temp_.filePath("autosave-e")));
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    const QList<QUrl> urls{QUrl::fromLocalFile(cornellBox())};
+    window.openDropped(urls, false);
+    QCOMPARE(window.document().scene().nodeCount(), std::size_t{9});
+    QVERIFY(!window.document().isModified());
+    // With Ctrl the file is merged into the open scene, as one undo step.
+    window.openDropped(urls, true);
+    QCOMPARE(window.document().scene().nodeCount(), std::size_t{18});
+    window.document().undo();
+    QCOMPARE(window.document().scene().nodeCount(), std::size_t{9});
+}
+
+void WindowTest::keymapOverridesApply() {
+    QSettings().setValue("keymap/edit.duplicate", "Ctrl+Shift+U");
+    MainWindow window(panelsOnly(temp_.filePath("autosave-f")));
+    QAction* duplicate = nullptr;
+    for (QAction* action : window.keymapActions())
+        if (action->objectName() == "edit.duplicate") duplicate = action;
+    QVERIFY(duplicate);
+    QCOMPARE(duplicate->shortcut(), QKeySequence("Ctrl+Shift+U"));
+    QSettings().remove("keymap");
+    // The standard shortcuts are there by default.
+    MainWindow plain(panelsOnly(temp_.filePath("autosave-g")));
+    for (QAction* action : plain.keymapActions())
+        if (action->objectName() == "edit.duplicate") QCOMPARE(action->shortcut(), QKeySequence("Ctrl+D"));
 }
 
 void WindowTest::screenshotOfTheMainWindow() {
