@@ -1,3 +1,5 @@
+#include "editor/export/export_plan.h"
+
 #include "editor/export/export_job.h"
 
 #include "scene/anim/scene_at_time.h"

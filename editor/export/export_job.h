@@ -2,7 +2,8 @@
 // An export running on a worker thread with a headless GL context of its own (OfflineRenderer:
 // EGL), so the editor's event loop and its viewport context are untouched. The job owns a copy of
 // the scene taken when it starts, so editing meanwhile does not change what is exported.
-#include "editor/export/export_plan.h"
+#include "editor/export/export_settings.h"
+#include "scene/core/scene.h"
 
 #include <QObject>
 #include <QString>

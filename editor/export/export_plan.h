@@ -3,6 +3,7 @@
 // exactly as `glint render` plans the same settings (size, spp, configuration, seed, camera,
 // AOVs, time, frame), so that an export from the editor equals the command line's file, pixel
 // for pixel and byte for byte apart from the render-time metadata (the export test checks it).
+#include "editor/export/export_settings.h"
 #include "renderer/offline_render.h"
 #include "renderer/output/image_files.h"
 #include "scene/core/scene.h"
@@ -14,24 +15,6 @@
 #include <vector>
 
 namespace glint::editor {
-
-struct ExportSettings {
-    std::filesystem::path sceneFile;  // the document's file: metadata and the environment folder
-    std::filesystem::path out;        // a still's file, or an animation's pattern with one '#' run
-    int width = 640;
-    int height = 360;
-    int spp = 64;
-    std::string configuration = "accumulate";
-    std::uint32_t seed = 0;
-    std::string camera;               // empty: the project's active camera
-    std::string aovs = "all";         // EXR layers, as --aovs
-    std::optional<double> time;       // a still at this time (as --time); unset: the scene as it is
-    bool animation = false;
-    int firstFrame = 0;
-    int lastFrame = 0;
-    int fpsNumerator = 24;
-    int fpsDenominator = 1;
-};
 
 struct ExportFrame {
     std::optional<int> frame;

@@ -2,6 +2,9 @@
 // channel for channel bit-exact with the same header attributes except the render time. Also:
 // cancel leaves no file, and bad settings are refused before anything starts.
 // Scene: shapes under a grey sky and a camera, 48x32 px, 4 spp, accumulate, seed 0.
+// The export plan (renderer headers, epoxy) before any Qt header.
+#include "editor/export/export_plan.h"
+
 #include "test_viewport_scene.h"
 
 #include "editor/export/export_job.h"
