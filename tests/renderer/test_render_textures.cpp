@@ -180,6 +180,25 @@ private slots:
         QVERIFY2(perspective < 0.01, qPrintable(QString("mipmapped, perspective: %1 off the mean").arg(perspective)));
         QVERIFY2(levelZero > 0.05, qPrintable(QString("level 0 only: %1 off the mean").arg(levelZero)));
     }
+
+    // 32x32, 1 spp, seed 6. A 64x64 checkerboard of 2x2-texel cells filling the view (2 texels a
+    // pixel: level 1, still a checkerboard) under a transform that scales UVs by 4: the footprint is
+    // 8 texels, and the LOD adds log2 of the transform's scale, so every pixel reads level 3, the
+    // mean (within 0.01 of 0.503); at level 1 pixels would scatter between 0 and 1.
+    void textureTransformScaleRaisesLod() {
+        Texels checker{64, 64, {}};
+        for (int y = 0; y < 64; ++y)
+            for (int x = 0; x < 64; ++x) {
+                const std::uint8_t v = (x / 2 + y / 2) % 2 ? 255 : 0;
+                checker.rgba.insert(checker.rgba.end(), {v, v, v, 255});
+            }
+        TextureTransform t;
+        t.scale = {4.0f, 4.0f};
+        const auto out = renderScene(*renderer_, texturedScene(checker, sampler(Filter::Linear), {0, 0}, {1, 1}, t), 32, 1, 6);
+        const ChannelStats s = channelStats(out.radiance, 0);
+        QVERIFY2(std::abs(s.minimum - 0.503) < 0.01 && std::abs(s.maximum - 0.503) < 0.01,
+                 qPrintable(QString("%1 .. %2").arg(s.minimum).arg(s.maximum)));
+    }
 };
 
 QTEST_APPLESS_MAIN(TestRenderTextures)
