@@ -53,6 +53,7 @@ class TestExportEqualsCli : public QObject {
 private slots:
     void initTestCase() {
         QVERIFY(dir_.isValid());
+        dir_.setAutoRemove(qEnvironmentVariableIsEmpty("GLINT_KEEP_TEST_FILES"));
         test::buildShapesScene(document_);
         Node camera;
         camera.name = "cam";
@@ -91,7 +92,8 @@ private slots:
         cli.start(GLINT_EXECUTABLE, {"render", document_.filePath(), "--size", "48x32", "--spp", "4", "--config", "accumulate",
                                      "--out", cliFile});
         QVERIFY(cli.waitForFinished(60000));
-        QVERIFY2(cli.exitCode() == 0, cli.readAllStandardError().constData());
+        QVERIFY2(cli.exitStatus() == QProcess::NormalExit && cli.exitCode() == 0,
+                 qPrintable(QString("exit %1: %2").arg(cli.exitCode()).arg(QString::fromUtf8(cli.readAllStandardError()))));
 
         if (extension == "png") {
             const QByteArray a = bytesOf(editorFile), b = bytesOf(cliFile);
