@@ -87,6 +87,8 @@ void readGBuffer(const gl::RenderTarget& gbuffer, FrameImages& out) {
         out.depth.push_back(normalDepth[i + 3] < 0.0f ? std::numeric_limits<float>::infinity() : normalDepth[i + 3]);
     }
     out.objectId = topDown(gbuffer.readRgba(objectIdAttachment), w, h, 1);
+    out.diffuseAlbedo = topDown(gbuffer.readRgba(diffuseAlbedoAttachment), w, h, 3);
+    out.specularAlbedo = topDown(gbuffer.readRgba(specularAlbedoAttachment), w, h, 4);
 }
 
 bool sameCamera(const CameraSetup& a, const CameraSetup& b) {

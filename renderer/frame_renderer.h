@@ -48,6 +48,8 @@ struct FrameImages {
     std::vector<float> normal;    // XYZ, world space
     std::vector<float> depth;     // along the view axis in metres, +inf where nothing is hit
     std::vector<float> objectId;  // node id, 0 where nothing is hit
+    std::vector<float> diffuseAlbedo;  // RGB, what the denoiser demodulates by (with specularAlbedo)
+    std::vector<float> specularAlbedo; // RGBA: A = roughness
     std::vector<float> variance;  // RGB sample variance of one sample (Accumulate/Reference; else empty)
     std::vector<float> motion;    // RG: previous minus current position in pixels (real-time configs)
     std::vector<std::uint8_t> tonemapped; // RGBA8, sRGB, as drawTo shows it

@@ -8,24 +8,28 @@ AccumulatePass::AccumulatePass(gl::ProgramCache& programs, int width, int height
     : programs_(programs), targets_{makeAccumulationBuffer(width, height), makeAccumulationBuffer(width, height)} {}
 
 gl::RenderTarget makeAccumulationBuffer(int width, int height) {
-    return gl::RenderTarget(width, height, {GL_RGBA32F, GL_RGBA32F, GL_RGBA32F, GL_RGBA32F, GL_RGBA32F});
+    static_assert(radianceSquaredAttachment == gBufferAttachmentCount);
+    return gl::RenderTarget(width, height, std::vector<GLenum>(gBufferAttachmentCount + 1, GL_RGBA32F));
 }
 
 void AccumulatePass::add(const gl::RenderTarget& sample) {
     const gl::ShaderProgram& program = programs_.get({"fullscreen.vert.glsl", "passes/accumulate.frag.glsl", {},
-                                                      {"outRadiance", "outAlbedo", "outNormalDepth", "outObjectId", "outRadianceSquared"}});
+                                                      {"outRadiance", "outAlbedo", "outNormalDepth", "outObjectId",
+                                                       "outDiffuseAlbedo", "outSpecularAlbedo", "outRadianceSquared"}});
     const int previous = current_;
     const int next = 1 - current_;
     ++count_;
     program.use();
     glUniform1f(program.uniform("uSampleCount"), static_cast<float>(count_));
-    const char* previousNames[] = {"uPreviousRadiance", "uPreviousAlbedo", "uPreviousNormalDepth", "uPreviousObjectId"};
-    const char* sampleNames[] = {"uSampleRadiance", "uSampleAlbedo", "uSampleNormalDepth", "uSampleObjectId"};
-    for (int i = 0; i < 4; ++i) {
+    const char* previousNames[] = {"uPreviousRadiance", "uPreviousAlbedo", "uPreviousNormalDepth", "uPreviousObjectId",
+                                   "uPreviousDiffuseAlbedo", "uPreviousSpecularAlbedo"};
+    const char* sampleNames[] = {"uSampleRadiance", "uSampleAlbedo", "uSampleNormalDepth", "uSampleObjectId",
+                                 "uSampleDiffuseAlbedo", "uSampleSpecularAlbedo"};
+    for (int i = 0; i < gBufferAttachmentCount; ++i) {
         targets_[previous].bindTexture(i, static_cast<GLuint>(i), program.uniform(previousNames[i]));
-        sample.bindTexture(i, static_cast<GLuint>(4 + i), program.uniform(sampleNames[i]));
+        sample.bindTexture(i, static_cast<GLuint>(gBufferAttachmentCount + i), program.uniform(sampleNames[i]));
     }
-    targets_[previous].bindTexture(radianceSquaredAttachment, 8, program.uniform("uPreviousRadianceSquared"));
+    targets_[previous].bindTexture(radianceSquaredAttachment, 2 * gBufferAttachmentCount, program.uniform("uPreviousRadianceSquared"));
     targets_[next].bindForDrawing();
     triangle_.draw();
     current_ = next;

@@ -1,14 +1,15 @@
 #pragma once
 // The exact running mean of path-traced samples in RGBA32F, ping-ponged between two G-buffers.
 // Depth and object id are kept from the first sample (a mean of ids or of hit/miss depths means
-// nothing); radiance, albedo and normal are averaged. A fifth target holds the mean squared radiance.
+// nothing); radiance, albedos and normal are averaged. After the G-buffer's targets
+// (path_trace_pass.h) one more holds the mean squared radiance.
 #include "renderer/gl/fullscreen_triangle.h"
 #include "renderer/gl/program_cache.h"
 #include "renderer/gl/render_target.h"
 
 namespace glint::renderer {
 
-inline constexpr int radianceSquaredAttachment = 4;
+inline constexpr int radianceSquaredAttachment = 6; // gBufferAttachmentCount
 
 gl::RenderTarget makeAccumulationBuffer(int width, int height);
 

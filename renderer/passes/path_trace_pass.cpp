@@ -26,7 +26,7 @@ void setIntegratorUniforms(const gl::ShaderProgram& program, const PathTraceSett
 } // namespace
 
 gl::RenderTarget makeGBuffer(int width, int height) {
-    return gl::RenderTarget(width, height, {GL_RGBA32F, GL_RGBA32F, GL_RGBA32F, GL_RGBA32F});
+    return gl::RenderTarget(width, height, std::vector<GLenum>(gBufferAttachmentCount, GL_RGBA32F));
 }
 
 void PathTracePass::render(const GpuScene& scene, const CameraSetup& camera, const PathTraceSettings& settings,
@@ -34,7 +34,8 @@ void PathTracePass::render(const GpuScene& scene, const CameraSetup& camera, con
     gl::Defines defines = scene.features().defines();
     if (settings.view == DebugView::AmbientOcclusion) defines["DEBUG_VIEW_AO"] = ""; // a variant of its own
     const gl::ShaderProgram& program = programs_.get({"fullscreen.vert.glsl", "pathtrace/main.frag.glsl", defines,
-                                                      {"outRadiance", "outAlbedo", "outNormalDepth", "outObjectId"}});
+                                                      {"outRadiance", "outAlbedo", "outNormalDepth", "outObjectId",
+                                                       "outDiffuseAlbedo", "outSpecularAlbedo"}});
     program.use();
     scene.bind(program);
     setCameraUniforms(program, camera, target);

@@ -1,6 +1,6 @@
 #pragma once
-// One path-traced sample per pixel into a four-target G-buffer: radiance, albedo, normal + depth,
-// object id (PathTraceTarget::Attachment).
+// One path-traced sample per pixel into a six-target G-buffer: radiance, albedo (base colour),
+// normal + depth, object id, diffuse albedo, specular albedo + roughness (GBufferAttachment).
 #include "renderer/gl/fullscreen_triangle.h"
 #include "renderer/gl/program_cache.h"
 #include "renderer/gl/render_target.h"
@@ -22,7 +22,15 @@ struct PathTraceSettings {
     float aoDistance = 1.0f;
 };
 
-enum GBufferAttachment { radianceAttachment = 0, albedoAttachment = 1, normalDepthAttachment = 2, objectIdAttachment = 3 };
+enum GBufferAttachment {
+    radianceAttachment = 0,
+    albedoAttachment = 1,
+    normalDepthAttachment = 2,
+    objectIdAttachment = 3,
+    diffuseAlbedoAttachment = 4,
+    specularAlbedoAttachment = 5, // a: roughness
+    gBufferAttachmentCount = 6
+};
 
 gl::RenderTarget makeGBuffer(int width, int height);
 

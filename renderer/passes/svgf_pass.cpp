@@ -32,7 +32,8 @@ void SvgfPass::reproject(const SvgfInputs& in, const SvgfSettings& settings) {
              {"reconstruction/svgf_reproject.frag.glsl",
               {"outIllumination", "outMoments"},
               {{"uRadiance", in.gbuffer, radianceAttachment},
-               {"uAlbedo", in.gbuffer, albedoAttachment},
+               {"uDiffuseAlbedo", in.gbuffer, diffuseAlbedoAttachment},
+               {"uSpecularAlbedo", in.gbuffer, specularAlbedoAttachment},
                {"uNormalDepth", in.gbuffer, normalDepthAttachment},
                {"uObjectId", in.gbuffer, objectIdAttachment},
                {"uMotion", in.motion, 0},
@@ -88,7 +89,9 @@ void SvgfPass::modulate(const SvgfInputs& in, const gl::RenderTarget& filtered) 
     runStage(programs_, triangle_,
              {"reconstruction/svgf_modulate.frag.glsl",
               {"outRadiance"},
-              {{"uIllumination", filtered, 0}, {"uAlbedo", in.gbuffer, albedoAttachment}},
+              {{"uIllumination", filtered, 0},
+               {"uDiffuseAlbedo", in.gbuffer, diffuseAlbedoAttachment},
+               {"uSpecularAlbedo", in.gbuffer, specularAlbedoAttachment}},
               {}},
              output_);
 }

@@ -6,17 +6,23 @@ uniform sampler2D uPreviousRadiance;
 uniform sampler2D uPreviousAlbedo;
 uniform sampler2D uPreviousNormalDepth;
 uniform sampler2D uPreviousObjectId;
+uniform sampler2D uPreviousDiffuseAlbedo;
+uniform sampler2D uPreviousSpecularAlbedo;
 uniform sampler2D uPreviousRadianceSquared;
 uniform sampler2D uSampleRadiance;
 uniform sampler2D uSampleAlbedo;
 uniform sampler2D uSampleNormalDepth;
 uniform sampler2D uSampleObjectId;
+uniform sampler2D uSampleDiffuseAlbedo;
+uniform sampler2D uSampleSpecularAlbedo;
 uniform float uSampleCount; // n, counting this sample
 
 out vec4 outRadiance;
 out vec4 outAlbedo;
 out vec4 outNormalDepth;
 out vec4 outObjectId;
+out vec4 outDiffuseAlbedo;
+out vec4 outSpecularAlbedo;
 out vec4 outRadianceSquared;
 
 vec4 runningMean(vec4 mean, vec4 value) {
@@ -38,6 +44,8 @@ void main() {
     vec3 normal = runningMean(uPreviousNormalDepth, uSampleNormalDepth, pixel).xyz;
     outNormalDepth = vec4(normal, firstSample(uPreviousNormalDepth, uSampleNormalDepth, pixel).w);
     outObjectId = firstSample(uPreviousObjectId, uSampleObjectId, pixel);
+    outDiffuseAlbedo = runningMean(uPreviousDiffuseAlbedo, uSampleDiffuseAlbedo, pixel);
+    outSpecularAlbedo = runningMean(uPreviousSpecularAlbedo, uSampleSpecularAlbedo, pixel);
     vec4 radiance = texelFetch(uSampleRadiance, pixel, 0);
     // Squares of huge (finite) radiance would overflow to Inf: saturate at the largest float.
     outRadianceSquared = runningMean(texelFetch(uPreviousRadianceSquared, pixel, 0), min(radiance * radiance, vec4(3.0e38)));

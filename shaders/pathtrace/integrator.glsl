@@ -15,6 +15,7 @@ struct PathResult {
     vec3 normal;    // first hit's shading normal facing the camera, world space
     float depth;    // along the camera's view axis; -1: nothing hit
     float objectId; // node id of the first hit; 0: nothing
+    vec4 lobes;     // first hit's metallic, roughness, transmission, specular factor (misses: 0, 1, 0, 0)
 };
 
 struct Vertex {
@@ -97,7 +98,7 @@ float environmentMisWeight(vec3 direction, float bsdfPdf) {
 }
 
 PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng) {
-    PathResult result = PathResult(vec3(0.0), vec3(0.0), vec3(0.0), -1.0, 0.0);
+    PathResult result = PathResult(vec3(0.0), vec3(0.0), vec3(0.0), -1.0, 0.0, vec4(0.0, 1.0, 0.0, 0.0));
     vec3 throughput = vec3(1.0);
     vec3 attenuation = vec3(0.0); // Beer-Lambert sigma of the medium the ray travels in
     float lastBsdfPdf = 0.0;       // of the sampled direction; 0 for camera rays and delta lobes
@@ -127,6 +128,7 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng) {
             result.normal = v.wo.z >= 0.0 ? shading.normal : -shading.normal;
             result.depth = hit.t * dot(ray.direction, viewAxis);
             result.objectId = hit.objectId;
+            result.lobes = vec4(v.material.metallic, v.material.roughness, v.material.transmission, v.material.specularFactor);
         }
         result.radiance += throughput * shading.emission * emissionMisWeight(hit, shading.sampledEmission, ray.direction, lastBsdfPdf);
         if (depth > maxBounces) break;
@@ -160,7 +162,7 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng) {
 uniform float uAoDistance;
 
 PathResult ambientOcclusion(Ray ray, vec3 viewAxis, INOUT(Rng) rng) {
-    PathResult result = PathResult(vec3(1.0), vec3(1.0), vec3(0.0), -1.0, 0.0);
+    PathResult result = PathResult(vec3(1.0), vec3(1.0), vec3(0.0), -1.0, 0.0, vec4(0.0, 1.0, 0.0, 0.0));
     setTraceState(true, alphaKey(rng, 2u), cameraCone());
     Hit hit = traceClosest(ray);
     if (hit.material < 0) return result;
@@ -169,5 +171,5 @@ PathResult ambientOcclusion(Ray ray, vec3 viewAxis, INOUT(Rng) rng) {
     vec3 wi = worldFromLocal(frameFromNormal(n), cosineHemisphere(rand2(rng)));
     setTraceState(false, alphaKey(rng, 1u), cameraCone());
     float visible = occluded(spawnRay(p, hit.geometricNormal, wi), uAoDistance) ? 0.0 : 1.0;
-    return PathResult(vec3(visible), vec3(1.0), n, hit.t * dot(ray.direction, viewAxis), hit.objectId);
+    return PathResult(vec3(visible), vec3(1.0), n, hit.t * dot(ray.direction, viewAxis), hit.objectId, vec4(0.0, 1.0, 0.0, 0.0));
 }

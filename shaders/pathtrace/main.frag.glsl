@@ -1,4 +1,5 @@
-// Path tracing pass: one sample per pixel into four targets (radiance, albedo, normal + depth, id).
+// Path tracing pass: one sample per pixel into six targets (radiance, albedo, normal + depth, id,
+// diffuse albedo, specular albedo + roughness).
 #include "constants.glsl"
 #include "common/rng.glsl"
 #include "ray.glsl"
@@ -17,6 +18,7 @@
 #include "camera.glsl"
 #include "integrator.glsl"
 #include "output_guard.glsl"
+#include "albedo_split.glsl"
 
 uniform uint uSampleIndex;
 uniform uint uSeed;
@@ -25,6 +27,8 @@ out vec4 outRadiance;
 out vec4 outAlbedo;
 out vec4 outNormalDepth;
 out vec4 outObjectId;
+out vec4 outDiffuseAlbedo;  // what the diffuse lobe reflects: SVGF demodulates by diffuse + specular
+out vec4 outSpecularAlbedo; // rgb: approximate directional albedo of the specular lobes; a: roughness
 
 void main() {
     uvec2 pixel = uvec2(gl_FragCoord.xy);
@@ -39,4 +43,6 @@ void main() {
     outAlbedo = vec4(finiteNonNegative(path.albedo), 1.0);
     outNormalDepth = vec4(finiteOrZero(path.normal), path.depth);
     outObjectId = vec4(path.objectId, 0.0, 0.0, 1.0);
+    outDiffuseAlbedo = vec4(finiteNonNegative(diffuseAlbedo(path)), 1.0);
+    outSpecularAlbedo = vec4(finiteNonNegative(specularAlbedo(path)), path.lobes.y);
 }

@@ -2,11 +2,12 @@
 #include "reconstruction/svgf_demodulate.glsl"
 
 uniform sampler2D uIllumination;
-uniform sampler2D uAlbedo;
+uniform sampler2D uDiffuseAlbedo;
+uniform sampler2D uSpecularAlbedo;
 
 out vec4 outRadiance;
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
-    outRadiance = vec4(remodulate(texelFetch(uIllumination, pixel, 0).rgb, texelFetch(uAlbedo, pixel, 0).rgb), 1.0);
+    outRadiance = vec4(remodulate(texelFetch(uIllumination, pixel, 0).rgb, lobeAlbedo(uDiffuseAlbedo, uSpecularAlbedo, pixel)), 1.0);
 }

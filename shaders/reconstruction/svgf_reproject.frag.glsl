@@ -1,12 +1,15 @@
 // SVGF stage 1: temporal accumulation of demodulated illumination and of its first two luminance
 // moments, with a history length per pixel (Schied et al. 2017). Disoccluded pixels restart at 1.
+// Smooth specular surfaces (mirrors, glass) see reflections whose motion the primary motion vectors
+// do not describe: their history is kept short (current-frame weight up to 0.5 at roughness 0).
 // Guard: NaN/Inf become 0, and a pixel far brighter than all its neighbours (a firefly) is clamped
 // to them before it can enter history.
 #include "reconstruction/common.glsl"
 #include "reconstruction/svgf_demodulate.glsl"
 
 uniform sampler2D uRadiance;
-uniform sampler2D uAlbedo;
+uniform sampler2D uDiffuseAlbedo;
+uniform sampler2D uSpecularAlbedo; // a: roughness
 uniform sampler2D uNormalDepth;
 uniform sampler2D uObjectId;
 uniform sampler2D uMotion;
@@ -23,7 +26,7 @@ out vec4 outIllumination; // rgb, a = variance
 out vec4 outMoments;
 
 vec3 illuminationAt(ivec2 p) {
-    return demodulate(finiteRadiance(texelFetch(uRadiance, p, 0).rgb), texelFetch(uAlbedo, p, 0).rgb);
+    return demodulate(finiteRadiance(texelFetch(uRadiance, p, 0).rgb), lobeAlbedo(uDiffuseAlbedo, uSpecularAlbedo, p));
 }
 
 vec3 withoutFirefly(ivec2 pixel, vec3 c) {
@@ -35,6 +38,13 @@ vec3 withoutFirefly(ivec2 pixel, vec3 c) {
     float limit = uFireflyRatio * max(brightest, 1.0e-2);
     float l = luminance(c);
     return l > limit ? c * (limit / l) : c;
+}
+
+// 1 for a smooth surface whose light is mostly specular, 0 for rough or diffuse ones.
+float mirrorLikeness(ivec2 p) {
+    vec4 specular = texelFetch(uSpecularAlbedo, p, 0);
+    float s = luminance(specular.rgb), d = luminance(texelFetch(uDiffuseAlbedo, p, 0).rgb);
+    return s / max(s + d, 1.0e-4) * (1.0 - clamp(specular.a / 0.3, 0.0, 1.0));
 }
 
 void main() {
@@ -72,7 +82,7 @@ void main() {
     illumination /= weight;
     moments /= weight;
     float historyLength = moments.z + 1.0;
-    float alpha = max(uAlpha, 1.0 / historyLength);
+    float alpha = max(max(uAlpha, 1.0 / historyLength), mix(uAlpha, 0.5, mirrorLikeness(pixel)));
     float momentsAlpha = max(uMomentsAlpha, 1.0 / historyLength);
     vec2 m = mix(moments.xy, vec2(l, l * l), momentsAlpha);
     outIllumination = vec4(mix(illumination, current, alpha), max(m.y - m.x * m.x, 0.0));
