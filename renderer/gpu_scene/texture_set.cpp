@@ -86,8 +86,8 @@ void mergeOnce(std::vector<Group>& groups, std::vector<std::string>& warnings) {
 } // namespace
 
 TextureSlot TextureSet::find(ImageId image, bool srgb) const {
-    const auto it = slots.find({image, srgb});
-    return it == slots.end() ? TextureSlot{} : it->second;
+    const auto it = slotOf.find({image, srgb});
+    return it == slotOf.end() ? TextureSlot{} : it->second;
 }
 
 std::set<MaterialId> meshMaterials(const Scene& scene) {
@@ -126,7 +126,7 @@ TextureSet buildTextureSet(const Scene& scene, const std::set<MaterialId>& mater
                                      std::to_string(limits.maxLayers) + " texture array layers");
         TextureBucket bucket{group.srgb, group.width, group.height, {}};
         for (auto& [use, level] : group.images) {
-            set.slots[use] = TextureSlot{static_cast<int>(set.buckets.size()), static_cast<int>(bucket.layers.size())};
+            set.slotOf[use] = TextureSlot{static_cast<int>(set.buckets.size()), static_cast<int>(bucket.layers.size())};
             bucket.layers.push_back(buildMipChain(std::move(level), group.srgb));
         }
         set.buckets.push_back(std::move(bucket));

@@ -38,7 +38,7 @@ struct TextureLimits {
 
 struct TextureSet {
     std::vector<TextureBucket> buckets;
-    std::map<std::pair<ImageId, bool>, TextureSlot> slots; // (image, sRGB) -> where it lives
+    std::map<std::pair<ImageId, bool>, TextureSlot> slotOf; // (image, sRGB) -> where it lives (not "slots": a Qt macro)
     std::vector<std::string> warnings;
 
     TextureSlot find(ImageId image, bool srgb) const;
