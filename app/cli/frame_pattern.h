@@ -16,7 +16,7 @@ struct FramePattern {
 
     std::filesystem::path frame(int number) const;
     // The frame number when `fileName` (no folder) is a name this pattern makes, else nullopt.
-    // Temporary files (".shot_0001.partial.exr") never match: they start with a dot.
+    // Temporary files (".shot_0001.partial-123.exr") never match: they start with a dot.
     std::optional<int> match(const std::string& fileName) const;
 };
 

@@ -59,10 +59,11 @@ void writeWithOiio(const std::filesystem::path& target, const std::filesystem::p
 }
 
 std::filesystem::path temporaryNameFor(const std::filesystem::path& file) {
-    // A leading dot and a ".partial" infix: never matches a frame pattern or the final name.
+    // A leading dot and a ".partial" infix: never matches a frame pattern or the final name. The
+    // process id keeps two processes that render the same frame (overlapping shards) apart.
     std::string name = file.stem().string();
     name.insert(0, 1, '.');
-    name.append(".partial").append(file.extension().string());
+    name.append(".partial-").append(std::to_string(::getpid())).append(file.extension().string());
     return file.parent_path() / name;
 }
 

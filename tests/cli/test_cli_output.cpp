@@ -12,6 +12,7 @@
 #include <QJsonObject>
 #include <QRegularExpression>
 #include <QTemporaryDir>
+#include <QThread>
 #include <QtTest>
 
 #include <csignal>
@@ -237,6 +238,23 @@ private slots:
             QVERIFY2(!f.startsWith('.'), qPrintable("temporary file left behind: " + f));
             QVERIFY2(probeImage(dir.filePath(f)).ok, qPrintable("incomplete frame under a final name: " + f));
         }
+    }
+
+    void stopSignalDiscardsAStill() {
+        QTemporaryDir dir;
+        QProcess p;
+        p.setReadChannel(QProcess::StandardError);
+        p.start(QStringLiteral(GLINT_EXECUTABLE),
+                {"render", cornell, "--out", dir.filePath("still.exr"), "--size", "16x16", "--spp", "1000000"});
+        QVERIFY(p.waitForStarted());
+        QByteArray err;
+        while (!err.contains("GL_RENDERER") && p.waitForReadyRead(60000)) err += p.readAllStandardError();
+        QThread::msleep(300); // into the sample loop
+        ::kill(pid_t(p.processId()), SIGINT);
+        QVERIFY(p.waitForFinished(60000));
+        QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(p.exitCode(), 128 + SIGINT);
+        QVERIFY2(filesIn(dir.path()).isEmpty(), qPrintable(filesIn(dir.path()).join(' '))); // discarded, no temporary
     }
 
     void badInputFailsClearly() {

@@ -41,13 +41,13 @@ private slots:
         QCOMPARE(p.frame(12345).string(), std::string("frames/shot_12345.exr"));
         QCOMPARE(p.match("shot_0007.exr").value_or(-1), 7);
         QCOMPARE(p.match("shot_12345.exr").value_or(-1), 12345);
-        QVERIFY(!p.match(".shot_0007.partial.exr"));   // the temporary name of a frame
+        QVERIFY(!p.match(".shot_0007.partial-4242.exr"));   // the temporary name of a frame
         QVERIFY(!p.match("shot_007.exr"));             // too short
         QVERIFY(!p.match("shot_00007.exr"));           // padded wider than needed
         QVERIFY(!p.match("shot_00a7.exr"));
         QVERIFY(!p.match("shot_0007.png"));
         // Even a pattern that is only digits never matches a temporary name (it starts with '.').
-        QVERIFY(!parseFramePattern("####.png").match(".0003.partial.png"));
+        QVERIFY(!parseFramePattern("####.png").match(".0003.partial-4242.png"));
     }
 
     void patternErrors() {
