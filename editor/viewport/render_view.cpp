@@ -1,6 +1,7 @@
 // The FrameRenderer (epoxy GL) comes before any Qt OpenGL header in this translation unit.
 #include "renderer/frame_renderer.h"
 #include "renderer/raster/gpu_sync.h"
+#include "renderer/raster/preview_pass.h"
 
 #include "editor/viewport/render_view.h"
 
@@ -57,6 +58,7 @@ RenderView::RenderView(Document& document, QWidget* parent) : QOpenGLWidget(pare
     flyTimer_.setInterval(kFlyIntervalMs);
     connect(&flyTimer_, &QTimer::timeout, this, &RenderView::flyStep);
     connect(&document_, &Document::changed, this, [this](const ChangeSet& changes) {
+        if (preview_ && (changes.has(Change::Geometry) || changes.has(Change::Structure))) previewStale_ = true;
         pending_.merge(changes);
         picker_.reset();
         followLookThrough();
@@ -81,6 +83,7 @@ RenderView::~RenderView() {
     if (renderer_ && context()) {
         makeCurrent();
         renderer_.reset();
+        preview_.reset();
         doneCurrent();
     }
 }
@@ -89,6 +92,7 @@ void RenderView::releaseGl() {
     // The context is about to go (re-docking, floating, closing): GL objects die with it.
     makeCurrent();
     renderer_.reset();
+    preview_.reset();
     doneCurrent();
     fullUpload_ = true;
 }
@@ -96,6 +100,7 @@ void RenderView::releaseGl() {
 void RenderView::initializeGL() {
     connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &RenderView::releaseGl, Qt::UniqueConnection);
     renderer_ = std::make_unique<renderer::FrameRenderer>();
+    preview_ = std::make_unique<renderer::raster::PreviewPass>();
     ++stats_.contexts;
     fullUpload_ = true;
     timeDirty_ = true;
@@ -184,8 +189,37 @@ void RenderView::renderSlice(bool moving, int divisor) {
     stats_.paintMs = double(paint.nsecsElapsed()) / 1e6;
 }
 
+void RenderView::paintPreview() {
+    if (previewStale_) {
+        preview_->invalidate();
+        previewStale_ = false;
+    }
+    const qreal dpr = devicePixelRatioF();
+    renderer::raster::PreviewView v;
+    v.width = int(std::lround(width() * dpr));
+    v.height = int(std::lround(height() * dpr));
+    v.clipFromWorld = clipFromWorld(camera_, double(width()) / std::max(1, height()));
+    v.eye = glm::vec3(camera_.position());
+    v.style = mode_ == ViewMode::Wireframe ? renderer::raster::PreviewStyle::Wireframe : renderer::raster::PreviewStyle::Solid;
+    v.highlight = document_.currentNode();
+    const Scene& scene = document_.scene();
+    try {
+        if (scene.animations.empty()) preview_->draw(scene, defaultFramebufferObject(), v);
+        else preview_->draw(sceneAt(scene, document_.currentTime()), defaultFramebufferObject(), v);
+    } catch (const std::exception& e) {
+        stats_.error = QString::fromStdString(e.what());
+    }
+    ++stats_.paints;
+    drawOverlays();
+    emit statsChanged();
+}
+
 void RenderView::paintGL() {
     if (!renderer_) return;
+    if (showsRaster(mode_)) {
+        paintPreview();
+        return;
+    }
     const bool isMoving = moving();
     // The still divisor is locked while the view rests (a change restarts accumulation), except
     // that an overrunning still frame may coarsen it at once.

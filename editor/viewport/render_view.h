@@ -22,7 +22,10 @@
 
 namespace glint::renderer {
 class FrameRenderer;
+namespace raster {
+class PreviewPass;
 }
+} // namespace glint::renderer
 
 namespace glint::editor {
 
@@ -98,6 +101,7 @@ private:
     void configure(bool moving, int divisor);
     void renderSlice(bool moving, int divisor);
     void drawOverlays();
+    void paintPreview();
     void inspectPixel(QPointF widgetPos);
     void noteMotion();
     bool moving() const;
@@ -108,6 +112,8 @@ private:
 
     Document& document_;
     std::unique_ptr<renderer::FrameRenderer> renderer_;
+    std::unique_ptr<renderer::raster::PreviewPass> preview_;
+    bool previewStale_ = false;
     std::unique_ptr<ScenePicker> picker_;
     std::unique_ptr<GizmoDrag> gizmoDrag_;
     ViewCamera camera_;

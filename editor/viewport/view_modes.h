@@ -19,4 +19,7 @@ inline bool showsReadBack(ViewMode mode) {
            mode == ViewMode::Depth;
 }
 
+// Views drawn by the raster preview pass instead of the path tracer.
+inline bool showsRaster(ViewMode mode) { return mode == ViewMode::Solid || mode == ViewMode::Wireframe; }
+
 } // namespace glint::editor

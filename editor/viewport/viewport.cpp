@@ -58,9 +58,6 @@ void Viewport::createActions() {
         addAction(action);
         connect(action, &QAction::triggered, this, [this, mode] { view_->setMode(mode); });
     }
-    // Solid and wireframe need the raster passes, which this build does not have yet.
-    for (QAction* action : modes_->actions())
-        if (action->data().toInt() == int(ViewMode::Solid) || action->data().toInt() == int(ViewMode::Wireframe)) action->setEnabled(false);
 
     gizmos_ = new QActionGroup(this);
     const std::pair<GizmoMode, QString> gizmoModes[] = {

@@ -65,6 +65,27 @@ private slots:
         QVERIFY(s.mean > 0.15);
     }
 
+    void rasterPreviewDrawsTheShapes() {
+        RenderView& view = viewport_->view();
+        for (QAction* action : viewport_->viewModeActions())
+            if (action->data().toInt() == int(ViewMode::Solid)) action->trigger();
+        QCOMPARE(view.mode(), ViewMode::Solid);
+        const long long before = view.stats().paints;
+        view.update();
+        QVERIFY(waitFor([&] { return view.stats().paints > before; }));
+        QVERIFY2(view.stats().error.isEmpty(), qPrintable(view.stats().error));
+        const QImage image = view.grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+        const auto sphere = view.project({-1.2, 0.0, 0.0});
+        const QRgb background = image.pixel(image.width() / 2, 1); // the sky: the clear colour
+        const QRgb onSphere = image.pixel(sphere->toPoint() * image.width() / view.width());
+        QCOMPARE(qRed(background), 56); // 0.22 * 255
+        QVERIFY(qRed(onSphere) > 120);   // lit grey surface facing the headlight
+        view.setMode(ViewMode::Wireframe);
+        QVERIFY(waitFor([&] { return view.stats().paints > before + 1; }));
+        const test::ImageStats wire = test::imageStats(view.grabFramebuffer());
+        QVERIFY(wire.mean > 0.2 && wire.mean < 0.8); // lines over the clear colour
+    }
+
     void clickSelectsTheNodeUnderTheCursor() {
         RenderView& view = viewport_->view();
         const auto sphere = view.project({-1.2, 0.0, 0.0});
