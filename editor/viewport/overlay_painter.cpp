@@ -87,6 +87,23 @@ void OverlayPainter::drawGizmo(const GizmoFrame& frame, GizmoMode mode, int acti
     }
 }
 
+void OverlayPainter::drawBoxes(const std::vector<bvh::Aabb>& boxes) {
+    painter_.setRenderHint(QPainter::Antialiasing);
+    painter_.setPen(QPen(QColor(80, 220, 255), 1.0));
+    for (const bvh::Aabb& box : boxes) {
+        if (box.empty()) continue;
+        const auto corner = [&](int c) {
+            return glm::dvec3((c & 1) ? box.hi.x : box.lo.x, (c & 2) ? box.hi.y : box.lo.y, (c & 4) ? box.hi.z : box.lo.z);
+        };
+        for (int c = 0; c < 8; ++c)
+            for (const int bit : {1, 2, 4}) {
+                if (c & bit) continue;
+                const auto a = view_.project(corner(c)), b = view_.project(corner(c | bit));
+                if (a && b) painter_.drawLine(*a, *b);
+            }
+    }
+}
+
 void OverlayPainter::drawMessage(const QString& text) {
     painter_.setPen(QColor(255, 120, 120));
     painter_.drawText(QRectF(8, 8, view_.width() - 16, view_.height() - 16), Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap, text);

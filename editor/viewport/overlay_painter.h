@@ -3,9 +3,12 @@
 // current node, camera-path curves with their keys, and messages. Geometry is projected with the
 // view camera, so overlays and the path-traced image line up.
 #include "editor/viewport/gizmo_math.h"
+#include "renderer/bvh/aabb.h"
 #include "scene/core/ids.h"
 
 #include <QString>
+
+#include <vector>
 
 class QPainter;
 
@@ -22,6 +25,8 @@ public:
     void drawCameraPaths(NodeId lookingThrough);
     void drawGizmo(const GizmoFrame& frame, GizmoMode mode, int activeAxis);
     void drawMessage(const QString& text);
+    // The top-level BVH's leaves: one world box per instance.
+    void drawBoxes(const std::vector<bvh::Aabb>& boxes);
 
 private:
     QPainter& painter_;

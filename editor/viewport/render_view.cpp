@@ -262,6 +262,7 @@ void RenderView::drawOverlays() {
         painter.drawText(QRect(half + 4, 4, half - 8, 20), Qt::AlignLeft, tr("B"));
     }
     OverlayPainter overlays(painter, *this, document_);
+    if (mode_ == ViewMode::BvhBoxes) overlays.drawBoxes(picker().instanceBounds());
     overlays.drawCameraPaths(lookThrough_);
     if (const NodeId node = document_.currentNode(); node.valid() && document_.scene().contains(node))
         overlays.drawGizmo(gizmoFrame(node), gizmoMode_, gizmoDrag_ ? gizmoDrag_->axis() : -1);

@@ -83,4 +83,10 @@ bvh::Aabb ScenePicker::worldBounds(NodeId node) const {
     return it == bounds_.end() ? bvh::Aabb{} : it->second;
 }
 
+std::vector<bvh::Aabb> ScenePicker::instanceBounds() const {
+    std::vector<bvh::Aabb> boxes;
+    for (const auto& entry : bounds_) boxes.push_back(entry.second);
+    return boxes;
+}
+
 } // namespace glint::editor

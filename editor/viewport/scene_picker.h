@@ -24,6 +24,7 @@ public:
     PickResult pick(const bvh::Ray& worldRay) const;
     // World bounds of a node's own geometry (empty box when it has none): frame selection.
     bvh::Aabb worldBounds(NodeId node) const;
+    std::vector<bvh::Aabb> instanceBounds() const; // every pickable node's world box
 
 private:
     struct Ground {

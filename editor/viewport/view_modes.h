@@ -2,16 +2,17 @@
 // What the viewport shows. The path-traced view is the default; the others are preview and debug
 // views: ambient occlusion comes from the path tracer, the G-buffer views from its read-back
 // images (shading normal, albedo, motion vectors, variance, depth, object ids), and the raster
-// ones (solid, wireframe) from renderer/raster.
+// ones (solid, wireframe, and the solid view under the BVH's instance boxes) from renderer/raster.
 #include <array>
 
 namespace glint::editor {
 
-enum class ViewMode { PathTraced, Solid, Wireframe, Normals, Albedo, AmbientOcclusion, Motion, Variance, Depth };
+enum class ViewMode { PathTraced, Solid, Wireframe, Normals, Albedo, AmbientOcclusion, Motion, Variance, Depth, BvhBoxes };
 
-inline constexpr std::array<ViewMode, 9> kViewModes{ViewMode::PathTraced, ViewMode::Solid,  ViewMode::Wireframe,
-                                                    ViewMode::Normals,    ViewMode::Albedo, ViewMode::AmbientOcclusion,
-                                                    ViewMode::Motion,     ViewMode::Variance, ViewMode::Depth};
+inline constexpr std::array<ViewMode, 10> kViewModes{ViewMode::PathTraced, ViewMode::Solid,    ViewMode::Wireframe,
+                                                     ViewMode::Normals,    ViewMode::Albedo,   ViewMode::AmbientOcclusion,
+                                                     ViewMode::Motion,     ViewMode::Variance, ViewMode::Depth,
+                                                     ViewMode::BvhBoxes};
 
 // Views that show a read-back G-buffer image instead of the tonemapped frame.
 inline bool showsReadBack(ViewMode mode) {
@@ -20,6 +21,6 @@ inline bool showsReadBack(ViewMode mode) {
 }
 
 // Views drawn by the raster preview pass instead of the path tracer.
-inline bool showsRaster(ViewMode mode) { return mode == ViewMode::Solid || mode == ViewMode::Wireframe; }
+inline bool showsRaster(ViewMode mode) { return mode == ViewMode::Solid || mode == ViewMode::Wireframe || mode == ViewMode::BvhBoxes; }
 
 } // namespace glint::editor

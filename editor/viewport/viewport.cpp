@@ -23,6 +23,7 @@ QString modeName(ViewMode mode) {
     case ViewMode::Motion: return Viewport::tr("Motion vectors");
     case ViewMode::Variance: return Viewport::tr("Variance");
     case ViewMode::Depth: return Viewport::tr("Depth");
+    case ViewMode::BvhBoxes: return Viewport::tr("BVH instance boxes");
     }
     return {};
 }
@@ -51,7 +52,10 @@ void Viewport::createActions() {
     modes_ = new QActionGroup(this);
     int number = 1;
     for (const ViewMode mode : kViewModes) {
-        QAction* action = checkable(this, modeName(mode), QKeySequence(Qt::Key_0 + number++));
+        // Number keys 1..9 for the first nine views (0 is "look through").
+        const QKeySequence key = number <= 9 ? QKeySequence(Qt::Key_0 + number) : QKeySequence();
+        ++number;
+        QAction* action = checkable(this, modeName(mode), key);
         action->setChecked(mode == ViewMode::PathTraced);
         action->setData(int(mode));
         modes_->addAction(action);

@@ -5,11 +5,13 @@
 
 #include "editor/viewport/render_view.h"
 #include "editor/viewport/viewport.h"
+#include "scene/history/settings_commands.h"
 
 #include <QAction>
 #include <QElapsedTimer>
 #include <QMainWindow>
 #include <QMouseEvent>
+#include <QSignalSpy>
 #include <QtTest>
 
 using namespace glint;
@@ -84,6 +86,48 @@ private slots:
         QVERIFY(waitFor([&] { return view.stats().paints > before + 1; }));
         const test::ImageStats wire = test::imageStats(view.grabFramebuffer());
         QVERIFY(wire.mean > 0.2 && wire.mean < 0.8); // lines over the clear colour
+    }
+
+    void bvhBoxesAreDrawnOverThePreview() {
+        RenderView& view = viewport_->view();
+        view.setMode(ViewMode::BvhBoxes);
+        const long long before = view.stats().paints;
+        QVERIFY(waitFor([&] { return view.stats().paints > before; }));
+        const QImage image = view.grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+        int boxPixels = 0; // the box colour (80, 220, 255) appears nowhere else
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x) {
+                const QRgb c = image.pixel(x, y);
+                boxPixels += qBlue(c) > 200 && qGreen(c) > 150 && qRed(c) < 140;
+            }
+        QVERIFY(boxPixels > 40);
+    }
+
+    void pixelInspectorReportsLinearValues() {
+        RenderView& view = viewport_->view();
+        QVERIFY(waitFor([&] { return view.stats().samples >= 4; }));
+        viewport_->inspectAction()->setChecked(true);
+        QSignalSpy inspected(&view, &RenderView::pixelInspected);
+        QTest::mouseClick(&view, Qt::LeftButton, {}, QPoint(64, 4)); // the grey sky: radiance 0.8
+        QCOMPARE(inspected.size(), 1);
+        for (int c = 1; c <= 3; ++c) QVERIFY(std::abs(inspected.first().at(c).toFloat() - 0.8f) < 1e-3f);
+        QVERIFY(document_->selection().empty()); // inspecting does not select
+    }
+
+    void abSnapshotComparesTwoSettings() {
+        RenderView& view = viewport_->view();
+        QVERIFY(waitFor([&] { return view.stats().samples >= 2; }));
+        viewport_->snapshotAction()->trigger();
+        QVERIFY(view.hasSnapshot());
+        QVERIFY(viewport_->compareAction()->isEnabled());
+        ProjectSettings settings = document_->scene().settings;
+        settings.environment.color = glm::vec3(0.0f); // B: a black sky
+        document_->push(std::make_unique<SetProjectSettings>(settings));
+        viewport_->compareAction()->setChecked(true);
+        QVERIFY(waitFor([&] { return view.stats().samples >= 4; }));
+        const QImage image = view.grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+        QVERIFY(qGreen(image.pixel(10, 2)) > 100); // left: A, the grey sky
+        QVERIFY(qGreen(image.pixel(image.width() - 10, 2)) < 20); // right: B, the live black sky
     }
 
     void clickSelectsTheNodeUnderTheCursor() {
