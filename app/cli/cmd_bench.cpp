@@ -19,7 +19,11 @@
 
 #include <epoxy/gl.h>
 
+#include <glm/gtc/quaternion.hpp>
+
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -39,6 +43,7 @@ struct BenchOptions {
     std::uint32_t seed = 0;
     std::optional<int> bounces;
     std::string camera;
+    std::string env;
     int referenceSpp = 1024;
 };
 
@@ -68,6 +73,41 @@ renderer::FrameSettings settingsFor(const BenchOptions& o, const Scene& scene, r
     s.width = o.size.width;
     s.height = o.size.height;
     return s;
+}
+
+bool hasCamera(const Scene& scene) {
+    for (const NodeId id : scene.depthFirst())
+        if (scene.at(id).get<Camera>()) return true;
+    return false;
+}
+
+// Scenes without a camera (sample models) get one that frames their meshes from the front (+Z),
+// slightly above, so the bench still measures them.
+void addFramingCamera(Scene& scene) {
+    glm::vec3 low(std::numeric_limits<float>::max()), high(-std::numeric_limits<float>::max());
+    for (const NodeId id : scene.depthFirst()) {
+        const MeshInstance* instance = scene.at(id).get<MeshInstance>();
+        if (!instance || !scene.meshes.contains(instance->mesh)) continue;
+        const glm::mat4 world = scene.worldFromNode(id);
+        for (const Primitive& primitive : scene.meshes.at(instance->mesh).primitives)
+            for (const glm::vec3& p : primitive.positions) {
+                const glm::vec3 w(world * glm::vec4(p, 1.0f));
+                low = glm::min(low, w);
+                high = glm::max(high, w);
+            }
+    }
+    if (low.x > high.x) throw std::runtime_error("the scene has neither a camera nor a mesh to frame");
+    const glm::vec3 centre = 0.5f * (low + high);
+    const float radius = 0.5f * glm::length(high - low);
+    Camera camera;
+    camera.yfov = 0.7f;
+    Node node;
+    node.name = "bench framing camera";
+    const glm::vec3 eye = centre + glm::normalize(glm::vec3(0.0f, 0.35f, 1.0f)) * (radius / std::sin(0.35f) * 1.05f);
+    node.local.translation = eye;
+    node.local.rotation = glm::quatLookAt(glm::normalize(centre - eye), glm::vec3(0.0f, 1.0f, 0.0f));
+    node.component = camera;
+    scene.settings.activeCamera = scene.addNode(std::move(node));
 }
 
 // The converged image every configuration is measured against (another seed than the runs).
@@ -199,7 +239,8 @@ std::vector<renderer::Configuration> parseConfigs(const std::vector<std::string>
 int runBench(const BenchOptions& o) {
     LoadResult loaded = openSceneFile(o.scene);
     if (reportWarnings(loaded.warnings, false)) return kFailure;
-    const Scene& scene = loaded.scene;
+    Scene& scene = loaded.scene;
+    if (o.camera.empty() && !hasCamera(scene)) addFramingCamera(scene);
     const std::filesystem::path dir(o.out);
     std::filesystem::create_directories(dir);
     std::vector<BenchRow> rows;
@@ -207,8 +248,11 @@ int runBench(const BenchOptions& o) {
         gl::HeadlessContext context;
         std::fprintf(stderr, "glint: GL_RENDERER: %s\n", context.renderer().c_str());
         renderer::FrameRenderer frames;
-        const std::string envFile = scene.settings.environment.file;
-        frames.setScene(scene, envFile.empty() ? std::filesystem::path() : std::filesystem::path(o.scene).parent_path() / envFile);
+        const std::string& projectEnv = scene.settings.environment.file;
+        const std::filesystem::path envFile = !o.env.empty() ? std::filesystem::path(o.env)
+                                              : projectEnv.empty() ? std::filesystem::path()
+                                                                   : std::filesystem::path(o.scene).parent_path() / projectEnv;
+        frames.setScene(scene, envFile);
         frames.setSettings(settingsFor(o, scene, renderer::Configuration::Reference));
         frames.useSceneCamera(o.camera);
         std::fprintf(stderr, "glint: reference: %d spp\n", o.referenceSpp);
@@ -245,6 +289,7 @@ void addBenchCommand(CLI::App& app, Action& action) {
     cmd->add_option("--seed", o->seed, "Random seed (default: 0)");
     cmd->add_option("--bounces", o->bounces, "Maximum bounces (default: the project's)")->check(CLI::Range(0, 63));
     cmd->add_option("--camera", o->camera, "Camera by glTF node name, else camera name (default: the active camera)");
+    cmd->add_option("--env", o->env, "Environment map (.hdr, .exr), anywhere on disk (default: the project's)");
     cmd->add_option("--reference-spp", o->referenceSpp, "Samples per pixel of the reference (default: 1024)")
         ->check(CLI::Range(1, 1 << 20));
     cmd->callback([&action, o] {
