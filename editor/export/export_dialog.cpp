@@ -6,6 +6,7 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDialogButtonBox>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -100,6 +101,10 @@ void ExportDialog::buildForm(Kind kind) {
         range->addWidget(first_);
         range->addWidget(last_);
         form->addRow(tr("Frames"), range);
+        video_ = new QLineEdit(this);
+        video_->setAccessibleName(tr("Video file"));
+        video_->setPlaceholderText(tr("optional: .mp4 (H.264), .mov (ProRes), .mkv (FFV1)"));
+        form->addRow(tr("Video"), video_);
     } else {
         first_->hide();
         last_->hide();
@@ -130,6 +135,10 @@ ExportSettings ExportDialog::settings() const {
     s.fpsNumerator = scene.settings.timeline.fpsNumerator;
     s.fpsDenominator = scene.settings.timeline.fpsDenominator;
     if (!s.animation && document_.currentTime() != 0.0) s.time = document_.currentTime();
+    if (video_ && !video_->text().trimmed().isEmpty()) {
+        s.video = video_->text().trimmed().toStdString();
+        s.encoder = QCoreApplication::applicationFilePath().toStdString(); // the glint executable
+    }
     return s;
 }
 

@@ -48,6 +48,7 @@ private:
     QCheckBox* animation_ = nullptr;
     QSpinBox* first_ = nullptr;
     QSpinBox* last_ = nullptr;
+    QLineEdit* video_ = nullptr;
     QProgressDialog* progress_ = nullptr;
 };
 

@@ -4,6 +4,7 @@
 
 #include "scene/anim/scene_at_time.h"
 
+#include <QProcess>
 #include <QThread>
 
 #include <stdexcept>
@@ -16,6 +17,17 @@ namespace {
 struct Cancelled {};
 
 constexpr const char* kVersion = GLINT_VERSION;
+constexpr int kEncodeTimeoutMs = 10 * 60 * 1000;
+
+// The frames into a video, as `glint render --animation --video` does: through `glint encode`.
+void encodeVideo(const ExportSettings& s) {
+    QProcess encode;
+    encode.start(QString::fromStdString(s.encoder.string()),
+                 {"encode", QString::fromStdString(s.out.string()), QString::fromStdString(s.video.string()), "--frames",
+                  QString("%1-%2").arg(s.firstFrame).arg(s.lastFrame), "--fps", QString("%1/%2").arg(s.fpsNumerator).arg(s.fpsDenominator)});
+    if (!encode.waitForFinished(kEncodeTimeoutMs) || encode.exitStatus() != QProcess::NormalExit || encode.exitCode() != 0)
+        throw std::runtime_error("encoding the video failed: " + encode.readAllStandardError().trimmed().toStdString());
+}
 
 } // namespace
 
@@ -44,6 +56,10 @@ void ExportJob::run() {
             files << QString::fromStdString(frame.out.string());
             emit frameWritten(files.back());
             before += std::max(1, settings_.spp);
+        }
+        if (settings_.animation && !settings_.video.empty()) {
+            encodeVideo(settings_);
+            files << QString::fromStdString(settings_.video.string());
         }
         emit finished({}, false, files);
     } catch (const Cancelled&) {

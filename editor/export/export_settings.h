@@ -24,6 +24,10 @@ struct ExportSettings {
     int lastFrame = 0;
     int fpsNumerator = 24;
     int fpsDenominator = 1;
+    // An animation also encoded into this video (.mp4, .mov, .mkv) by `glint encode`, which
+    // `encoder` names (the editor passes its own executable); empty: frames only.
+    std::filesystem::path video;
+    std::filesystem::path encoder;
 };
 
 } // namespace glint::editor

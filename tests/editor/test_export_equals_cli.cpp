@@ -1,6 +1,7 @@
 // The editor's export equals `glint render` for the same settings: the PNG byte for byte, the EXR
 // channel for channel bit-exact with the same header attributes except the render time. Also:
-// cancel leaves no file, and bad settings are refused before anything starts.
+// an animation's frames equal `glint render --animation` and encode into a video; cancel leaves no
+// file, and bad settings are refused before anything starts.
 // Scene: shapes under a grey sky and a camera, 48x32 px, 4 spp, accumulate, seed 0.
 // The export plan (renderer headers, epoxy) before any Qt header.
 #include "editor/export/export_plan.h"
@@ -8,11 +9,14 @@
 #include "test_viewport_scene.h"
 
 #include "editor/export/export_job.h"
+#include "scene/history/camera_path_commands.h"
 #include "scene/history/node_commands.h"
 
 #include <OpenImageIO/imageio.h>
 
+#include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QProcess>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -109,6 +113,51 @@ private slots:
         a.attributes.erase("glint:renderTimeMs");
         b.attributes.erase("glint:renderTimeMs");
         QCOMPARE(a.attributes, b.attributes);
+    }
+
+    void animationFramesEqualCommandLineAndEncode() {
+        // A camera path over 2 frames at 24 fps: frames 0, 1, 2.
+        const NodeId camera = *document_.scene().findByName("cam");
+        CameraKey a;
+        a.position = {0.0, 0.3, 4.0};
+        CameraKey b = a;
+        b.time = 2.0 / 24.0;
+        b.position = {0.5, 0.3, 4.0};
+        document_.push(std::make_unique<AddCameraKey>(camera, a));
+        document_.push(std::make_unique<AddCameraKey>(camera, b));
+        QCOMPARE(document_.save(), QString());
+
+        ExportSettings s;
+        s.sceneFile = document_.filePath().toStdString();
+        s.out = dir_.filePath("anim/editor_####.png").toStdString();
+        s.width = 32;
+        s.height = 24;
+        s.spp = 2;
+        s.animation = true;
+        s.firstFrame = 0;
+        s.lastFrame = 2;
+        s.video = dir_.filePath("anim/editor.mkv").toStdString();
+        s.encoder = GLINT_EXECUTABLE;
+        QVERIFY(QDir().mkpath(dir_.filePath("anim")));
+        ExportController controller;
+        QSignalSpy finished(&controller, &ExportController::finished);
+        controller.start(document_.scene(), s);
+        QVERIFY(finished.wait(120000));
+        QCOMPARE(finished.first().at(0).toString(), QString());
+        QCOMPARE(controller.files().size(), 4); // three frames and the video
+        QVERIFY(QFileInfo(dir_.filePath("anim/editor.mkv")).size() > 0);
+
+        QProcess cli;
+        cli.start(GLINT_EXECUTABLE, {"render", document_.filePath(), "--animation", "--frames", "0-2", "--size", "32x24", "--spp", "2",
+                                     "--out", dir_.filePath("anim/cli_####.png")});
+        QVERIFY(cli.waitForFinished(120000));
+        QVERIFY2(cli.exitStatus() == QProcess::NormalExit && cli.exitCode() == 0,
+                 qPrintable(QString("exit %1: %2").arg(cli.exitCode()).arg(QString::fromUtf8(cli.readAllStandardError()))));
+        for (int k = 0; k <= 2; ++k) {
+            const QByteArray mine = bytesOf(dir_.filePath(QString("anim/editor_%1.png").arg(k, 4, 10, QChar('0'))));
+            QVERIFY(!mine.isEmpty());
+            QVERIFY2(mine == bytesOf(dir_.filePath(QString("anim/cli_%1.png").arg(k, 4, 10, QChar('0')))), qPrintable(QString::number(k)));
+        }
     }
 
     void cancelWritesNothing() {
