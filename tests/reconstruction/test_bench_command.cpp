@@ -1,0 +1,49 @@
+// `glint bench` end to end on the Cornell box at 16x16: the CSV has the columns of CONTRACTS.md and
+// one row per requested configuration, JSON and both chart files are written, and usage errors
+// exit with 2.
+#include <QDir>
+#include <QFile>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QtTest>
+
+class TestBenchCommand : public QObject {
+    Q_OBJECT
+
+    static int runGlint(const QStringList& arguments, QByteArray* out = nullptr) {
+        QProcess process;
+        process.start(GLINT_EXECUTABLE, arguments);
+        if (!process.waitForFinished(90000)) return -1;
+        if (out) *out = process.readAllStandardOutput();
+        return process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
+    }
+
+private slots:
+    void writesTableFilesAndChart() {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        QByteArray table;
+        const QString scene = QString(GLINT_RESOURCES_DIR) + "/scenes/cornell_box/cornell_box.gltf";
+        QCOMPARE(runGlint({"bench", scene, "--config", "Full,accumulate", "--frames", "3", "--size", "16x16",
+                           "--reference-spp", "8", "--out", dir.path()}, &table), 0);
+        QFile csv(dir.filePath("bench.csv"));
+        QVERIFY(csv.open(QIODevice::ReadOnly));
+        const QList<QByteArray> lines = csv.readAll().trimmed().split('\n');
+        QCOMPARE(lines.size(), 3);
+        QCOMPARE(lines[0], QByteArray("config,spp,bounces,gi,ao,taa,svgf,frames,ms_median,ms_p10,ms_p90,fps,relmse,ssim"));
+        QVERIFY(lines[1].startsWith("full,1,"));
+        QVERIFY(lines[2].startsWith("accumulate,1,"));
+        QCOMPARE(lines[1].split(',').size(), 14);
+        for (const char* file : {"bench.json", "speed_accuracy.png", "speed_accuracy.svg"})
+            QVERIFY2(QFileInfo(dir.filePath(file)).size() > 100, file);
+        QVERIFY(table.contains("TAA/SVGF"));
+    }
+
+    void unknownConfigurationIsAUsageError() {
+        const QString scene = QString(GLINT_RESOURCES_DIR) + "/scenes/cornell_box/cornell_box.gltf";
+        QCOMPARE(runGlint({"bench", scene, "--config", "ultra"}), 2);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestBenchCommand)
+#include "test_bench_command.moc"
