@@ -65,7 +65,9 @@ public:
     // Full upload. `environmentFile`: an equirectangular image or empty (the project's colour).
     // Throws std::runtime_error when the scene exceeds GPU limits or a file cannot be read.
     void setScene(const Scene& scene, const std::filesystem::path& environmentFile = {});
-    // Re-uploads what `changes` names and resets accumulation only if the picture changes.
+    // Resets accumulation only if the picture changes (affectsImage). Until GpuScene uploads in
+    // parts, every image change re-uploads the whole scene, environment image included: keep
+    // continuous edits (gizmo drags) to one call per frame.
     void applyChanges(const Scene& scene, const ChangeSet& changes);
     void setSettings(const FrameSettings& settings); // display-only changes keep all history
     void setCamera(const CameraSetup& camera);       // a moving camera keeps reprojected history
