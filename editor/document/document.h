@@ -66,6 +66,11 @@ public:
     // Warnings of the last open, import or save, as "FILE: message" lines.
     const QStringList& lastWarnings() const { return warnings_; }
 
+public slots:
+    // For warnings that do not come from a file (the renderer, a worker): they reach the log
+    // panel through warningsReported like the loader's.
+    void reportWarning(const QString& line) { emit warningsReported({line}); }
+
 signals:
     void changed(const glint::ChangeSet& changes);
     void selectionChanged();

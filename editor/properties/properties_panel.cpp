@@ -13,6 +13,7 @@ namespace glint::editor {
 PropertiesPanel::PropertiesPanel(Document& document, bool scene, QWidget* parent)
     : QScrollArea(parent), document_(document), scene_(scene) {
     setWidgetResizable(true);
+    setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff); // the forms wrap to the dock's width
     setAccessibleName(scene ? tr("Scene settings") : tr("Properties"));
     connect(&document_, &Document::changed, this, &PropertiesPanel::update);
     connect(&document_, &Document::selectionChanged, this, &PropertiesPanel::update);
