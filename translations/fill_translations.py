@@ -313,6 +313,10 @@ T = {
 "Rendering...": ("Rendering in corso...", "Rendern...", "Rendu en cours...", "Renderizando..."),
 "Size": ("Dimensione", "Größe", "Taille", "Tamaño"),
 "Width": ("Larghezza", "Breite", "Largeur", "Ancho"),
+"Video file": ("File video", "Videodatei", "Fichier vidéo", "Archivo de vídeo"),
+"optional: .mp4 (H.264), .mov (ProRes), .mkv (FFV1)": ("facoltativo: .mp4 (H.264), .mov (ProRes), .mkv (FFV1)", "optional: .mp4 (H.264), .mov (ProRes), .mkv (FFV1)", "facultatif : .mp4 (H.264), .mov (ProRes), .mkv (FFV1)", "opcional: .mp4 (H.264), .mov (ProRes), .mkv (FFV1)"),
+"Video": ("Video", "Video", "Vidéo", "Vídeo"),
+"BVH instance boxes": ("Riquadri BVH delle istanze", "BVH-Instanzboxen", "Boîtes BVH des instances", "Cajas BVH de instancias"),
 "all, none, or a list of albedo, normal, depth, id, variance": ("all, none, oppure un elenco tra albedo, normal, depth, id, variance", "all, none oder eine Liste aus albedo, normal, depth, id, variance", "all, none, ou une liste parmi albedo, normal, depth, id, variance", "all, none, o una lista de albedo, normal, depth, id, variance"),
 }
 

@@ -86,6 +86,18 @@
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
+    <message>
+        <source>Video file</source>
+        <translation>Videodatei</translation>
+    </message>
+    <message>
+        <source>optional: .mp4 (H.264), .mov (ProRes), .mkv (FFV1)</source>
+        <translation>optional: .mp4 (H.264), .mov (ProRes), .mkv (FFV1)</translation>
+    </message>
+    <message>
+        <source>Video</source>
+        <translation>Video</translation>
+    </message>
 </context>
 <context>
     <name>RenderView</name>
@@ -275,6 +287,10 @@ R %3  G %4  B %5 (linear)</translation>
     <message>
         <source>  |  paused</source>
         <translation>  |  angehalten</translation>
+    </message>
+    <message>
+        <source>BVH instance boxes</source>
+        <translation>BVH-Instanzboxen</translation>
     </message>
 </context>
 <context>

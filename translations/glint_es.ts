@@ -86,6 +86,18 @@
         <source>Cancel</source>
         <translation>Cancelar</translation>
     </message>
+    <message>
+        <source>Video file</source>
+        <translation>Archivo de vídeo</translation>
+    </message>
+    <message>
+        <source>optional: .mp4 (H.264), .mov (ProRes), .mkv (FFV1)</source>
+        <translation>opcional: .mp4 (H.264), .mov (ProRes), .mkv (FFV1)</translation>
+    </message>
+    <message>
+        <source>Video</source>
+        <translation>Vídeo</translation>
+    </message>
 </context>
 <context>
     <name>RenderView</name>
@@ -275,6 +287,10 @@ R %3  G %4  B %5 (lineal)</translation>
     <message>
         <source>  |  paused</source>
         <translation>  |  en pausa</translation>
+    </message>
+    <message>
+        <source>BVH instance boxes</source>
+        <translation>Cajas BVH de instancias</translation>
     </message>
 </context>
 <context>

@@ -86,6 +86,18 @@
         <source>Cancel</source>
         <translation>Annuler</translation>
     </message>
+    <message>
+        <source>Video file</source>
+        <translation>Fichier vidéo</translation>
+    </message>
+    <message>
+        <source>optional: .mp4 (H.264), .mov (ProRes), .mkv (FFV1)</source>
+        <translation>facultatif : .mp4 (H.264), .mov (ProRes), .mkv (FFV1)</translation>
+    </message>
+    <message>
+        <source>Video</source>
+        <translation>Vidéo</translation>
+    </message>
 </context>
 <context>
     <name>RenderView</name>
@@ -275,6 +287,10 @@ R %3  V %4  B %5 (linéaire)</translation>
     <message>
         <source>  |  paused</source>
         <translation>  |  en pause</translation>
+    </message>
+    <message>
+        <source>BVH instance boxes</source>
+        <translation>Boîtes BVH des instances</translation>
     </message>
 </context>
 <context>

@@ -86,6 +86,18 @@
         <source>Cancel</source>
         <translation>Annulla</translation>
     </message>
+    <message>
+        <source>Video file</source>
+        <translation>File video</translation>
+    </message>
+    <message>
+        <source>optional: .mp4 (H.264), .mov (ProRes), .mkv (FFV1)</source>
+        <translation>facoltativo: .mp4 (H.264), .mov (ProRes), .mkv (FFV1)</translation>
+    </message>
+    <message>
+        <source>Video</source>
+        <translation>Video</translation>
+    </message>
 </context>
 <context>
     <name>RenderView</name>
@@ -275,6 +287,10 @@ R %3  G %4  B %5 (lineare)</translation>
     <message>
         <source>  |  paused</source>
         <translation>  |  in pausa</translation>
+    </message>
+    <message>
+        <source>BVH instance boxes</source>
+        <translation>Riquadri BVH delle istanze</translation>
     </message>
 </context>
 <context>
