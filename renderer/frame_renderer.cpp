@@ -26,6 +26,8 @@ public:
         glGetIntegerv(GL_VIEWPORT, viewport_);
         glGetIntegerv(GL_CURRENT_PROGRAM, &program_);
         glGetIntegerv(GL_ACTIVE_TEXTURE, &activeTexture_);
+        glGetIntegerv(GL_TEXTURE_BINDING_2D, &texture_);
+        glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertexArray_);
         for (int i = 0; i < capabilityCount; ++i) {
             enabled_[i] = glIsEnabled(capabilities[i]);
             glDisable(capabilities[i]);
@@ -34,7 +36,9 @@ public:
     ~CallerGlState() {
         for (int i = 0; i < capabilityCount; ++i)
             if (enabled_[i]) glEnable(capabilities[i]);
+        glBindVertexArray(static_cast<GLuint>(vertexArray_));
         glActiveTexture(static_cast<GLenum>(activeTexture_));
+        glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(texture_)); // on the caller's active unit
         glUseProgram(static_cast<GLuint>(program_));
         glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(drawFbo_));
@@ -47,7 +51,7 @@ private:
     static constexpr int capabilityCount = 6;
     static constexpr GLenum capabilities[capabilityCount] = {GL_BLEND, GL_DEPTH_TEST, GL_SCISSOR_TEST,
                                                              GL_CULL_FACE, GL_STENCIL_TEST, GL_FRAMEBUFFER_SRGB};
-    GLint drawFbo_ = 0, readFbo_ = 0, program_ = 0, activeTexture_ = GL_TEXTURE0;
+    GLint drawFbo_ = 0, readFbo_ = 0, program_ = 0, activeTexture_ = GL_TEXTURE0, texture_ = 0, vertexArray_ = 0;
     GLint viewport_[4] = {0, 0, 0, 0};
     GLboolean enabled_[capabilityCount] = {};
 };

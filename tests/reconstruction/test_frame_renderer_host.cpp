@@ -1,5 +1,5 @@
 // FrameRenderer as a host sees it: it draws into the framebuffer it is given (not 0), puts the
-// caller's framebuffer, viewport and enables back, and keeps accumulating through exposure and
+// caller's framebuffer, viewport, vertex array and enables back, and keeps accumulating through exposure and
 // tonemapper changes.
 #include "reconstruction_fixture.h"
 
@@ -36,6 +36,9 @@ private slots:
         glBindFramebuffer(GL_FRAMEBUFFER, other); // the host's current binding, not the target
         glViewport(3, 4, 5, 6);
         glEnable(GL_DEPTH_TEST);
+        GLuint vertexArray = 0;
+        glGenVertexArrays(1, &vertexArray);
+        glBindVertexArray(vertexArray);
 
         h_->frames.drawTo(target, imageSize, imageSize);
 
@@ -46,6 +49,11 @@ private slots:
         QCOMPARE(viewport[0], 3);
         QCOMPARE(viewport[3], 6);
         QVERIFY(glIsEnabled(GL_DEPTH_TEST));
+        GLint boundVertexArray = 0;
+        glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &boundVertexArray);
+        QCOMPARE(GLuint(boundVertexArray), vertexArray);
+        glBindVertexArray(0);
+        glDeleteVertexArrays(1, &vertexArray);
 
         std::vector<unsigned char> pixels(static_cast<std::size_t>(imageSize * imageSize * 4));
         glBindFramebuffer(GL_READ_FRAMEBUFFER, target);
