@@ -40,52 +40,6 @@ float boxEntry(const FlatScene& scene, std::uint32_t node, const BoxRay& ray, fl
     return nearT <= farT * kFarWidening ? nearT : kMissed;
 }
 
-struct Traversal {
-    const FlatScene& scene;
-    float tMax;
-    int steps = 0;
-};
-
-// Walks one level from `root`, nearer child first. onLeaf(link) returns true to stop the walk
-// (any-hit) and may lower traversal.tMax (closest hit).
-template <class OnLeaf>
-bool walkLevel(Traversal& traversal, std::uint32_t root, const Ray& ray, OnLeaf&& onLeaf)
-{
-    const BoxRay box = boxRay(ray);
-    std::uint32_t stackNode[kStackSize];
-    float stackNear[kStackSize];
-    int size = 0;
-    const float rootNear = boxEntry(traversal.scene, root, box, traversal.tMax);
-    if (rootNear == kMissed) return false;
-    stackNode[size] = root;
-    stackNear[size++] = rootNear;
-    const auto push = [&](std::uint32_t node, float nearT) {
-        if (nearT == kMissed || size == kStackSize) return;
-        stackNode[size] = node;
-        stackNear[size++] = nearT;
-    };
-    while (size > 0) {
-        if (++traversal.steps > kMaxTraversalSteps) return true;
-        --size;
-        if (stackNear[size] > traversal.tMax) continue;
-        const glm::uvec4 link = traversal.scene.nodeLinks[stackNode[size]];
-        if (link.y > 0) {
-            if (onLeaf(link)) return true;
-            continue;
-        }
-        const float nearLeft = boxEntry(traversal.scene, link.x, box, traversal.tMax);
-        const float nearRight = boxEntry(traversal.scene, link.x + 1, box, traversal.tMax);
-        if (nearLeft <= nearRight) {
-            push(link.x + 1, nearRight);
-            push(link.x, nearLeft);
-        } else {
-            push(link.x, nearLeft);
-            push(link.x + 1, nearRight);
-        }
-    }
-    return false;
-}
-
 Ray localRay(const FlatScene& scene, std::uint32_t instance, const Ray& world)
 {
     Ray local;
@@ -99,29 +53,81 @@ Ray localRay(const FlatScene& scene, std::uint32_t instance, const Ray& world)
     return local;
 }
 
-// Tests the leaf's triangles; onHit(slot, hit) returns true to stop.
-template <class OnHit>
-bool intersectLeaf(Traversal& traversal, const WatertightRay& ray, glm::uvec4 link, OnHit&& onHit)
-{
-    const FlatScene& scene = traversal.scene;
-    for (std::uint32_t slot = link.x; slot < link.x + link.y; ++slot) {
-        TriangleHit hit;
-        const auto p = [&](int k) { return glm::vec3(scene.trianglePositions[kTrianglePositionTexels * slot + k]); };
-        if (intersectTriangle(ray, p(0), p(1), p(2), 0.0f, traversal.tMax, hit) && onHit(slot, hit)) return true;
-    }
-    return false;
-}
+// Both levels share one stack: room for a full top-level walk and a full mesh walk above it.
+constexpr int kTraversalStack = 2 * kStackSize;
 
-// Visits every instance whose box the ray reaches; onInstance(instance, info, localRay) returns
-// true to stop.
-template <class OnInstance>
-void walkScene(Traversal& traversal, const Ray& worldRay, OnInstance&& onInstance)
+// One loop over both levels with one stack, as the shader does: a top-level leaf (an instance)
+// pushes its mesh's root above the top-level entries and switches to the mesh-local ray; when the
+// stack falls back to that mark the walk is at the top level again. Nearer child first.
+// onTriangle(instance, slot, hit) and onShape(instance, shape, localRay) return true to stop; they
+// may lower tMax (closest hit).
+template <class OnTriangle, class OnShape>
+void walkScene(const FlatScene& scene, const Ray& worldRay, float& tMax, OnTriangle&& onTriangle, OnShape&& onShape)
 {
-    if (traversal.scene.topLevelRoot < 0) return;
-    walkLevel(traversal, static_cast<std::uint32_t>(traversal.scene.topLevelRoot), worldRay, [&](glm::uvec4 link) {
-        const glm::uvec4 info = traversal.scene.instances[kInstanceTexels * link.x + 3];
-        return onInstance(link.x, info, localRay(traversal.scene, link.x, worldRay));
-    });
+    if (scene.topLevelRoot < 0) return;
+    const auto topRoot = static_cast<std::uint32_t>(scene.topLevelRoot);
+    const BoxRay worldBox = boxRay(worldRay);
+    const float rootNear = boxEntry(scene, topRoot, worldBox, tMax);
+    if (rootNear == kMissed) return;
+    std::uint32_t stackNode[kTraversalStack];
+    float stackNear[kTraversalStack];
+    int size = 0;
+    const auto push = [&](std::uint32_t node, float nearT) {
+        if (nearT == kMissed || size == kTraversalStack) return false;
+        stackNode[size] = node;
+        stackNear[size++] = nearT;
+        return true;
+    };
+    push(topRoot, rootNear);
+    std::int64_t instance = -1; // the mesh instance being walked; -1 at the top level
+    int meshMark = 0;           // stack size below the mesh's entries
+    BoxRay box = worldBox;
+    WatertightRay triangleRay = prepareWatertight(worldRay);
+    for (int steps = 1; size > 0 && steps <= kMaxTraversalSteps; ++steps) {
+        if (instance >= 0 && size == meshMark) {
+            instance = -1;
+            box = worldBox;
+        }
+        --size;
+        if (stackNear[size] > tMax) continue;
+        const glm::uvec4 link = scene.nodeLinks[stackNode[size]];
+        if (link.y > 0 && instance >= 0) {
+            for (std::uint32_t slot = link.x; slot < link.x + link.y; ++slot) {
+                TriangleHit hit;
+                const auto p = [&](int k) { return glm::vec3(scene.trianglePositions[kTrianglePositionTexels * slot + k]); };
+                if (intersectTriangle(triangleRay, p(0), p(1), p(2), 0.0f, tMax, hit) &&
+                    onTriangle(static_cast<std::uint32_t>(instance), slot, hit))
+                    return;
+            }
+            continue;
+        }
+        if (link.y > 0) {
+            const glm::uvec4 info = scene.instances[kInstanceTexels * link.x + 3];
+            const Ray local = localRay(scene, link.x, worldRay);
+            if (info.x == kInstanceShape) {
+                if (onShape(link.x, info.y, local)) return;
+                continue;
+            }
+            const BoxRay localBox = boxRay(local);
+            const int mark = size;
+            if (push(info.y, boxEntry(scene, info.y, localBox, tMax))) {
+                meshMark = mark;
+                instance = link.x;
+                box = localBox;
+                triangleRay = prepareWatertight(local);
+            }
+            continue;
+        }
+        const float nearLeft = boxEntry(scene, link.x, box, tMax);
+        const float nearRight = boxEntry(scene, link.x + 1, box, tMax);
+        if (nearLeft <= nearRight) {
+            push(link.x + 1, nearRight);
+            push(link.x, nearLeft);
+        } else {
+            push(link.x, nearLeft);
+            push(link.x + 1, nearRight);
+        }
+    }
 }
 
 } // namespace
@@ -129,41 +135,31 @@ void walkScene(Traversal& traversal, const Ray& worldRay, OnInstance&& onInstanc
 RayHit intersectClosest(const FlatScene& scene, const Ray& worldRay, float tMax, const ShapeIntersector& shapes)
 {
     RayHit result;
-    Traversal traversal{scene, tMax};
-    walkScene(traversal, worldRay, [&](std::uint32_t instance, glm::uvec4 info, const Ray& local) {
-        if (info.x == kInstanceShape) {
-            if (shapes && shapes(info.y, local, traversal.tMax))
-                result = RayHit{traversal.tMax, 0.0f, 0.0f, static_cast<std::int32_t>(instance), -1, -1};
+    walkScene(
+        scene, worldRay, tMax,
+        [&](std::uint32_t instance, std::uint32_t slot, const TriangleHit& hit) {
+            tMax = hit.t;
+            result = RayHit{hit.t, hit.u, hit.v, static_cast<std::int32_t>(instance), static_cast<std::int32_t>(slot),
+                            static_cast<std::int32_t>(scene.slotTriangle[slot])};
             return false;
-        }
-        const WatertightRay ray = prepareWatertight(local);
-        return walkLevel(traversal, info.y, local, [&](glm::uvec4 link) {
-            return intersectLeaf(traversal, ray, link, [&](std::uint32_t slot, const TriangleHit& hit) {
-                traversal.tMax = hit.t;
-                result = RayHit{hit.t, hit.u, hit.v, static_cast<std::int32_t>(instance), static_cast<std::int32_t>(slot),
-                                static_cast<std::int32_t>(scene.slotTriangle[slot])};
-                return false;
-            });
+        },
+        [&](std::uint32_t instance, std::uint32_t shape, const Ray& local) {
+            if (shapes && shapes(shape, local, tMax))
+                result = RayHit{tMax, 0.0f, 0.0f, static_cast<std::int32_t>(instance), -1, -1};
+            return false;
         });
-    });
     return result;
 }
 
 bool occluded(const FlatScene& scene, const Ray& worldRay, float tMax, const ShapeIntersector& shapes)
 {
     bool blocked = false;
-    Traversal traversal{scene, tMax};
-    walkScene(traversal, worldRay, [&](std::uint32_t, glm::uvec4 info, const Ray& local) {
-        if (info.x == kInstanceShape) {
-            float limit = traversal.tMax;
-            blocked = shapes && shapes(info.y, local, limit);
-            return blocked;
-        }
-        const WatertightRay ray = prepareWatertight(local);
-        return walkLevel(traversal, info.y, local, [&](glm::uvec4 link) {
-            return intersectLeaf(traversal, ray, link, [&](std::uint32_t, const TriangleHit&) { return blocked = true; });
+    walkScene(
+        scene, worldRay, tMax, [&](std::uint32_t, std::uint32_t, const TriangleHit&) { return blocked = true; },
+        [&](std::uint32_t, std::uint32_t shape, const Ray& local) {
+            float limit = tMax;
+            return blocked = shapes && shapes(shape, local, limit);
         });
-    });
     return blocked;
 }
 

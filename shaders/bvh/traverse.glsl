@@ -1,7 +1,7 @@
 // Two-level BVH traversal: closest hit (bvhIntersectScene) and any hit (bvhOccluded). Twin of
 // renderer/bvh/traverse.cpp. Rays are in world space; t is the world ray's parameter in both
-// levels (local directions stay unnormalised). Every loop shares one step budget, so a NaN ray or
-// a corrupt buffer ends after BVH_MAX_STEPS nodes.
+// levels (local directions stay unnormalised). One loop walks both levels, so a NaN ray or a
+// corrupt buffer ends after BVH_MAX_STEPS nodes.
 //
 // Shape instances: define BVH_SHAPE_INSTANCES and, before including this file,
 //   bool bvhIntersectShapeInstance(uint shape, vec3 localOrigin, vec3 localDirection, inout float tMax);
@@ -14,6 +14,9 @@
 #include "bvh/box.glsl"
 #include "bvh/triangle.glsl"
 #include "bvh/ray_offset.glsl"
+
+// Both levels share one stack: room for a full top-level walk and a full mesh walk above it.
+const int BVH_TRAVERSAL_STACK = 2 * BVH_STACK_SIZE;
 
 struct BvhHit {
     float t;
@@ -33,104 +36,97 @@ void bvhLocalRay(int instance, vec3 origin, vec3 direction, out vec3 localOrigin
     }
 }
 
-// Walks one mesh BVH from `root`, nearer child first. anyHit: stop at the first hit.
-// Returns false when the step budget ran out.
-bool bvhWalkMesh(int root, int instance, vec3 origin, vec3 direction, bool anyHit, inout BvhHit hit, inout int steps) {
-    vec3 inverseDirection = 1.0 / direction;
-    BvhWatertightRay ray = bvhPrepareWatertight(origin, direction);
-    int stackNode[BVH_STACK_SIZE];
-    float stackNear[BVH_STACK_SIZE];
-    int size = 0;
-    float rootNear = bvhBoxEntry(root, origin, inverseDirection, hit.t);
-    if (rootNear < 0.0) return true;
-    stackNode[0] = root;
+// One loop over both levels with one stack: a top-level leaf (an instance) pushes its mesh's root
+// above the top-level entries and switches to the mesh-local ray; when the stack falls back to that
+// mark, the walk is at the top level again. On llvmpipe a single loop keeps the SIMD lanes together
+// (a nested mesh loop makes lanes still at the top level wait for the others' whole mesh walks), and
+// one pair of stack arrays replaces two. Nearer child first; anyHit: stop at the first hit.
+BvhHit bvhTraverse(vec3 origin, vec3 direction, float tMax, bool anyHit) {
+    BvhHit hit = bvhNoHit(tMax);
+    if (uBvhTopLevelRoot < 0) return hit;
+    vec3 worldInverse = 1.0 / direction;
+    float rootNear = bvhBoxEntry(uBvhTopLevelRoot, origin, worldInverse, hit.t);
+    if (rootNear < 0.0) return hit;
+    int stackNode[BVH_TRAVERSAL_STACK];
+    float stackNear[BVH_TRAVERSAL_STACK];
+    stackNode[0] = uBvhTopLevelRoot;
     stackNear[0] = rootNear;
-    size = 1;
+    int size = 1;
+    int instance = -1; // the mesh instance being walked; -1 at the top level
+    int meshMark = 0;  // stack size below the mesh's entries
+    vec3 rayOrigin = origin;
+    vec3 rayDirection = direction;
+    vec3 rayInverse = worldInverse;
+    BvhWatertightRay triangleRay = bvhPrepareWatertight(origin, direction);
+    int steps = 0;
     while (size > 0) {
-        if (++steps > BVH_MAX_STEPS) return false;
+        if (++steps > BVH_MAX_STEPS) break;
+        if (instance >= 0 && size == meshMark) {
+            instance = -1;
+            rayOrigin = origin;
+            rayDirection = direction;
+            rayInverse = worldInverse;
+        }
         --size;
         if (stackNear[size] > hit.t) continue;
         uvec4 link = bvhNodeLink(stackNode[size]);
-        if (link.y > 0u) {
+        if (link.y > 0u && instance >= 0) {
             for (int slot = int(link.x); slot < int(link.x + link.y); ++slot) {
                 vec3 tuv;
-                if (bvhIntersectTriangle(ray, bvhTrianglePosition(slot, 0), bvhTrianglePosition(slot, 1),
+                if (bvhIntersectTriangle(triangleRay, bvhTrianglePosition(slot, 0), bvhTrianglePosition(slot, 1),
                                          bvhTrianglePosition(slot, 2), hit.t, tuv)) {
 #ifdef BVH_TRIANGLE_FILTER
-                    if (!bvhAcceptTriangle(instance, slot, tuv, direction)) continue;
+                    if (!bvhAcceptTriangle(instance, slot, tuv, rayDirection)) continue;
 #endif
                     hit = BvhHit(tuv.x, tuv.y, tuv.z, instance, slot);
-                    if (anyHit) return true;
+                    if (anyHit) return hit;
                 }
             }
             continue;
         }
+        if (link.y > 0u) {
+            int leafInstance = int(link.x);
+            uvec4 info = bvhInstanceInfo(leafInstance);
+            vec3 localOrigin;
+            vec3 localDirection;
+            bvhLocalRay(leafInstance, origin, direction, localOrigin, localDirection);
+            if (info.x == BVH_INSTANCE_MESH) {
+                vec3 localInverse = 1.0 / localDirection;
+                float meshNear = bvhBoxEntry(int(info.y), localOrigin, localInverse, hit.t);
+                if (meshNear >= 0.0 && size < BVH_TRAVERSAL_STACK) {
+                    meshMark = size;
+                    stackNode[size] = int(info.y);
+                    stackNear[size] = meshNear;
+                    ++size;
+                    instance = leafInstance;
+                    rayOrigin = localOrigin;
+                    rayDirection = localDirection;
+                    rayInverse = localInverse;
+                    triangleRay = bvhPrepareWatertight(localOrigin, localDirection);
+                }
+            }
+#ifdef BVH_SHAPE_INSTANCES
+            else if (info.x == BVH_INSTANCE_SHAPE) {
+                float t = hit.t;
+                if (bvhIntersectShapeInstance(info.y, localOrigin, localDirection, t)) {
+                    hit = BvhHit(t, 0.0, 0.0, leafInstance, -1);
+                    if (anyHit) return hit;
+                }
+            }
+#endif
+            continue;
+        }
         int left = int(link.x);
-        float nearLeft = bvhBoxEntry(left, origin, inverseDirection, hit.t);
-        float nearRight = bvhBoxEntry(left + 1, origin, inverseDirection, hit.t);
+        float nearLeft = bvhBoxEntry(left, rayOrigin, rayInverse, hit.t);
+        float nearRight = bvhBoxEntry(left + 1, rayOrigin, rayInverse, hit.t);
         bool leftFirst = nearLeft <= nearRight || nearRight < 0.0;
         // Push the farther child first so the nearer one is popped next.
         int farNode = leftFirst ? left + 1 : left;
         float farNear = leftFirst ? nearRight : nearLeft;
         int nearNode = leftFirst ? left : left + 1;
         float nearNear = leftFirst ? nearLeft : nearRight;
-        if (farNear >= 0.0 && size < BVH_STACK_SIZE) { stackNode[size] = farNode; stackNear[size] = farNear; ++size; }
-        if (nearNear >= 0.0 && size < BVH_STACK_SIZE) { stackNode[size] = nearNode; stackNear[size] = nearNear; ++size; }
-    }
-    return true;
-}
-
-void bvhVisitInstance(int instance, vec3 origin, vec3 direction, bool anyHit, inout BvhHit hit, inout int steps,
-                      inout bool budgetLeft) {
-    uvec4 info = bvhInstanceInfo(instance);
-    vec3 localOrigin;
-    vec3 localDirection;
-    bvhLocalRay(instance, origin, direction, localOrigin, localDirection);
-    if (info.x == BVH_INSTANCE_MESH) {
-        budgetLeft = bvhWalkMesh(int(info.y), instance, localOrigin, localDirection, anyHit, hit, steps);
-    }
-#ifdef BVH_SHAPE_INSTANCES
-    else if (info.x == BVH_INSTANCE_SHAPE) {
-        float t = hit.t;
-        if (bvhIntersectShapeInstance(info.y, localOrigin, localDirection, t)) hit = BvhHit(t, 0.0, 0.0, instance, -1);
-    }
-#endif
-}
-
-// The top level: the same walk over instance boxes in world space.
-BvhHit bvhTraverse(vec3 origin, vec3 direction, float tMax, bool anyHit) {
-    BvhHit hit = bvhNoHit(tMax);
-    if (uBvhTopLevelRoot < 0) return hit;
-    vec3 inverseDirection = 1.0 / direction;
-    int steps = 0;
-    bool budgetLeft = true;
-    int stackNode[BVH_STACK_SIZE];
-    float stackNear[BVH_STACK_SIZE];
-    float rootNear = bvhBoxEntry(uBvhTopLevelRoot, origin, inverseDirection, hit.t);
-    if (rootNear < 0.0) return hit;
-    stackNode[0] = uBvhTopLevelRoot;
-    stackNear[0] = rootNear;
-    int size = 1;
-    while (size > 0 && budgetLeft) {
-        if (++steps > BVH_MAX_STEPS) break;
-        --size;
-        if (stackNear[size] > hit.t) continue;
-        uvec4 link = bvhNodeLink(stackNode[size]);
-        if (link.y > 0u) {
-            bvhVisitInstance(int(link.x), origin, direction, anyHit, hit, steps, budgetLeft);
-            if (anyHit && hit.instance >= 0) break;
-            continue;
-        }
-        int left = int(link.x);
-        float nearLeft = bvhBoxEntry(left, origin, inverseDirection, hit.t);
-        float nearRight = bvhBoxEntry(left + 1, origin, inverseDirection, hit.t);
-        bool leftFirst = nearLeft <= nearRight || nearRight < 0.0;
-        int farNode = leftFirst ? left + 1 : left;
-        float farNear = leftFirst ? nearRight : nearLeft;
-        int nearNode = leftFirst ? left : left + 1;
-        float nearNear = leftFirst ? nearLeft : nearRight;
-        if (farNear >= 0.0 && size < BVH_STACK_SIZE) { stackNode[size] = farNode; stackNear[size] = farNear; ++size; }
-        if (nearNear >= 0.0 && size < BVH_STACK_SIZE) { stackNode[size] = nearNode; stackNear[size] = nearNear; ++size; }
+        if (farNear >= 0.0 && size < BVH_TRAVERSAL_STACK) { stackNode[size] = farNode; stackNear[size] = farNear; ++size; }
+        if (nearNear >= 0.0 && size < BVH_TRAVERSAL_STACK) { stackNode[size] = nearNode; stackNear[size] = nearNear; ++size; }
     }
     return hit;
 }
