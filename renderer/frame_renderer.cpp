@@ -255,7 +255,11 @@ void FrameRenderer::applyChanges(const Scene& scene, const ChangeSet& changes) {
     // everything but settings changes (moving and re-lit objects are reprojected and clipped).
     s.upload();
     s.pictureChanged = true;
-    if (changes.has(Change::Settings) || changes.has(Change::Structure)) s.historyValid = false;
+    // Lighting edits drop the history: reprojected history would keep the old light for ~17 frames
+    // (docs/DENOISING.md); a few noisy frames after an edit are the lesser evil. Moves keep it.
+    if (changes.has(Change::Settings) || changes.has(Change::Structure) || changes.has(Change::Light) ||
+        changes.has(Change::Material) || changes.has(Change::Environment))
+        s.historyValid = false;
 }
 
 void FrameRenderer::setSettings(const FrameSettings& settings) {
