@@ -74,9 +74,10 @@ inline constexpr std::uint32_t kInstanceShape = 1;
 inline constexpr std::uint32_t kInstanceMirrored = 1u; // flags bit 0
 
 inline constexpr std::uint32_t kMaxLeafTriangles = 8;
-// Traversal (GLSL and CPU): stack entries, one stack per level, and the cap on visited nodes over
-// both levels, so a NaN ray or a corrupt buffer cannot loop forever. A level deeper than
-// kStackSize is refused by validation on the CPU before upload.
+// Traversal (GLSL and CPU): stack entries per level (one loop walks both levels on one stack of
+// 2 * kStackSize entries, a mesh's above the top level's), and the cap on visited nodes over both
+// levels, so a NaN ray or a corrupt buffer cannot loop forever. A level deeper than kStackSize is
+// refused by validation on the CPU before upload.
 inline constexpr int kStackSize = 64;
 inline constexpr int kMaxTraversalSteps = 8192;
 

@@ -7,7 +7,7 @@ uniform usamplerBuffer uBvhTriangleVertices;  // RGBA32UI, 1 texel per slot: (v0
 uniform usamplerBuffer uBvhInstances;         // RGBA32UI, 4 texels per instance
 uniform int uBvhTopLevelRoot;                 // -1: no instances
 
-const int BVH_STACK_SIZE = 64;      // kStackSize: per level; validation refuses deeper trees
+const int BVH_STACK_SIZE = 64;      // kStackSize: per level (the shared stack holds two levels)
 const int BVH_MAX_STEPS = 8192;     // kMaxTraversalSteps: over both levels, so a NaN ray ends
 const uint BVH_INSTANCE_MESH = 0u;
 const uint BVH_INSTANCE_SHAPE = 1u;
