@@ -8,6 +8,7 @@
 
 #include "test_viewport_scene.h"
 
+#include "editor/export/export_dialog.h"
 #include "editor/export/export_job.h"
 #include "scene/history/camera_path_commands.h"
 #include "scene/history/node_commands.h"
@@ -197,6 +198,34 @@ private slots:
         s.animation = true;
         s.out = dir_.filePath("no_pattern.exr").toStdString();
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, controller.start(document_.scene(), s));
+    }
+
+    void dialogFieldsRoundTrip() {
+        ExportDialog dialog(document_, ExportDialog::Kind::Animation);
+        ExportSettings s;
+        s.out = dir_.filePath("shot_####.png").toStdString();
+        s.width = 320;
+        s.height = 200;
+        s.spp = 9;
+        s.seed = 5;
+        s.configuration = "reference";
+        s.aovs = "albedo,depth";
+        s.firstFrame = 3;
+        s.lastFrame = 7;
+        dialog.setSettings(s);
+        const ExportSettings back = dialog.settings();
+        QCOMPARE(QString::fromStdString(back.out.string()), QString::fromStdString(s.out.string()));
+        QCOMPARE(back.width, 320);
+        QCOMPARE(back.height, 200);
+        QCOMPARE(back.spp, 9);
+        QCOMPARE(back.seed, 5u);
+        QCOMPARE(back.configuration, std::string("reference"));
+        QCOMPARE(back.aovs, std::string("albedo,depth"));
+        QVERIFY(back.animation);
+        QCOMPARE(back.firstFrame, 3);
+        QCOMPARE(back.lastFrame, 7);
+        QCOMPARE(QString::fromStdString(back.sceneFile.string()), document_.filePath());
+        QVERIFY(back.video.empty());
     }
 
     void framePathsAndTimes() {
