@@ -35,7 +35,7 @@ RenderPlan planImage(const RenderOptions& o, const FrameJob& job) {
     if (job.fps) plan.metadata["fps"] = std::to_string(job.fps->numerator) + "/" + std::to_string(job.fps->denominator);
     if (job.time) plan.metadata["time"] = formatNumber(*job.time);
     if (renderer::imageFormatFor(job.out) == renderer::ImageFormat::Exr) plan.metadata["aovs"] = o.aovs;
-    sealSettings(plan);
+    sealSettings(plan.metadata);
     return plan;
 }
 

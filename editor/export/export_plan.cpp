@@ -1,81 +1,30 @@
 #include "editor/export/export_plan.h"
 
-#include "renderer/configuration.h"
-#include "renderer/gpu_scene/camera_setup.h"
+#include "renderer/output/render_plan.h"
 
-#include <charconv>
-#include <cstdio>
 #include <stdexcept>
 
 namespace glint::editor {
 
 namespace {
 
-const char* tonemapperName(Tonemapper t) {
-    switch (t) {
-    case Tonemapper::AcesFitted: return "aces";
-    case Tonemapper::PbrNeutral: return "neutral";
-    case Tonemapper::None: break;
-    }
-    return "none";
-}
-
-// FNV-1a over the canonical description, as the command line seals its settings.
-std::string hashHex(const std::string& text) {
-    std::uint64_t h = 1469598103934665603ull;
-    for (unsigned char c : text) h = (h ^ c) * 1099511628211ull;
-    char buf[17];
-    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-    return buf;
-}
-
-void seal(renderer::ImageMetadata& metadata) {
-    std::string canonical;
-    for (const auto& [k, v] : metadata)
-        if (k != "settingsHash" && k != "renderTimeMs" && k != "version") canonical += k + "=" + v + ";";
-    metadata["settingsHash"] = hashHex(canonical);
-}
-
-// The request and metadata `glint render --size --spp --config --seed [--camera]` makes.
+// The request and metadata `glint render --size --spp --config --seed [--camera]` makes: the same
+// planner as the command line's, so both describe and hash the same settings alike.
 ExportFrame planBase(const Scene& scene, const ExportSettings& s) {
-    const RenderSettings& project = scene.settings.render;
+    renderer::RenderOverrides overrides;
+    overrides.size = renderer::ImageSize{s.width, s.height};
+    overrides.spp = s.spp;
+    overrides.seed = s.seed;
+    overrides.config = s.configuration;
+    if (!s.camera.empty()) overrides.camera = s.camera;
+    renderer::RenderPlan plan = renderer::planRender(scene, s.sceneFile, overrides);
     ExportFrame f;
-    auto& r = f.request;
-    r.width = s.width;
-    r.height = s.height;
-    r.spp = s.spp;
-    r.seed = s.seed;
-    r.bounces = project.bounces;
-    r.cameraName = s.camera;
-    r.exposure = float(project.exposure + 0.0f);
-    r.sceneFolder = s.sceneFile.parent_path();
-    r.clamp = project.clamp;
-    const auto configuration = renderer::parseConfiguration(s.configuration);
-    if (!configuration)
-        throw std::runtime_error("unknown configuration '" + s.configuration + "' (use one of " + renderer::configurationNames() + ")");
-    r.configuration = *configuration;
-    const float cameraExposure = renderer::resolveCamera(scene, r.cameraName, r.width, r.height).exposure;
-    f.metadata = {{"scene", s.sceneFile.filename().string()},
-                  {"camera", r.cameraName.empty() ? "(active)" : r.cameraName},
-                  {"spp", std::to_string(r.spp)},
-                  {"seed", std::to_string(r.seed)},
-                  {"configuration", std::string(renderer::configurationName(r.configuration))},
-                  {"size", std::to_string(r.width) + "x" + std::to_string(r.height)},
-                  {"bounces", std::to_string(r.bounces)},
-                  {"clamp", formatNumber(r.clamp)},
-                  {"env", ""},
-                  {"tonemap", tonemapperName(project.tonemapper)},
-                  {"exposureEv", formatNumber(double(cameraExposure) + double(r.exposure))}};
+    f.request = std::move(plan.request);
+    f.metadata = std::move(plan.metadata);
     return f;
 }
 
 } // namespace
-
-std::string formatNumber(double value) {
-    char buf[32];
-    auto [end, ec] = std::to_chars(buf, buf + sizeof buf, value);
-    return ec == std::errc() ? std::string(buf, end) : std::string("nan");
-}
 
 double exportFrameTime(const Scene& scene, const ExportSettings& s, int frame) {
     return scene.settings.timeline.start + double(frame) * double(s.fpsDenominator) / double(s.fpsNumerator);
@@ -101,7 +50,7 @@ std::vector<ExportFrame> planExport(const Scene& scene, const ExportSettings& s)
         f.time = s.time;
         if (s.time) f.metadata["time"] = formatNumber(*s.time);
         if (exr) f.metadata["aovs"] = s.aovs;
-        seal(f.metadata);
+        renderer::sealSettings(f.metadata);
         frames.push_back(std::move(f));
         return frames;
     }
@@ -119,7 +68,7 @@ std::vector<ExportFrame> planExport(const Scene& scene, const ExportSettings& s)
         f.metadata["fps"] = std::to_string(s.fpsNumerator) + "/" + std::to_string(s.fpsDenominator);
         f.metadata["time"] = formatNumber(*f.time);
         if (exr) f.metadata["aovs"] = s.aovs;
-        seal(f.metadata);
+        renderer::sealSettings(f.metadata);
         frames.push_back(std::move(f));
     }
     return frames;

@@ -6,6 +6,7 @@
 #include "editor/export/export_settings.h"
 #include "renderer/offline_render.h"
 #include "renderer/output/image_files.h"
+#include "renderer/output/render_plan.h"
 #include "scene/core/scene.h"
 
 #include <cstdint>
@@ -32,7 +33,6 @@ std::vector<ExportFrame> planExport(const Scene& scene, const ExportSettings& se
 double exportFrameTime(const Scene& scene, const ExportSettings& settings, int frame);
 // "shot_####.exr" with frame 7 -> "shot_0007.exr" (at least as many digits as '#').
 std::filesystem::path framePath(const std::filesystem::path& pattern, int frame);
-// The shortest locale-independent decimal form, as the command line writes numbers.
-std::string formatNumber(double value);
+using renderer::formatNumber; // the shortest locale-independent decimal form, as the command line writes
 
 } // namespace glint::editor

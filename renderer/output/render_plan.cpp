@@ -1,0 +1,96 @@
+#include "renderer/output/render_plan.h"
+
+#include "renderer/configuration.h"
+#include "renderer/gpu_scene/camera_setup.h"
+
+#include <charconv>
+#include <cstdio>
+#include <stdexcept>
+
+namespace glint::renderer {
+
+namespace {
+
+const char* tonemapperName(Tonemapper t) {
+    switch (t) {
+    case Tonemapper::AcesFitted: return "aces";
+    case Tonemapper::PbrNeutral: return "neutral";
+    case Tonemapper::None: break;
+    }
+    return "none";
+}
+
+std::optional<Tonemapper> tonemapperFromName(const std::optional<std::string>& name) {
+    if (!name) return std::nullopt;
+    if (*name == "aces") return Tonemapper::AcesFitted;
+    if (*name == "neutral") return Tonemapper::PbrNeutral;
+    return Tonemapper::None;
+}
+
+// FNV-1a over the canonical description: the same settings give the same hash on every machine.
+std::string hashHex(const std::string& text) {
+    std::uint64_t h = 1469598103934665603ull;
+    for (unsigned char c : text) h = (h ^ c) * 1099511628211ull;
+    char buf[17];
+    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+    return buf;
+}
+
+Configuration configurationOf(const Scene& scene, const RenderOverrides& o) {
+    const std::string config = o.config.value_or(scene.settings.render.configuration);
+    const auto parsed = parseConfiguration(config);
+    if (!parsed) throw std::runtime_error("unknown configuration '" + config + "' (use one of " + configurationNames() + ")");
+    return *parsed;
+}
+
+} // namespace
+
+void sealSettings(ImageMetadata& metadata) {
+    std::string canonical;
+    for (const auto& [k, v] : metadata)
+        if (k != "settingsHash" && k != "renderTimeMs" && k != "version") canonical += k + "=" + v + ";";
+    metadata["settingsHash"] = hashHex(canonical);
+}
+
+std::string formatNumber(double value) {
+    char buf[32];
+    auto [end, ec] = std::to_chars(buf, buf + sizeof buf, value);
+    return ec == std::errc() ? std::string(buf, end) : std::string("nan");
+}
+
+RenderPlan planRender(const Scene& scene, const std::filesystem::path& sceneFile, const RenderOverrides& o) {
+    const RenderSettings& project = scene.settings.render;
+    RenderPlan plan;
+    auto& r = plan.request;
+    r.width = o.size ? o.size->width : project.width;
+    r.height = o.size ? o.size->height : project.height;
+    r.spp = o.spp.value_or(project.spp);
+    r.seed = o.seed;
+    r.bounces = o.bounces.value_or(project.bounces);
+    r.cameraName = o.camera.value_or("");
+    r.exposure = float(project.exposure + o.exposure);
+    r.tonemapper = tonemapperFromName(o.tonemap);
+    r.envFile = o.env.value_or("");
+    r.sceneFolder = sceneFile.parent_path();
+    r.requireGpu = o.requireGpu;
+    r.clamp = project.clamp;
+    r.configuration = configurationOf(scene, o);
+
+    const Tonemapper tonemapper = r.tonemapper.value_or(project.tonemapper);
+    // The camera's own exposure is part of what the PNG shows and what `glint encode` applies to EXRs.
+    const float cameraExposure = resolveCamera(scene, r.cameraName, r.width, r.height).exposure;
+    plan.metadata = {{"scene", sceneFile.filename().string()},
+                     {"camera", r.cameraName.empty() ? "(active)" : r.cameraName},
+                     {"spp", std::to_string(r.spp)},
+                     {"seed", std::to_string(r.seed)},
+                     {"configuration", std::string(configurationName(r.configuration))},
+                     {"size", std::to_string(r.width) + "x" + std::to_string(r.height)},
+                     {"bounces", std::to_string(r.bounces)},
+                     {"clamp", formatNumber(r.clamp)},
+                     {"env", r.envFile.string()},
+                     {"tonemap", tonemapperName(tonemapper)},
+                     {"exposureEv", formatNumber(double(cameraExposure) + double(r.exposure))}};
+    return plan;
+}
+
+} // namespace glint::renderer
