@@ -162,6 +162,9 @@ void writeRenderImage(const std::filesystem::path& file, const RenderOutput& img
     // the settings hash in every format, so --resume works alike for all of them.
     if (auto hash = metadata.find("settingsHash"); hash != metadata.end())
         spec.attribute("ImageDescription", kSettingsHashPrefix + hash->second);
+    // OpenImageIO stamps the wall-clock time into an EXR that names none (capDate), which would make
+    // two identical renders differ; the render time is recorded, and allowed to differ, on its own.
+    if (format == ImageFormat::Exr) spec.attribute("DateTime", "");
     try {
         writeWithOiio(file, temp, spec, format == ImageFormat::Exr ? static_cast<const void*>(planes.pixels.data())
                                                                      : static_cast<const void*>(img.tonemapped.data()));

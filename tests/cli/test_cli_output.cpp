@@ -87,6 +87,15 @@ private slots:
         QCOMPARE(runGlint({"render", cornell, "--out", other, "--size", "16x16", "--spp", "3"}).exitCode, 0);
         QCOMPARE(glintAttr(probeImage(again), "settingsHash"), glintAttr(image, "settingsHash"));
         QVERIFY(glintAttr(probeImage(other), "settingsHash") != glintAttr(image, "settingsHash"));
+
+        // The render time is the only header entry that may differ between identical renders
+        // (CONTRACTS.md): no wall-clock date may leak in.
+        std::map<std::string, std::string> first = image.attributes, second = probeImage(again).attributes;
+        first.erase("glint:renderTimeMs");
+        second.erase("glint:renderTimeMs");
+        QVERIFY(!first.contains("DateTime"));
+        QVERIFY(first == second);
+        QCOMPARE(probeImage(again).pixels, image.pixels);
     }
 
     void aovListSelectsLayers() {
