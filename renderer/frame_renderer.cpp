@@ -100,6 +100,21 @@ bool sameCamera(const CameraSetup& a, const CameraSetup& b) {
            a.lensRadius == b.lensRadius && a.focusDistance == b.focusDistance;
 }
 
+// Whether `changes` leave the visible nodes, meshes, materials, textures and environment as they
+// were, so that GpuScene::updateTransforms is enough.
+bool onlyTransformsOrLights(const ChangeSet& changes) {
+    const std::uint32_t enough = static_cast<std::uint32_t>(Change::Transform) | static_cast<std::uint32_t>(Change::Light) |
+            static_cast<std::uint32_t>(Change::Camera) | static_cast<std::uint32_t>(Change::Animation) |
+            static_cast<std::uint32_t>(Change::Display) | static_cast<std::uint32_t>(Change::Name) |
+            static_cast<std::uint32_t>(Change::Project);
+    return (changes.flags & ~enough) == 0;
+}
+
+// Material content alone: no image was re-encoded, nothing else changed.
+bool onlyMaterials(const ChangeSet& changes) {
+    return changes.flags == static_cast<std::uint32_t>(Change::Material) && changes.images.empty();
+}
+
 // World transforms of the nodes that carry geometry, for per-instance motion vectors.
 std::map<NodeId, glm::mat4> instanceTransforms(const Scene& scene) {
     std::map<NodeId, glm::mat4> transforms;
@@ -151,6 +166,7 @@ struct FrameRenderer::State {
     Scene document;
     Scene posed; // the document at `time`
     std::filesystem::path environmentFile;
+    MeshBvhCache meshCache; // mesh BVHs survive uploads: only changed meshes are rebuilt
     std::unique_ptr<GpuScene> gpu;
     double time = 0.0;
     bool followSceneCamera = false;
@@ -169,7 +185,13 @@ struct FrameRenderer::State {
     const gl::RenderTarget* result = nullptr; // linear radiance of the last frame (attachment 0)
 
     void upload() {
-        gpu = std::make_unique<GpuScene>(posed, environmentFile);
+        gpu = std::make_unique<GpuScene>(posed, environmentFile, meshCache);
+        instances = instanceTransforms(posed);
+    }
+    // Transforms (node animations included) and light parameters: shapes, lights, the top-level
+    // BVH and the emissive triangles are re-uploaded; mesh BVHs, textures and materials stay.
+    void uploadTransforms() {
+        gpu->updateTransforms(posed);
         instances = instanceTransforms(posed);
     }
     void pose() { posed = hasAnimation(document) ? sceneAt(document, time) : document; }
@@ -251,9 +273,10 @@ void FrameRenderer::applyChanges(const Scene& scene, const ChangeSet& changes) {
     if (!affectsImage(changes)) return;
     CallerGlState guard;
     s.pose();
-    // GpuScene has no partial upload yet: every image change re-uploads it, and history survives
-    // everything but settings changes (moving and re-lit objects are reprojected and clipped).
-    s.upload();
+    // Upload what the change names: transforms and lights alone keep meshes, materials, textures
+    // and the environment; anything else rebuilds the GPU scene, reusing unchanged mesh BVHs.
+    if (s.gpu && onlyTransformsOrLights(changes)) s.uploadTransforms();
+    else if (!(s.gpu && onlyMaterials(changes) && s.gpu->updateMaterials(s.posed))) s.upload();
     s.pictureChanged = true;
     // Lighting edits drop the history: reprojected history would keep the old light for ~17 frames
     // (docs/DENOISING.md); a few noisy frames after an edit are the lesser evil. Moves keep it.
@@ -290,7 +313,8 @@ void FrameRenderer::setTime(double seconds) {
     if (!hasAnimation(s.document)) return;
     CallerGlState guard;
     s.pose();
-    s.upload();
+    if (s.gpu) s.uploadTransforms(); // animations move nodes (and cameras) only
+    else s.upload();
     s.pictureChanged = true;
 }
 

@@ -65,9 +65,9 @@ public:
     // Full upload. `environmentFile`: an equirectangular image or empty (the project's colour).
     // Throws std::runtime_error when the scene exceeds GPU limits or a file cannot be read.
     void setScene(const Scene& scene, const std::filesystem::path& environmentFile = {});
-    // Resets accumulation only if the picture changes (affectsImage). Until GpuScene uploads in
-    // parts, every image change re-uploads the whole scene, environment image included: keep
-    // continuous edits (gizmo drags) to one call per frame.
+    // Resets accumulation only if the picture changes (affectsImage). Transform and light edits
+    // re-upload shapes, lights and the top-level BVH alone; other image changes rebuild the GPU
+    // scene, reusing the BVHs of unchanged meshes.
     void applyChanges(const Scene& scene, const ChangeSet& changes);
     void setSettings(const FrameSettings& settings); // display-only changes keep all history
     void setCamera(const CameraSetup& camera);       // a moving camera keeps reprojected history

@@ -3,7 +3,7 @@
 // bvh_layout.h), per-vertex shading normals, and the emissive triangles for light sampling.
 #include "renderer/gl/shader_program.h"
 #include "renderer/gl/texture_buffer.h"
-#include "renderer/gpu_scene/emissive_triangles.h"
+#include "renderer/gpu_scene/mesh_data.h"
 #include "scene/core/scene.h"
 
 #include <map>
@@ -17,8 +17,15 @@ public:
     // `materialIndex`: the renderer's material table. `texturing`: upload UVs, tangents and COLOR_0
     // beside the normals (the HAS_TEXTURES layout). Throws std::runtime_error when the BVH is invalid
     // or exceeds GL_MAX_TEXTURE_BUFFER_SIZE.
-    GpuMeshes(const Scene& scene, const std::map<MaterialId, int>& materialIndex, bool texturing = false);
+    // `cache`: mesh BVHs kept across uploads (only meshes whose content changed are rebuilt).
+    GpuMeshes(const Scene& scene, const std::map<MaterialId, int>& materialIndex, bool texturing, MeshBvhCache& cache);
     ~GpuMeshes();
+    // After a transform-only change: rebuilds the top level and the emissive triangles and uploads
+    // the node, instance and emissive buffers; mesh BVHs and vertex buffers stay as they are.
+    void updateTransforms(const Scene& scene, const std::map<MaterialId, int>& materialIndex);
+    // After a material-only change: re-uploads the emissive triangles alone.
+    void updateEmission(const Scene& scene, const std::map<MaterialId, int>& materialIndex);
+    const MeshData& data() const { return data_; }
 
     bool empty() const { return triangleCount_ == 0; }
     std::size_t triangleCount() const { return triangleCount_; }
@@ -26,7 +33,10 @@ public:
     void bind(const gl::ShaderProgram& program, GLuint firstUnit) const;
 
 private:
+    void setCounts();
+
     struct Buffers;
+    MeshData data_;
     std::unique_ptr<Buffers> buffers_;
     std::size_t triangleCount_ = 0;
     int topLevelRoot_ = -1;

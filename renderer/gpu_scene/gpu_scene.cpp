@@ -71,17 +71,19 @@ gl::Defines SceneFeatures::defines() const {
     return defines;
 }
 
-GpuScene::GpuScene(const Scene& scene, const std::filesystem::path& environmentFile)
-    : GpuScene(scene, environmentFile, sceneTextures(scene)) {}
+GpuScene::GpuScene(const Scene& scene, const std::filesystem::path& environmentFile, MeshBvhCache& meshCache)
+    : GpuScene(scene, environmentFile, sceneTextures(scene), meshCache) {}
 
-GpuScene::GpuScene(const Scene& scene, const std::filesystem::path& environmentFile, TextureSet textures)
+GpuScene::GpuScene(const Scene& scene, const std::filesystem::path& environmentFile, TextureSet textures, MeshBvhCache& meshCache)
     : packed_(packScene(scene, &textures)),
       environment_(scene.settings.environment),
       shapes_(vec4Buffer("the shape buffer", packed_.shapes)),
       materials_(vec4Buffer("the material buffer", packed_.materials)),
       lights_(vec4Buffer("the light buffer", packed_.lights)),
-      meshes_(scene, packed_.materialIndex, !textures.empty() || meshesHaveColors(scene)),
+      meshes_(scene, packed_.materialIndex, !textures.empty() || meshesHaveColors(scene), meshCache),
       textureArrays_(textures),
+      textureSlots_{{}, textures.slotOf, {}},
+      texturesUsed_(texturesUsed(scene, meshMaterials(scene))),
       warnings_(std::move(textures.warnings)) {
     features_.meshes = !meshes_.empty();
     addMeshMaterialFeatures(scene, features_);
@@ -95,6 +97,33 @@ GpuScene::GpuScene(const Scene& scene, const std::filesystem::path& environmentF
         environmentSize_ = {image.width, image.height};
         features_.environmentMap = true;
     }
+}
+
+void GpuScene::updateTransforms(const Scene& scene) {
+    // Shapes and lights carry world transforms; materials (and so texture references) did not
+    // change, so they are packed without the texture set and left out of the upload.
+    PackedScene moved = packScene(scene);
+    packed_.shapes = std::move(moved.shapes);
+    packed_.lights = std::move(moved.lights);
+    packed_.shapeCount = moved.shapeCount;
+    packed_.lightCount = moved.lightCount;
+    shapes_ = vec4Buffer("the shape buffer", packed_.shapes);
+    lights_ = vec4Buffer("the light buffer", packed_.lights);
+    meshes_.updateTransforms(scene, packed_.materialIndex);
+}
+
+bool GpuScene::updateMaterials(const Scene& scene) {
+    if (texturesUsed(scene, meshMaterials(scene)) != texturesUsed_) return false; // another texture set
+    SceneFeatures features = features_;
+    features.alpha = features.singleSided = false;
+    addMeshMaterialFeatures(scene, features);
+    if (features.alpha != features_.alpha || features.singleSided != features_.singleSided) return false; // another variant
+    PackedScene repacked = packScene(scene, &textureSlots_);
+    if (repacked.materialIndex != packed_.materialIndex || repacked.shapes != packed_.shapes) return false;
+    packed_.materials = std::move(repacked.materials);
+    materials_ = vec4Buffer("the material buffer", packed_.materials);
+    meshes_.updateEmission(scene, packed_.materialIndex);
+    return true;
 }
 
 void GpuScene::bind(const gl::ShaderProgram& program) const {

@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <set>
 
 namespace glint::renderer {
 
@@ -26,7 +27,20 @@ struct SceneFeatures {
 class GpuScene {
 public:
     // `environmentFile`: an equirectangular image, or empty for the project's uniform colour.
-    GpuScene(const Scene& scene, const std::filesystem::path& environmentFile);
+    // `meshCache`: mesh BVHs kept across uploads; meshes whose content is unchanged are not rebuilt.
+    GpuScene(const Scene& scene, const std::filesystem::path& environmentFile, MeshBvhCache& meshCache);
+
+    // After a change of transforms alone (same visible nodes, meshes, materials, lights and
+    // environment): re-uploads the shape and light buffers, the top-level BVH, the instance table
+    // and the emissive triangles; mesh BVHs, vertex data, materials, textures and environment stay.
+    // Gives the bytes a full upload of `scene` would.
+    void updateTransforms(const Scene& scene);
+    // After a change of material content alone (no image content changed): when the materials
+    // sample the same images and need the same shader variant, re-uploads the material buffer and
+    // the emissive triangles and returns true; false: nothing was done, a full upload is needed.
+    bool updateMaterials(const Scene& scene);
+    const GpuMeshes& meshes() const { return meshes_; }
+    const PackedScene& packed() const { return packed_; }
 
     const SceneFeatures& features() const { return features_; }
     // Problems that did not stop the upload (missing or undecodable textures, resampled sizes).
@@ -36,7 +50,7 @@ public:
     void bind(const gl::ShaderProgram& program) const;
 
 private:
-    GpuScene(const Scene& scene, const std::filesystem::path& environmentFile, TextureSet textures);
+    GpuScene(const Scene& scene, const std::filesystem::path& environmentFile, TextureSet textures, MeshBvhCache& meshCache);
 
     SceneFeatures features_;
     PackedScene packed_;
@@ -49,6 +63,8 @@ private:
     gl::Texture environmentCdf_; // renderer/cpu_twin/env_sampling.h layout
     glm::ivec2 environmentSize_{0};
     TextureArrays textureArrays_;
+    TextureSet textureSlots_; // where each image lives (no pixels): material records point there
+    std::set<std::pair<ImageId, bool>> texturesUsed_;
     std::vector<std::string> warnings_;
 };
 

@@ -37,23 +37,6 @@ std::pair<TextureLevel, std::string> decodeBase(const Scene& scene, ImageId id, 
     return {std::move(level), {}};
 }
 
-// The (image, colour space) pairs that `materials` sample, in a fixed order.
-std::set<Use> texturesUsed(const Scene& scene, const std::set<MaterialId>& materials) {
-    std::set<Use> uses;
-    const auto add = [&](const TextureRef& ref, bool srgb) {
-        if (ref.valid() && scene.textures.contains(ref.texture)) uses.insert({scene.textures.at(ref.texture).image, srgb});
-    };
-    for (const MaterialId id : materials) {
-        if (!scene.materials.contains(id)) continue;
-        const Material& m = scene.materials.at(id);
-        add(m.baseColorTexture, true);
-        add(m.emissiveTexture, true);
-        add(m.metallicRoughnessTexture, false);
-        add(m.normalTexture, false);
-    }
-    return uses;
-}
-
 struct Group {
     bool srgb;
     int width, height;
@@ -99,6 +82,22 @@ std::set<MaterialId> meshMaterials(const Scene& scene) {
         for (const Primitive& p : scene.meshes.at(instance->mesh).primitives) used.insert(p.material);
     }
     return used;
+}
+
+std::set<std::pair<ImageId, bool>> texturesUsed(const Scene& scene, const std::set<MaterialId>& materials) {
+    std::set<Use> uses;
+    const auto add = [&](const TextureRef& ref, bool srgb) {
+        if (ref.valid() && scene.textures.contains(ref.texture)) uses.insert({scene.textures.at(ref.texture).image, srgb});
+    };
+    for (const MaterialId id : materials) {
+        if (!scene.materials.contains(id)) continue;
+        const Material& m = scene.materials.at(id);
+        add(m.baseColorTexture, true);
+        add(m.emissiveTexture, true);
+        add(m.metallicRoughnessTexture, false);
+        add(m.normalTexture, false);
+    }
+    return uses;
 }
 
 TextureSet buildTextureSet(const Scene& scene, const std::set<MaterialId>& materials, const ImageDecoder& decoder,

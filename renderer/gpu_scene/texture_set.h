@@ -48,6 +48,10 @@ struct TextureSet {
 // Materials that visible mesh primitives use: only meshes carry texture coordinates.
 std::set<MaterialId> meshMaterials(const Scene& scene);
 
+// The (image, sRGB) pairs that `materials` sample: when it is unchanged, a material edit needs no
+// new texture set (only new material records).
+std::set<std::pair<ImageId, bool>> texturesUsed(const Scene& scene, const std::set<MaterialId>& materials);
+
 // Textures that the path tracer samples for `materials` (base colour, metallic-roughness, normal,
 // emissive). Missing or undecodable images: an 8x8 magenta/black checker for colour data, nothing
 // (the factor alone) for linear data, and a warning either way. Throws std::runtime_error when a

@@ -1,0 +1,132 @@
+#include "renderer/gpu_scene/mesh_data.h"
+
+#include "renderer/bvh/bvh_layout.h"
+#include "renderer/bvh/mesh_bvh.h"
+#include "renderer/gpu_scene/visibility.h"
+
+#include <algorithm>
+
+namespace glint::renderer {
+namespace {
+
+bool sameInput(const bvh::MeshTriangles& a, const bvh::MeshTriangles& b) {
+    return a.positions == b.positions && a.triangles == b.triangles && a.materials == b.materials;
+}
+
+// Visible mesh instances by mesh id, each mesh's users in depth-first order.
+std::map<MeshId, std::vector<NodeId>> meshUsers(const Scene& scene) {
+    std::map<MeshId, std::vector<NodeId>> users;
+    for (const NodeId id : scene.depthFirst()) {
+        const Node& node = scene.at(id);
+        if (const auto* instance = node.get<MeshInstance>(); instance && visibleInWorld(scene, node) && scene.meshes.contains(instance->mesh))
+            users[instance->mesh].push_back(id);
+    }
+    return users;
+}
+
+// The instances of the meshes in `ids` (BVH index order), with the scene's current transforms.
+std::vector<bvh::Instance> meshInstances(const Scene& scene, const std::vector<MeshId>& ids) {
+    const auto users = meshUsers(scene);
+    std::vector<bvh::Instance> instances;
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+        const auto it = users.find(ids[i]);
+        if (it == users.end()) continue;
+        for (const NodeId node : it->second)
+            instances.push_back({scene.worldFromNode(node), bvh::kInstanceMesh, static_cast<std::uint32_t>(i), node.value, {}});
+    }
+    return instances;
+}
+
+// Vertex data in the vertex order of FlatScene::meshes: the normal (zero where a primitive has
+// none); with `texturing` also (uv0, uv1), the tangent (zero: none) and COLOR_0 (white: none), the
+// layout of shaders/pathtrace/meshes.glsl.
+std::vector<glm::vec4> vertexTexels(const Scene& scene, const std::vector<MeshId>& ids, bool texturing) {
+    std::vector<glm::vec4> texels;
+    for (const MeshId id : ids)
+        for (const Primitive& p : scene.meshes.at(id).primitives)
+            for (std::size_t v = 0; v < p.positions.size(); ++v) {
+                texels.push_back(glm::vec4(v < p.normals.size() ? p.normals[v] : glm::vec3(0.0f), 0.0f));
+                if (!texturing) continue;
+                texels.push_back({v < p.uv0.size() ? p.uv0[v] : glm::vec2(0.0f), v < p.uv1.size() ? p.uv1[v] : glm::vec2(0.0f)});
+                texels.push_back(v < p.tangents.size() ? p.tangents[v] : glm::vec4(0.0f));
+                texels.push_back(v < p.colors.size() ? p.colors[v] : glm::vec4(1.0f));
+            }
+    return texels;
+}
+
+// Emission that light sampling assumes: the factors. Emissive-textured materials are left to BSDF
+// sampling (shaders/pathtrace/material.glsl), since a factor would misstate their texels.
+glm::vec3 sampledEmission(const Scene& scene, const Material& m) {
+    if (m.emissiveTexture.valid() && scene.textures.contains(m.emissiveTexture.texture)) return glm::vec3(0.0f);
+    return m.emissiveFactor * m.emissiveStrength;
+}
+
+EmissiveTriangles emissiveTriangles(const Scene& scene, const MeshData& data, const std::map<MaterialId, int>& materialIndex) {
+    std::vector<glm::vec3> emissionOf(materialIndex.size() + 1, glm::vec3(0.0f));
+    for (const auto& [id, index] : materialIndex) {
+        emissionOf[static_cast<std::size_t>(index)] = sampledEmission(scene, scene.materials.at(id));
+    }
+    EmissiveTriangles lights;
+    for (const bvh::Instance& instance : data.instances) {
+        const bvh::MeshTriangles& mesh = data.bvhs[instance.target].triangles;
+        for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+            const glm::vec3 emission = emissionOf.at(mesh.materials[t]);
+            if (emission == glm::vec3(0.0f)) continue;
+            const auto world = [&](std::uint32_t v) { return glm::vec3(instance.worldFromLocal * glm::vec4(mesh.positions[v], 1.0f)); };
+            lights.add(world(mesh.triangles[t].x), world(mesh.triangles[t].y), world(mesh.triangles[t].z), emission);
+        }
+    }
+    lights.finish();
+    return lights;
+}
+
+} // namespace
+
+const bvh::MeshBvh& MeshBvhCache::get(MeshId mesh, bvh::MeshTriangles triangles) {
+    const auto it = entries_.find(mesh);
+    if (it != entries_.end() && sameInput(it->second.input, triangles)) return it->second.bvh;
+    ++builds_;
+    bvh::MeshBvh built = bvh::buildMeshBvh(triangles, bvh::BuildOptions{});
+    Entry& entry = entries_[mesh];
+    entry = Entry{std::move(triangles), std::move(built)};
+    return entry.bvh;
+}
+
+void MeshBvhCache::keepOnly(const std::vector<MeshId>& used) {
+    std::erase_if(entries_, [&](const auto& entry) { return std::find(used.begin(), used.end(), entry.first) == used.end(); });
+}
+
+MeshData buildMeshData(const Scene& scene, const std::map<MaterialId, int>& materialIndex, bool texturing, MeshBvhCache& cache) {
+    const auto indexOf = [&](MaterialId id) {
+        const auto it = materialIndex.find(id);
+        return static_cast<std::uint32_t>(it == materialIndex.end() ? 0 : it->second);
+    };
+    MeshData data;
+    for (const auto& [meshId, nodes] : meshUsers(scene)) {
+        auto triangles = bvh::trianglesFromMesh(scene.meshes.at(meshId), indexOf);
+        if (triangles.triangleCount() == 0) continue;
+        data.bvhs.push_back(cache.get(meshId, std::move(triangles)));
+        data.ids.push_back(meshId);
+    }
+    cache.keepOnly(data.ids);
+    data.instances = meshInstances(scene, data.ids);
+    if (data.instances.empty()) return data;
+    data.flat = bvh::flattenScene(data.bvhs, bvh::buildTopLevel(data.instances, data.bvhs));
+    data.vertexTexels = vertexTexels(scene, data.ids, texturing);
+    data.lights = emissiveTriangles(scene, data, materialIndex);
+    return data;
+}
+
+void updateMeshTransforms(MeshData& data, const Scene& scene, const std::map<MaterialId, int>& materialIndex) {
+    data.instances = meshInstances(scene, data.ids);
+    if (data.instances.empty()) return;
+    const bvh::TopLevel topLevel = bvh::buildTopLevel(data.instances, data.bvhs);
+    bvh::replaceTopLevel(data.flat, bvh::flattenTopLevel(topLevel, data.flat.meshes, data.flat.meshNodeCount));
+    data.lights = emissiveTriangles(scene, data, materialIndex);
+}
+
+void updateMeshEmission(MeshData& data, const Scene& scene, const std::map<MaterialId, int>& materialIndex) {
+    if (!data.instances.empty()) data.lights = emissiveTriangles(scene, data, materialIndex);
+}
+
+} // namespace glint::renderer
