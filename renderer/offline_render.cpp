@@ -23,12 +23,6 @@ double millisecondsSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-std::filesystem::path environmentPath(const Scene& scene, const RenderRequest& request) {
-    if (!request.envFile.empty()) return request.envFile;
-    const std::string& file = scene.settings.environment.file;
-    return file.empty() ? std::filesystem::path() : request.sceneFolder / file;
-}
-
 void validate(const RenderRequest& request) {
     if (request.width <= 0 || request.height <= 0) throw std::runtime_error("the image size must be positive");
     if (request.spp <= 0) throw std::runtime_error("samples per pixel must be at least 1");
@@ -36,10 +30,18 @@ void validate(const RenderRequest& request) {
     if (request.frames <= 0) throw std::runtime_error("frames must be at least 1");
 }
 
-FrameSettings frameSettings(const RenderRequest& request, bool accumulate) {
+} // namespace
+
+std::filesystem::path environmentPath(const Scene& scene, const RenderRequest& request) {
+    if (!request.envFile.empty()) return request.envFile;
+    const std::string& file = scene.settings.environment.file;
+    return file.empty() ? std::filesystem::path() : request.sceneFolder / file;
+}
+
+FrameSettings frameSettingsFor(const RenderRequest& request, int sppPerFrame) {
     FrameSettings s;
     s.configuration = request.configuration;
-    s.spp = accumulate ? 1 : request.spp; // accumulation: one sample per frame, for progress
+    s.spp = sppPerFrame;
     s.bounces = request.bounces;
     s.seed = request.seed;
     s.exposure = request.exposure;
@@ -53,8 +55,6 @@ FrameSettings frameSettings(const RenderRequest& request, bool accumulate) {
     return s;
 }
 
-} // namespace
-
 OfflineRenderer::OfflineRenderer(bool requireGpu)
     : state_(std::make_unique<State>(requireGpu)) {}
 
@@ -67,7 +67,7 @@ RenderOutput OfflineRenderer::render(const Scene& scene, const RenderRequest& re
     const bool accumulate = traitsOf(request.configuration).accumulate;
     FrameRenderer& frames = state_->frames;
     const auto setupStart = Clock::now();
-    frames.setSettings(frameSettings(request, accumulate));
+    frames.setSettings(frameSettingsFor(request, accumulate ? 1 : request.spp)); // accumulation: one sample per frame, for progress
     frames.setCamera(resolveCamera(scene, request.cameraName, request.width, request.height));
     frames.setScene(scene, environmentPath(scene, request));
     frames.resetHistory();

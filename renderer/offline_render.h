@@ -66,6 +66,12 @@ private:
     std::unique_ptr<State> state_;
 };
 
+// The environment image a request renders with: --env, else the project's (relative to the scene).
+std::filesystem::path environmentPath(const Scene& scene, const RenderRequest& request);
+// The FrameRenderer settings of a request, with `sppPerFrame` samples per frame (0: the
+// configuration's own).
+FrameSettings frameSettingsFor(const RenderRequest& request, int sppPerFrame);
+
 // One render with a context of its own.
 RenderOutput renderOffline(const Scene& scene, const RenderRequest& request);
 

@@ -248,11 +248,10 @@ int runBench(const BenchOptions& o) {
         gl::HeadlessContext context;
         std::fprintf(stderr, "glint: GL_RENDERER: %s\n", context.renderer().c_str());
         renderer::FrameRenderer frames;
-        const std::string& projectEnv = scene.settings.environment.file;
-        const std::filesystem::path envFile = !o.env.empty() ? std::filesystem::path(o.env)
-                                              : projectEnv.empty() ? std::filesystem::path()
-                                                                   : std::filesystem::path(o.scene).parent_path() / projectEnv;
-        frames.setScene(scene, envFile);
+        renderer::RenderRequest environment; // --env, else the project's environment beside the scene
+        environment.envFile = o.env;
+        environment.sceneFolder = std::filesystem::path(o.scene).parent_path();
+        frames.setScene(scene, renderer::environmentPath(scene, environment));
         frames.setSettings(settingsFor(o, scene, renderer::Configuration::Reference));
         frames.useSceneCamera(o.camera);
         std::fprintf(stderr, "glint: reference: %d spp\n", o.referenceSpp);

@@ -25,26 +25,6 @@ FrameJob jobFor(const Scene& scene, const FramePattern& pattern, const Fps& fps,
     return job;
 }
 
-renderer::FrameSettings settingsFor(const RenderOptions& o, const renderer::RenderRequest& r) {
-    renderer::FrameSettings s;
-    s.configuration = r.configuration;
-    s.spp = o.common.spp.value_or(0); // 0: the configuration's own samples per frame
-    s.bounces = r.bounces;
-    s.seed = r.seed;
-    s.exposure = r.exposure;
-    s.tonemapper = r.tonemapper;
-    s.clamp = r.clamp;
-    s.width = r.width;
-    s.height = r.height;
-    return s;
-}
-
-std::filesystem::path environmentFile(const Scene& scene, const renderer::RenderRequest& r) {
-    if (!r.envFile.empty()) return r.envFile;
-    const std::string& file = scene.settings.environment.file;
-    return file.empty() ? std::filesystem::path() : r.sceneFolder / file;
-}
-
 // A chunk is kept only when every frame it writes is complete with the same settings.
 bool chunkComplete(const RenderOptions& o, const Scene& scene, const FramePattern& pattern, const Fps& fps,
                    const ChunkWork& chunk) {
@@ -81,8 +61,8 @@ int renderHistoryChunks(const RenderOptions& o, const Scene& scene, const FrameP
     gl::HeadlessContext context(gl::HeadlessContextOptions{o.common.requireGpu});
     std::fprintf(stderr, "glint: GL_RENDERER: %s\n", context.renderer().c_str());
     renderer::FrameRenderer frames;
-    frames.setSettings(settingsFor(o, base.request));
-    frames.setScene(scene, environmentFile(scene, base.request));
+    frames.setSettings(renderer::frameSettingsFor(base.request, o.common.spp.value_or(0))); // 0: the configuration's own
+    frames.setScene(scene, renderer::environmentPath(scene, base.request));
     frames.useSceneCamera(base.request.cameraName);
     for (const ChunkWork& chunk : chunks) {
         if (chunkComplete(o, scene, pattern, fps, chunk)) {
