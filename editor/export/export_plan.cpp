@@ -1,5 +1,6 @@
 #include "editor/export/export_plan.h"
 
+#include "renderer/output/frame_pattern.h"
 #include "renderer/output/render_plan.h"
 
 #include <stdexcept>
@@ -31,14 +32,7 @@ double exportFrameTime(const Scene& scene, const ExportSettings& s, int frame) {
 }
 
 std::filesystem::path framePath(const std::filesystem::path& pattern, int frame) {
-    const std::string name = pattern.filename().string();
-    const auto first = name.find('#');
-    if (first == std::string::npos) throw std::invalid_argument("the output name needs a '#' run for the frame number: " + name);
-    const auto last = name.find_first_not_of('#', first);
-    const std::size_t digits = (last == std::string::npos ? name.size() : last) - first;
-    std::string number = std::to_string(frame);
-    if (number.size() < digits) number.insert(0, digits - number.size(), '0');
-    return pattern.parent_path() / (name.substr(0, first) + number + (last == std::string::npos ? "" : name.substr(last)));
+    return renderer::parseFramePattern(pattern).frame(frame);
 }
 
 std::vector<ExportFrame> planExport(const Scene& scene, const ExportSettings& s) {

@@ -1,9 +1,9 @@
-#include "frame_pattern.h"
+#include "renderer/output/frame_pattern.h"
 
 #include <charconv>
 #include <stdexcept>
 
-namespace glint::cli {
+namespace glint::renderer {
 
 std::filesystem::path FramePattern::frame(int number) const {
     std::string digitsText = std::to_string(number);
@@ -47,4 +47,4 @@ FramePattern parseFramePattern(const std::filesystem::path& pattern) {
     return p;
 }
 
-} // namespace glint::cli
+} // namespace glint::renderer
