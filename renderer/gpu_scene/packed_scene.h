@@ -14,7 +14,7 @@ namespace glint::renderer {
 
 inline constexpr int shapeTexels = 5;
 inline constexpr int materialBaseTexels = 6; // factors, then alpha mode and sidedness
-inline constexpr int materialTexels = 18;    // base texels + 4 texture references of 3 texels
+inline constexpr int materialTexels = 30;    // base texels + 8 texture references of 3 texels (texture_refs.h)
 inline constexpr int lightTexels = 4;
 
 struct PackedScene {

@@ -10,13 +10,13 @@ gl::Texture uploadBucket(const TextureBucket& bucket) {
     gl::Texture texture = gl::makeTexture();
     glBindTexture(GL_TEXTURE_2D_ARRAY, texture.get());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    const auto levels = bucket.layers.front().size();
+    const auto levels = bucket.layers.front()->size();
     const GLint internalFormat = bucket.srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8;
     for (std::size_t level = 0; level < levels; ++level) {
-        const TextureLevel& first = bucket.layers.front()[level];
+        const TextureLevel& first = (*bucket.layers.front())[level];
         std::vector<std::uint8_t> texels;
         texels.reserve(first.rgba.size() * bucket.layers.size());
-        for (const auto& chain : bucket.layers) texels.insert(texels.end(), chain[level].rgba.begin(), chain[level].rgba.end());
+        for (const auto& chain : bucket.layers) texels.insert(texels.end(), (*chain)[level].rgba.begin(), (*chain)[level].rgba.end());
         glTexImage3D(GL_TEXTURE_2D_ARRAY, static_cast<GLint>(level), internalFormat, first.width, first.height,
                      static_cast<GLsizei>(bucket.layers.size()), 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
     }

@@ -13,6 +13,9 @@ struct TextureLevel {
     std::vector<std::uint8_t> rgba;
 };
 
+// Levels 0 .. 1x1 of one image.
+using MipChain = std::vector<TextureLevel>;
+
 // The sRGB transfer function of IEC 61966-2-1 (exact piecewise form, not a gamma of 2.2).
 float srgbToLinear(std::uint8_t encoded);
 std::uint8_t linearToSrgb8(float linear); // rounded to the nearest code

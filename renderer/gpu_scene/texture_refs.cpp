@@ -35,21 +35,54 @@ void appendTextureRef(std::vector<glm::vec4>& out, const TextureRef& ref, Textur
     out.push_back({t.offset.x, t.offset.y, ref.scale, 0.0f});
 }
 
+namespace {
+
+// Where the image of `ref` lives in `textures` (no slot when anything is missing).
+TextureSlot refSlot(const Scene* scene, const TextureRef& ref, bool srgb, const TextureSet* textures) {
+    if (!scene || !textures || !ref.valid() || !scene->textures.contains(ref.texture)) return {};
+    return textures->find(scene->textures.at(ref.texture).image, srgb);
+}
+
+} // namespace
+
 void appendMaterialTextureRefs(std::vector<glm::vec4>& out, const Scene* scene, const Material& m, const TextureSet* textures) {
     const auto add = [&](const TextureRef& ref, bool srgb) {
-        TextureSlot slot;
         Sampler sampler;
-        if (scene && textures && ref.valid() && scene->textures.contains(ref.texture)) {
+        if (scene && ref.valid() && scene->textures.contains(ref.texture)) {
             const Texture& texture = scene->textures.at(ref.texture);
-            slot = textures->find(texture.image, srgb);
             if (scene->samplers.contains(texture.sampler)) sampler = scene->samplers.at(texture.sampler);
         }
-        appendTextureRef(out, ref, slot, sampler);
+        appendTextureRef(out, ref, refSlot(scene, ref, srgb, textures), sampler);
     };
     add(m.baseColorTexture, true);
     add(m.metallicRoughnessTexture, false);
     add(m.normalTexture, false);
     add(m.emissiveTexture, true);
+    add(m.specularTexture, false);
+    add(m.specularColorTexture, true);
+    add(m.transmissionTexture, false);
+    add(m.thicknessTexture, false);
+}
+
+unsigned extensionTexturesUsed(const Scene& scene, const std::set<MaterialId>& materials, const TextureSet& textures) {
+    unsigned mask = 0;
+    const auto has = [&](const TextureRef& ref, bool srgb) { return refSlot(&scene, ref, srgb, &textures).bucket >= 0; };
+    for (const MaterialId id : materials) {
+        if (!scene.materials.contains(id)) continue;
+        const Material& m = scene.materials.at(id);
+        if (has(m.specularTexture, false) || has(m.specularColorTexture, true)) mask |= specularTextureBit;
+        if (has(m.transmissionTexture, false)) mask |= transmissionTextureBit;
+        if (has(m.thicknessTexture, false)) mask |= thicknessTextureBit;
+    }
+    return mask;
+}
+
+std::vector<std::string> extensionTextureDefines(unsigned mask) {
+    std::vector<std::string> names;
+    if (mask & specularTextureBit) names.push_back("HAS_SPECULAR_TEXTURES");
+    if (mask & transmissionTextureBit) names.push_back("HAS_TRANSMISSION_TEXTURES");
+    if (mask & thicknessTextureBit) names.push_back("HAS_THICKNESS_TEXTURES");
+    return names;
 }
 
 } // namespace glint::renderer

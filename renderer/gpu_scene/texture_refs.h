@@ -7,13 +7,24 @@
 
 #include <glm/glm.hpp>
 
+#include <set>
+#include <string>
 #include <vector>
 
 namespace glint::renderer {
 
 inline constexpr int textureRefTexels = 3;
 // Order of the references in a material record (TEXREF_* in the shader).
-enum TextureRefIndex { baseColorRef = 0, metallicRoughnessRef = 1, normalRef = 2, emissiveRef = 3, textureRefCount = 4 };
+enum TextureRefIndex {
+    baseColorRef = 0, metallicRoughnessRef = 1, normalRef = 2, emissiveRef = 3,
+    specularRef = 4, specularColorRef = 5, transmissionRef = 6, thicknessRef = 7, // KHR_materials_* textures
+    textureRefCount = 8
+};
+
+// Textures of the KHR_materials_* extensions that a scene samples, each a shader variant of its
+// own (HAS_SPECULAR_TEXTURES, HAS_TRANSMISSION_TEXTURES, HAS_THICKNESS_TEXTURES): a scene without
+// them runs no code for them.
+enum ExtensionTextureBits : unsigned { specularTextureBit = 1u, transmissionTextureBit = 2u, thicknessTextureBit = 4u };
 
 // Flags texel value: wrapS + 3 wrapT (0 repeat, 1 clamp, 2 mirrored repeat) + 9 nearest magnification
 // + 18 nearest minification + 36 mipmapped minification.
@@ -23,8 +34,14 @@ float samplerFlags(const Sampler& sampler);
 // uv' = (a u + b v + tx, c u + d v + ty) = offset + rotation * scale * uv (the extension's order).
 void appendTextureRef(std::vector<glm::vec4>& out, const TextureRef& ref, TextureSlot slot, const Sampler& sampler);
 
-// The references of `m` in TextureRefIndex order (colour space per slot: sRGB for base colour and
-// emission). Without a texture set every reference is empty.
+// The references of `m` in TextureRefIndex order (colour space per slot: sRGB for base colour,
+// emission and specular colour). Without a texture set every reference is empty.
 void appendMaterialTextureRefs(std::vector<glm::vec4>& out, const Scene* scene, const Material& m, const TextureSet* textures);
+
+// ExtensionTextureBits of the textures that `materials` sample and `textures` holds.
+unsigned extensionTexturesUsed(const Scene& scene, const std::set<MaterialId>& materials, const TextureSet& textures);
+
+// The shader defines of an ExtensionTextureBits mask.
+std::vector<std::string> extensionTextureDefines(unsigned mask);
 
 } // namespace glint::renderer

@@ -25,22 +25,29 @@ std::string imageName(const Scene& scene, ImageId id) {
     return !image.uri.empty() ? image.uri : !image.name.empty() ? image.name : "image " + std::to_string(id.value);
 }
 
-// Level 0 of an image, or an error message.
-std::pair<TextureLevel, std::string> decodeBase(const Scene& scene, ImageId id, const ImageDecoder& decoder, int maxSize) {
-    if (!scene.images.contains(id)) return {{}, "a texture names no image"};
+using Chain = std::shared_ptr<const MipChain>;
+
+// The mip chain of an image in one colour space (from `cache` when it holds it), or an error message.
+std::pair<Chain, std::string> decodeChain(const Scene& scene, Use use, const ImageDecoder& decoder, int maxSize, TextureCache* cache) {
+    const ImageId id = use.first;
+    if (!scene.images.contains(id)) return {nullptr, "a texture names no image"};
     const Image& image = scene.images.at(id);
-    if (image.missing || image.encoded.empty()) return {{}, imageName(scene, id) + ": missing"};
+    if (image.missing || image.encoded.empty()) return {nullptr, imageName(scene, id) + ": missing"};
+    if (cache)
+        if (Chain hit = cache->find(image.encoded, use.second, maxSize)) return {std::move(hit), {}};
     DecodedImage<std::uint8_t> decoded = decoder.decode8(image.encoded, DecodeLimits{});
-    if (!decoded.ok()) return {{}, imageName(scene, id) + ": " + decoded.error};
+    if (!decoded.ok()) return {nullptr, imageName(scene, id) + ": " + decoded.error};
     TextureLevel level{decoded.width, decoded.height, std::move(decoded.rgba)};
     while (level.width > maxSize || level.height > maxSize) level = buildMipChain(std::move(level), false).at(1);
-    return {std::move(level), {}};
+    Chain chain = std::make_shared<const MipChain>(buildMipChain(std::move(level), use.second));
+    if (cache) cache->insert(image.encoded, use.second, maxSize, chain);
+    return {std::move(chain), {}};
 }
 
 struct Group {
     bool srgb;
     int width, height;
-    std::vector<std::pair<Use, TextureLevel>> images;
+    std::vector<std::pair<Use, Chain>> images;
     long long area() const { return static_cast<long long>(width) * height; }
 };
 
@@ -61,7 +68,9 @@ void mergeOnce(std::vector<Group>& groups, std::vector<std::string>& warnings) {
     Group& to = groups[target];
     warnings.push_back("textures of " + std::to_string(from.width) + "x" + std::to_string(from.height) + " resampled to " +
                        std::to_string(to.width) + "x" + std::to_string(to.height) + " (too many texture sizes for the sampler units)");
-    for (auto& [use, level] : from.images) to.images.emplace_back(use, resampleLevel(level, to.width, to.height, from.srgb));
+    for (auto& [use, chain] : from.images)
+        to.images.emplace_back(use, std::make_shared<const MipChain>(
+                                            buildMipChain(resampleLevel(chain->front(), to.width, to.height, from.srgb), from.srgb)));
     std::sort(to.images.begin(), to.images.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     groups.erase(groups.begin() + static_cast<std::ptrdiff_t>(smallest));
 }
@@ -96,26 +105,31 @@ std::set<std::pair<ImageId, bool>> texturesUsed(const Scene& scene, const std::s
         add(m.emissiveTexture, true);
         add(m.metallicRoughnessTexture, false);
         add(m.normalTexture, false);
+        add(m.specularTexture, false);
+        add(m.specularColorTexture, true);
+        add(m.transmissionTexture, false);
+        add(m.thicknessTexture, false);
     }
     return uses;
 }
 
 TextureSet buildTextureSet(const Scene& scene, const std::set<MaterialId>& materials, const ImageDecoder& decoder,
-                           const TextureLimits& limits) {
+                           const TextureLimits& limits, TextureCache* cache) {
     TextureSet set;
     std::vector<Group> groups;
     for (const Use& use : texturesUsed(scene, materials)) {
-        auto [level, problem] = decodeBase(scene, use.first, decoder, limits.maxSize);
+        auto [chain, problem] = decodeChain(scene, use, decoder, limits.maxSize, cache);
         if (!problem.empty()) {
             set.warnings.push_back("texture " + problem + (use.second ? " (shown as a checker)" : " (ignored)"));
             if (!use.second) continue;
-            level = placeholderChecker();
+            chain = std::make_shared<const MipChain>(buildMipChain(placeholderChecker(), true));
         }
+        const TextureLevel& level = chain->front();
         auto group = std::find_if(groups.begin(), groups.end(), [&](const Group& g) {
             return g.srgb == use.second && g.width == level.width && g.height == level.height;
         });
         if (group == groups.end()) group = groups.insert(groups.end(), Group{use.second, level.width, level.height, {}});
-        group->images.emplace_back(use, std::move(level));
+        group->images.emplace_back(use, std::move(chain));
     }
     while (static_cast<int>(groups.size()) > limits.maxBuckets) mergeOnce(groups, set.warnings);
     for (Group& group : groups) {
@@ -124,9 +138,9 @@ TextureSet buildTextureSet(const Scene& scene, const std::set<MaterialId>& mater
                                      std::to_string(group.height) + " exceed the driver's limit of " +
                                      std::to_string(limits.maxLayers) + " texture array layers");
         TextureBucket bucket{group.srgb, group.width, group.height, {}};
-        for (auto& [use, level] : group.images) {
+        for (auto& [use, chain] : group.images) {
             set.slotOf[use] = TextureSlot{static_cast<int>(set.buckets.size()), static_cast<int>(bucket.layers.size())};
-            bucket.layers.push_back(buildMipChain(std::move(level), group.srgb));
+            bucket.layers.push_back(std::move(chain));
         }
         set.buckets.push_back(std::move(bucket));
     }

@@ -1,16 +1,19 @@
 #pragma once
 // The scene's material textures decoded, bucketed and mipmapped for upload (renderer/gpu_scene/
 // texture_arrays.h uploads them). A texture array holds images of one size and one colour space, so
-// images are grouped by (colour space, width, height): sRGB data (base colour, emission) goes to
-// GL_SRGB8_ALPHA8 arrays, linear data (metallic-roughness, normals) to GL_RGBA8 ones. Each bucket
+// images are grouped by (colour space, width, height): sRGB data (base colour, emission, specular
+// colour) goes to GL_SRGB8_ALPHA8 arrays, linear data (metallic-roughness, normals, specular,
+// transmission, thickness) to GL_RGBA8 ones. Each bucket
 // costs a sampler unit; when a scene has more sizes than units, the smallest bucket of a colour
 // space is resampled to the next larger size of that space (with a warning) until it fits.
 // CPU only: no GL here.
+#include "renderer/gpu_scene/texture_cache.h"
 #include "renderer/gpu_scene/texture_mips.h"
 #include "scene/core/scene.h"
 #include "scene/io/image_decoder.h"
 
 #include <map>
+#include <memory>
 #include <set>
 #include <string>
 #include <utility>
@@ -27,7 +30,7 @@ struct TextureBucket {
     bool srgb = false;
     int width = 0;
     int height = 0;
-    std::vector<std::vector<TextureLevel>> layers; // each a full mip chain down to 1x1
+    std::vector<std::shared_ptr<const MipChain>> layers; // each a full mip chain down to 1x1 (shared with a TextureCache)
 };
 
 struct TextureLimits {
@@ -53,10 +56,12 @@ std::set<MaterialId> meshMaterials(const Scene& scene);
 std::set<std::pair<ImageId, bool>> texturesUsed(const Scene& scene, const std::set<MaterialId>& materials);
 
 // Textures that the path tracer samples for `materials` (base colour, metallic-roughness, normal,
-// emissive). Missing or undecodable images: an 8x8 magenta/black checker for colour data, nothing
+// emissive, and the specular, specular colour, transmission and thickness textures; never occlusion). Missing or undecodable images: an 8x8 magenta/black checker for colour data, nothing
 // (the factor alone) for linear data, and a warning either way. Throws std::runtime_error when a
 // bucket would exceed `limits.maxLayers` or the colour spaces outnumber `limits.maxBuckets`.
+// `cache`: decoded and mip-mapped images kept between builds; `decoder` runs only for images it
+// does not hold (the set is bit-identical either way).
 TextureSet buildTextureSet(const Scene& scene, const std::set<MaterialId>& materials, const ImageDecoder& decoder,
-                           const TextureLimits& limits);
+                           const TextureLimits& limits, TextureCache* cache = nullptr);
 
 } // namespace glint::renderer

@@ -42,6 +42,30 @@ vec3 mappedNormal(vec3 n, vec3 geometricNormal, MeshSurface m, TextureRef r) {
     return isFiniteVec3(mapped) && dot(mapped, geometricNormal) > 0.0 ? mapped : n;
 }
 
+// The KHR_materials_* textures, each family only in the variant of a scene that samples it:
+// specular x A, specular colour x RGB, transmission x R, thickness x G. A thickness of 0 makes the
+// surface thin-walled where a ray enters; leaving, it stays a volume boundary, so the integrator
+// always stops the absorption of a volume it entered (docs/MATERIALS.md).
+void applyExtensionTextures(Hit hit, vec3 rayDirection, MeshSurface m, INOUT(SurfaceShading) s) {
+#ifdef HAS_SPECULAR_TEXTURES
+    TextureRef r = fetchTextureRef(hit.material, TEXREF_SPECULAR);
+    if (hasTexture(r)) s.material.specularFactor *= sampleSurfaceTexture(m, r).a;
+    r = fetchTextureRef(hit.material, TEXREF_SPECULAR_COLOR);
+    if (hasTexture(r)) s.material.specularColor *= sampleSurfaceTexture(m, r).rgb;
+#endif
+#ifdef HAS_TRANSMISSION_TEXTURES
+    TextureRef t = fetchTextureRef(hit.material, TEXREF_TRANSMISSION);
+    if (hasTexture(t)) s.material.transmission *= sampleSurfaceTexture(m, t).r;
+#endif
+#ifdef HAS_THICKNESS_TEXTURES
+    TextureRef d = fetchTextureRef(hit.material, TEXREF_THICKNESS);
+    if (hasTexture(d) && !s.material.thinWalled) {
+        s.material.thickness *= sampleSurfaceTexture(m, d).g;
+        s.material.thinWalled = !(s.material.thickness > 0.0) && dot(rayDirection, hit.geometricNormal) < 0.0;
+    }
+#endif
+}
+
 // glTF's texture semantics: base colour x texture x COLOR_0; roughness x G, metallic x B;
 // emission x texture. Emissive-textured triangles are not light-sampled (the light table holds
 // factors), so their emission is found by BSDF sampling alone, unweighted. The occlusion texture is
@@ -65,6 +89,9 @@ void applyTextures(Hit hit, vec3 rayDirection, float coneWidth, INOUT(SurfaceSha
     }
     r = fetchTextureRef(hit.material, TEXREF_NORMAL);
     if (hasTexture(r)) s.normal = mappedNormal(s.normal, hit.geometricNormal, m, r);
+#if defined(HAS_SPECULAR_TEXTURES) || defined(HAS_TRANSMISSION_TEXTURES) || defined(HAS_THICKNESS_TEXTURES)
+    applyExtensionTextures(hit, rayDirection, m, s);
+#endif
 }
 #endif
 

@@ -7,6 +7,10 @@ const int TEXREF_BASE_COLOR = 0;
 const int TEXREF_METALLIC_ROUGHNESS = 1;
 const int TEXREF_NORMAL = 2;
 const int TEXREF_EMISSIVE = 3;
+const int TEXREF_SPECULAR = 4;       // KHR_materials_specular: strength in A (linear)
+const int TEXREF_SPECULAR_COLOR = 5; // KHR_materials_specular: colour in RGB (sRGB)
+const int TEXREF_TRANSMISSION = 6;   // KHR_materials_transmission: R (linear)
+const int TEXREF_THICKNESS = 7;      // KHR_materials_volume: G (linear)
 
 const int WRAP_REPEAT = 0;
 const int WRAP_CLAMP = 1;
