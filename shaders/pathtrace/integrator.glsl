@@ -110,7 +110,7 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng) {
         if (hit.material < 0) {
             vec3 environment = environmentRadiance(ray.direction);
             result.radiance += throughput * (environment * environmentMisWeight(ray.direction, lastBsdfPdf) +
-                                             sunDiskRadiance(ray.direction, lastBsdfPdf, depth == 0));
+                                             sunDiskRadiance(ray.direction, lastBsdfPdf));
             if (depth == 0) result.albedo = environment;
             break;
         }

@@ -54,15 +54,12 @@ LightSample sampleLight(int light, vec3 p, vec2 u) {
     return LightSample(towards, max(t, 0.0), radiance * (TWO_PI * oneMinusCos), 0.0);
 }
 
-// Radiance of the suns' disks in `direction`, for rays that left a surface by BSDF sampling with
-// `bsdfPdf` (power heuristic against the sun's cone sampling). With bsdfPdf 0 (a delta lobe, which
-// light sampling cannot produce, or a camera ray) the disk counts only for camera rays: a sun of a
-// degree or less has a radiance of 10^3..10^5, and its image in a curved mirror or glass is a
-// sub-pixel spot that a unidirectional tracer finds by chance; test_render_statistics' convergence
-// check on a scene with a chrome and a glass sphere fails with it. That is a bias: no sun in
-// mirrors or glass, and no sun caustics (as before disks were seen at all).
-vec3 sunDiskRadiance(vec3 direction, float bsdfPdf, bool cameraRay) {
-    if (!(bsdfPdf > 0.0) && !cameraRay) return vec3(0.0);
+// Radiance of the suns' disks in `direction` for a ray that leaves the scene. A finite sun is an
+// area light in direction space: a ray that left a surface by sampling a non-delta lobe with
+// `bsdfPdf` (solid angle) is weighted against the sun's cone sampling by the power heuristic, as NEE
+// is against it (punctualCandidate); bsdfPdf 0 (a camera ray, or a delta lobe of a mirror or smooth
+// glass, which NEE cannot produce) sees the disk with weight 1. A delta sun has no disk: no ray finds it.
+vec3 sunDiskRadiance(vec3 direction, float bsdfPdf) {
     vec3 sum = vec3(0.0);
     for (int light = 0; light < uLightCount; ++light) {
         vec4 intensity = lightTexel(light, 1);

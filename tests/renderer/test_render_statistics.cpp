@@ -17,7 +17,7 @@ using namespace glint::test;
 namespace {
 
 // Ground, a diffuse, a mirror and a glass sphere under a soft sun and a uniform sky.
-Scene studio() {
+Scene studio(float sunDiameterDegrees = 2.0f) {
     Scene scene;
     scene.settings.environment.color = {0.3f, 0.4f, 0.5f};
     const MaterialId ground = scene.materials.add(lambert(glm::vec3(0.7f)));
@@ -28,7 +28,7 @@ Scene studio() {
     addShape(scene, ShapeKind::Sphere, red, {-1.1f, 0.5f, 0.0f});
     addShape(scene, ShapeKind::Sphere, chrome, {0.0f, 0.5f, 0.0f});
     addShape(scene, ShapeKind::Sphere, clear, {1.1f, 0.5f, 0.0f});
-    addSun(scene, {0.3f, -1.0f, -0.4f}, 2000.0f, glm::radians(2.0f));
+    addSun(scene, {0.3f, -1.0f, -0.4f}, 2000.0f, glm::radians(sunDiameterDegrees));
     addPerspectiveCamera(scene, {0.0f, 1.5f, 4.0f}, {0.0f, 0.4f, 0.0f}, 0.7f);
     return scene;
 }
@@ -88,8 +88,13 @@ private slots:
 
     // 16x16, 3 bounces: seed 1 at 4, 16, 64 and 256 spp against a reference of seed 1000 at 4096 spp
     // (16x the highest). The least-squares slope of log MSE over log spp must be <= -0.9.
+    // The sun is 45 degrees wide here so that its images in the mirror and glass spheres and their
+    // caustics on the ground are resolved at 4 spp: a 2-degree sun's image in the mirror sphere covers
+    // 0.2 % of a pixel, so a render below ~500 spp almost never contains it and its error stays at the
+    // missing highlight (measured: MSE 0.18 at 4, 16 and 64 spp). Over seeds 1..8 the slope is then
+    // -1.01 .. -1.20.
     void errorFallsLikeOneOverSpp() {
-        const Scene scene = studio();
+        const Scene scene = studio(45.0f);
         const auto reference = render(scene, 16, 4096, 1000);
         std::vector<double> logSpp, logMse;
         for (int spp : {4, 16, 64, 256}) {
