@@ -275,6 +275,38 @@ private slots:
         QCOMPARE(scene.textures.begin()->second.sampler, scene.samplers.begin()->first);
     }
 
+    // The textures of KHR_materials_specular, _transmission and _volume: read with their texCoord,
+    // KHR_texture_transform and unknown textureInfo extensions, and not named as dropped.
+    void extensionTexturesAreReadAndNotDropped()
+    {
+        Json doc = triangle().finish();
+        doc["images"] = Json::array({{{"uri", "data:image/png;base64," + base64(pngHeader(2, 2))}}});
+        doc["textures"] = Json::array({{{"source", 0}}, {{"source", 0}}});
+        doc["materials"] = Json::parse(R"([{"extensions": {
+            "KHR_materials_specular": {"specularTexture": {"index": 0, "texCoord": 1},
+              "specularColorTexture": {"index": 1, "extensions": {"KHR_texture_transform": {"offset": [0.25, 0.5], "rotation": 0.5, "scale": [2, 4], "texCoord": 1}}}},
+            "KHR_materials_transmission": {"transmissionFactor": 1, "transmissionTexture": {"index": 1, "extensions": {"EXT_other": {"y": 2}}}},
+            "KHR_materials_volume": {"thicknessFactor": 0.5, "thicknessTexture": {"index": 0, "texCoord": 1, "extensions": {"KHR_texture_transform": {"scale": [3, 3]}}}}}}])");
+        const LoadResult r = loadJson(doc);
+        const Material& m = r.scene.materials.begin()->second;
+        const auto texture = [&](int index) { return std::next(r.scene.textures.begin(), index)->first; };
+        QCOMPARE(m.specularTexture.texture, texture(0));
+        QCOMPARE(m.specularTexture.texCoord, 1);
+        QCOMPARE(m.specularColorTexture.texture, texture(1));
+        QCOMPARE(m.specularColorTexture.transform.offset, glm::vec2(0.25f, 0.5f));
+        QCOMPARE(m.specularColorTexture.transform.rotation, 0.5f);
+        QCOMPARE(m.specularColorTexture.transform.scale, glm::vec2(2, 4));
+        QCOMPARE(m.specularColorTexture.transform.texCoord, 1);
+        QCOMPARE(m.transmissionTexture.texture, texture(1));
+        QCOMPARE(jsonText(m.transmissionTexture.unknown), jsonText(Json::parse(R"({"extensions": {"EXT_other": {"y": 2}}})")));
+        QCOMPARE(m.thicknessTexture.texture, texture(0));
+        QCOMPARE(m.thicknessTexture.texCoord, 1);
+        QCOMPARE(m.thicknessTexture.transform.scale, glm::vec2(3, 3));
+        QVERIFY(m.unknown.is_null() || m.unknown.empty());
+        QVERIFY(!hasWarning(r.warnings, "extension-dropped"));
+        QVERIFY(r.scene.unsupported.empty());
+    }
+
     void unknownContentIsKeptVerbatim()
     {
         Json doc = triangle().finish();
