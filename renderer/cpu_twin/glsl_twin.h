@@ -45,6 +45,7 @@ namespace {
 #include "sampling/mis.glsl"
 #include "sampling/distribution.glsl"
 #include "sampling/environment_sampling.glsl"
+#include "sampling/sphere_light.glsl"
 #include "bsdf/bsdf.glsl"
 } // namespace
 #pragma GCC diagnostic pop

@@ -30,6 +30,7 @@ void packLight(PackedScene& out, const Light& light, const glm::mat4& worldFromL
     out.lights.push_back(glm::vec4(position, std::cos(light.outerConeAngle)));
     out.lights.push_back(glm::vec4(shine, std::cos(light.innerConeAngle)));
     ++out.lightCount;
+    out.sphereLamps = out.sphereLamps || radius > 0.0f;
 }
 
 } // namespace

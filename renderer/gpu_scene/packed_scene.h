@@ -23,6 +23,7 @@ struct PackedScene {
     std::vector<glm::vec4> lights;    // lightTexels per light
     int shapeCount = 0;
     int lightCount = 0;
+    bool sphereLamps = false; // a point or spot light with a radius: rays hit it (HAS_SPHERE_LAMPS)
     std::map<MaterialId, int> materialIndex;
 };
 

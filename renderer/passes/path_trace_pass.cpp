@@ -32,6 +32,7 @@ gl::RenderTarget makeGBuffer(int width, int height) {
 void PathTracePass::render(const GpuScene& scene, const CameraSetup& camera, const PathTraceSettings& settings,
                            std::uint32_t sampleIndex, const gl::RenderTarget& target) {
     gl::Defines defines = scene.features().defines();
+    if (scene.packed().sphereLamps) defines["HAS_SPHERE_LAMPS"] = ""; // lamps that rays hit: a variant of their own
     if (settings.view == DebugView::AmbientOcclusion) defines["DEBUG_VIEW_AO"] = ""; // a variant of its own
     const gl::ShaderProgram& program = programs_.get({"fullscreen.vert.glsl", "pathtrace/main.frag.glsl", defines,
                                                       {"outRadiance", "outAlbedo", "outNormalDepth", "outObjectId",

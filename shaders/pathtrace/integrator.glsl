@@ -107,6 +107,16 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng) {
     for (int depth = 0; depth <= maxBounces + 1; ++depth) {
         setTraceState(depth == 0, alphaKey(rng, 2u), cone);
         Hit hit = traceClosest(ray);
+        float lampT;
+        vec3 lamp = sphereLampEmission(ray, hit.t, lastBsdfPdf, lampT); // a sphere lamp in front ends the path
+        if (lampT < hit.t) {
+            result.radiance += throughput * lamp;
+            if (depth == 0) {
+                result.albedo = lamp;
+                result.depth = lampT * dot(ray.direction, viewAxis);
+            }
+            break;
+        }
         if (hit.material < 0) {
             vec3 environment = environmentRadiance(ray.direction);
             result.radiance += throughput * (environment * environmentMisWeight(ray.direction, lastBsdfPdf) +

@@ -4,8 +4,8 @@
 // - A sun with an angular diameter is a disk of uniform radiance E / (solid angle) that camera and
 //   BSDF-sampled rays see (sunDiskRadiance), weighted against light sampling by MIS.
 // - A point or spot light with a radius is a sphere of uniform radiance I / (pi r^2) (the same
-//   intensity far away), sampled by the cone it subtends: soft shadows. Rays do not hit the sphere
-//   (no highlight of its shape in mirrors), as for delta lights.
+//   intensity far away), sampled by the cone it subtends: soft shadows. Camera and BSDF-sampled rays
+//   hit the sphere (sphereLampEmission), weighted against the cone sampling by MIS.
 const int LIGHT_SUN = 0;
 const int LIGHT_POINT = 1;
 const int LIGHT_SPOT = 2;
@@ -16,9 +16,6 @@ struct LightSample {
     vec3 irradiance; // at a surface facing the light (before cos)
     float pdf;       // solid angle, for MIS with BSDF sampling; 0: nothing else finds this light
 };
-
-// 1 - cos(asin(sqrt(sin2))) without cancellation for small sin2.
-float oneMinusCosFromSin2(float sin2) { return sin2 / (1.0 + sqrt(max(1.0 - sin2, 0.0))); }
 
 // KHR_lights_punctual's recommended smooth spot falloff.
 float spotFalloff(vec3 shineDirection, vec3 toSurface, float cosOuter, float cosInner) {
@@ -45,13 +42,43 @@ LightSample sampleLight(int light, vec3 p, vec2 u) {
     float radius = lightTexel(light, 0).y;
     if (!(radius > 0.0) || distance2 <= radius * radius) return LightSample(direction, distance, falloff * intensity.rgb / distance2, 0.0);
     // The sphere's cone: irradiance = L x solid angle, L = I / (pi r^2).
-    float sin2 = radius * radius / distance2;
-    float oneMinusCos = oneMinusCosFromSin2(sin2);
+    float oneMinusCos = sphereConeOneMinusCos(radius, distance2);
     vec3 towards = worldFromLocal(frameFromNormal(direction), uniformCone(u, 1.0 - oneMinusCos));
     float along = dot(towards, offset);
-    float t = along - sqrt(max(radius * radius - (distance2 - along * along), 0.0));
-    vec3 radiance = falloff * intensity.rgb / (PI * radius * radius);
-    return LightSample(towards, max(t, 0.0), radiance * (TWO_PI * oneMinusCos), 0.0);
+    vec3 perpendicular = offset - along * towards; // no cancellation of distance2 - along^2 far away
+    float t = along - sqrt(max(radius * radius - dot(perpendicular, perpendicular), 0.0));
+    vec3 radiance = falloff * sphereLampRadiance(intensity.rgb, radius);
+    // Rays hit the sphere only where the variant has them (sphere_lamps.glsl): there the sample is
+    // weighted against BSDF sampling, elsewhere it is the only way to the lamp.
+#ifdef HAS_SPHERE_LAMPS
+    float pdf = conePdfFromOneMinusCos(oneMinusCos);
+#else
+    float pdf = 0.0;
+#endif
+    return LightSample(towards, max(t, 0.0) * (1.0 - LAMP_SHADOW_SHORTEN), radiance * (TWO_PI * oneMinusCos), pdf);
+}
+
+// Emission of the nearest sphere lamp that a ray from `ray.origin` hits before tMax (its distance in
+// `t`; RAY_MAX where none is), for a ray sampled with `bsdfPdf` (solid angle; 0 for camera rays and
+// delta lobes: weight 1), weighted against the lamp's cone sampling by the power heuristic. A spot's
+// cone applies by the direction from the lamp's centre to the ray's origin, as next-event estimation
+// applies it to the shading point: both strategies estimate the same integrand.
+vec3 sphereLampEmission(Ray ray, float tMax, float bsdfPdf, OUT(float) t) {
+    int light;
+    t = closestLamp(ray.origin, ray.direction, tMax, light);
+    if (light < 0) {
+        t = RAY_MAX;
+        return vec3(0.0);
+    }
+    vec3 offset = lightTexel(light, 2).xyz - ray.origin;
+    float distance2 = dot(offset, offset);
+    float radius = lampRadius(light);
+    vec4 shine = lightTexel(light, 3);
+    float falloff = int(lightTexel(light, 0).x) == LIGHT_SPOT
+                        ? spotFalloff(shine.xyz, -offset * inversesqrt(distance2), lightTexel(light, 2).w, shine.w) : 1.0;
+    vec3 radiance = falloff * sphereLampRadiance(lightTexel(light, 1).rgb, radius);
+    if (!(bsdfPdf > 0.0)) return radiance;
+    return radiance * powerHeuristic(bsdfPdf, conePdfFromOneMinusCos(sphereConeOneMinusCos(radius, distance2)));
 }
 
 // Radiance of the suns' disks in `direction` for a ray that leaves the scene. A finite sun is an

@@ -1,5 +1,8 @@
 // Exact intersection of analytic shapes in their local space (see scene/core/components.h).
-// Local rays are world rays under an affine map, so t is the same in both spaces.
+// Local rays are world rays under an affine map, so t is the same in both spaces. Sphere lamps
+// (sphere_lamps.glsl) are no shapes, but they block shadow rays like one.
+#include "sphere_lamps.glsl"
+
 const int SHAPE_SPHERE = 0;
 const int SHAPE_QUAD = 1;
 const int SHAPE_DISK = 2;
@@ -126,6 +129,7 @@ void intersectShapes(Ray ray, INOUT(Hit) hit) {
 }
 
 bool occludedByShapes(Ray ray, float distance) {
+    if (occludedByLamps(ray.origin, ray.direction, distance)) return true;
     Hit hit = noHit();
     hit.t = distance;
     intersectShapes(ray, hit);
