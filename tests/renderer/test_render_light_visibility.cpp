@@ -136,21 +136,31 @@ private slots:
     // through a 0.02 rad view: radiance I / (pi r^2) = 5.093 (within 0.1 %). A spot lamp shining
     // 0.45 rad away from the camera, between its inner (0.3) and outer (0.6) cone angles: that times
     // the spot falloff ((cos 0.45 - cos 0.6) / (cos 0.3 - cos 0.6))^2.
+    // In a perfect white mirror (1 bounce) the point lamp shows the same radiance.
     void lampSphereShowsItsRadiance_data() {
         QTest::addColumn<bool>("spot");
-        QTest::newRow("point") << false;
-        QTest::newRow("spot") << true;
+        QTest::addColumn<bool>("mirrored");
+        QTest::newRow("point") << false << false;
+        QTest::newRow("spot") << true << false;
+        QTest::newRow("point in a mirror") << false << true;
     }
     void lampSphereShowsItsRadiance() {
         QFETCH(bool, spot);
+        QFETCH(bool, mirrored);
         Scene scene;
         const float away = spot ? 0.45f : 0.0f;
         const glm::vec3 shine(std::sin(away), 0.0f, std::cos(away)); // the camera is along +Z
         addLamp(scene, spot ? LightType::Spot : LightType::Point, glm::vec3(0.0f), shine, 683.0f, 0.25f);
-        addPerspectiveCamera(scene, {0.0f, 0.0f, 3.0f}, glm::vec3(0.0f), 0.02f);
+        if (mirrored) {
+            // The mirror y = -1; the camera looks at the lamp's image at (0, -2, 0).
+            addShape(scene, ShapeKind::GroundPlane, scene.materials.add(mirror()), {0.0f, -1.0f, 0.0f});
+            addPerspectiveCamera(scene, {0.0f, 1.0f, 2.0f}, {0.0f, -2.0f, 0.0f}, 0.02f);
+        } else {
+            addPerspectiveCamera(scene, {0.0f, 0.0f, 3.0f}, glm::vec3(0.0f), 0.02f);
+        }
         double expected = 1.0 / (kPi * 0.25 * 0.25);
         if (spot) expected *= std::pow((std::cos(0.45) - std::cos(0.6)) / (std::cos(0.3) - std::cos(0.6)), 2.0);
-        const ChannelStats seen = channelStats(render(*renderer_, scene, 8, 1, 32, 0).radiance, 1);
+        const ChannelStats seen = channelStats(render(*renderer_, scene, 8, 1, 32, mirrored ? 1 : 0).radiance, 1);
         qInfo("lamp %.5f .. %.5f, expected %.5f", seen.minimum, seen.maximum, expected);
         QVERIFY2(std::abs(seen.minimum - expected) < 1e-3 * expected && std::abs(seen.maximum - expected) < 1e-3 * expected,
                  qPrintable(QString("lamp %1 .. %2 vs %3").arg(seen.minimum).arg(seen.maximum).arg(expected)));
@@ -166,6 +176,25 @@ private slots:
         const double irradiance = integrateImage(render(*renderer_, scene, 32, 64, 33, 0).radiance, 32, 0.4f, true);
         qInfo("lamp image irradiance %.5f, expected 0.25", irradiance);
         QVERIFY2(std::abs(irradiance - 0.25) < 0.01 * 0.25, qPrintable(QString("%1 vs 0.25").arg(irradiance)));
+    }
+
+    // 16x16, 4 spp, seed 35, 0 bounces: an orthographic view down on a white Lambert ground under a
+    // delta sun of 683 lux straight down, with a dark lamp sphere (0 cd, r 0.5 m) 1 m up. The lamp
+    // blocks the sun's shadow rays: the ground under it is black, while a lamp never shadows its own
+    // light (test_render_light_shapes: its irradiance is I / d^2 within 1 %). The view is 0.6 m wide:
+    // all of it in the shadow; beside the lamp, all of it lit with radiance 1/pi (within 0.1 %).
+    void lampShadowsOtherLights() {
+        Scene scene;
+        addShape(scene, ShapeKind::GroundPlane, scene.materials.add(lambert(glm::vec3(1.0f))), glm::vec3(0.0f));
+        addSun(scene, {0.0f, -1.0f, 0.0f}, 683.0f);
+        addLamp(scene, LightType::Point, {0.0f, 1.0f, 0.0f}, {0.0f, -1.0f, 0.0f}, 0.0f, 0.5f);
+        addOrthographicCamera(scene, {0.0f, 0.1f, 0.0f}, {0.0f, -1.0f, 0.0f}, 0.3f);
+        const ChannelStats shadow = channelStats(render(*renderer_, scene, 16, 4, 35, 0).radiance, 1);
+        QCOMPARE(shadow.maximum, 0.0);
+        scene.settings.activeCamera = addOrthographicCamera(scene, {2.0f, 0.1f, 0.0f}, {0.0f, -1.0f, 0.0f}, 0.3f);
+        const ChannelStats open = channelStats(render(*renderer_, scene, 16, 4, 35, 0).radiance, 1);
+        QVERIFY2(std::abs(open.minimum - 1.0 / kPi) < 1e-3 && std::abs(open.maximum - 1.0 / kPi) < 1e-3,
+                 qPrintable(QString("beside the lamp %1 .. %2 vs 1/pi").arg(open.minimum).arg(open.maximum)));
     }
 
     // 32x32, 32 spp, seed 34, 0 bounces: a 1 cm orthographic view down on a plane lit by a sphere lamp
