@@ -21,7 +21,7 @@ bool equalIgnoringCase(std::string_view a, std::string_view b) {
 
 ConfigurationTraits traitsOf(Configuration configuration) {
     switch (configuration) {
-    case Configuration::Baseline: return {1, false, false, false, false, false}; // AO ambient term: not yet in the integrator
+    case Configuration::Baseline: return {1, false, true, false, false, false}; // ambient term for the missing bounces
     case Configuration::Realistic: return {1, true, false, true, false, false};
     case Configuration::Full: return {1, true, false, true, true, false};
     case Configuration::Heavy: return {4, true, false, true, true, false};

@@ -210,8 +210,9 @@ struct FrameRenderer::State {
         result = nullptr;
     }
     PathTraceSettings pathTraceSettings() const {
+        const ConfigurationTraits traits = traitsOf(settings.configuration);
         return {settings.seed, effectiveBounces(settings), settings.clamp, settings.independentSampler, settings.view,
-                settings.aoDistance};
+                settings.aoDistance, traits.svgf, traits.ao};
     }
     void renderAccumulated();
     void renderRealTime();

@@ -15,16 +15,17 @@ gl::RenderTarget makeAccumulationBuffer(int width, int height) {
 void AccumulatePass::add(const gl::RenderTarget& sample) {
     const gl::ShaderProgram& program = programs_.get({"fullscreen.vert.glsl", "passes/accumulate.frag.glsl", {},
                                                       {"outRadiance", "outAlbedo", "outNormalDepth", "outObjectId",
-                                                       "outDiffuseAlbedo", "outSpecularAlbedo", "outRadianceSquared"}});
+                                                       "outDiffuseAlbedo", "outSpecularAlbedo", "outSpecularRadiance",
+                                                       "outRadianceSquared"}});
     const int previous = current_;
     const int next = 1 - current_;
     ++count_;
     program.use();
     glUniform1f(program.uniform("uSampleCount"), static_cast<float>(count_));
     const char* previousNames[] = {"uPreviousRadiance", "uPreviousAlbedo", "uPreviousNormalDepth", "uPreviousObjectId",
-                                   "uPreviousDiffuseAlbedo", "uPreviousSpecularAlbedo"};
+                                   "uPreviousDiffuseAlbedo", "uPreviousSpecularAlbedo", "uPreviousSpecularRadiance"};
     const char* sampleNames[] = {"uSampleRadiance", "uSampleAlbedo", "uSampleNormalDepth", "uSampleObjectId",
-                                 "uSampleDiffuseAlbedo", "uSampleSpecularAlbedo"};
+                                 "uSampleDiffuseAlbedo", "uSampleSpecularAlbedo", "uSampleSpecularRadiance"};
     for (int i = 0; i < gBufferAttachmentCount; ++i) {
         targets_[previous].bindTexture(i, static_cast<GLuint>(i), program.uniform(previousNames[i]));
         sample.bindTexture(i, static_cast<GLuint>(gBufferAttachmentCount + i), program.uniform(sampleNames[i]));

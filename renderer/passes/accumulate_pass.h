@@ -9,7 +9,7 @@
 
 namespace glint::renderer {
 
-inline constexpr int radianceSquaredAttachment = 6; // gBufferAttachmentCount
+inline constexpr int radianceSquaredAttachment = 7; // gBufferAttachmentCount
 
 gl::RenderTarget makeAccumulationBuffer(int width, int height);
 

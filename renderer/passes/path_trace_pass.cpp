@@ -21,6 +21,7 @@ void setIntegratorUniforms(const gl::ShaderProgram& program, const PathTraceSett
     glUniform1f(program.uniform("uClamp"), settings.clamp);
     glUniform1i(program.uniform("uIndependentSampler"), settings.independentSampler ? 1 : 0);
     glUniform1f(program.uniform("uAoDistance"), settings.aoDistance);
+    glUniform1f(program.uniform("uAmbientDistance"), settings.aoDistance);
 }
 
 } // namespace
@@ -34,9 +35,12 @@ void PathTracePass::render(const GpuScene& scene, const CameraSetup& camera, con
     gl::Defines defines = scene.features().defines();
     if (scene.packed().sphereLamps) defines["HAS_SPHERE_LAMPS"] = ""; // lamps that rays hit: a variant of their own
     if (settings.view == DebugView::AmbientOcclusion) defines["DEBUG_VIEW_AO"] = ""; // a variant of its own
+    if (settings.view == DebugView::DiffuseRadiance) defines["DEBUG_VIEW_DIFFUSE"] = "";
+    if (settings.splitLobes) defines["SPLIT_LOBES"] = "";
+    if (settings.ambientTerm) defines["AMBIENT_TERM"] = "";
     const gl::ShaderProgram& program = programs_.get({"fullscreen.vert.glsl", "pathtrace/main.frag.glsl", defines,
                                                       {"outRadiance", "outAlbedo", "outNormalDepth", "outObjectId",
-                                                       "outDiffuseAlbedo", "outSpecularAlbedo"}});
+                                                       "outDiffuseAlbedo", "outSpecularAlbedo", "outSpecularRadiance"}});
     program.use();
     scene.bind(program);
     setCameraUniforms(program, camera, target);

@@ -1,6 +1,7 @@
 #pragma once
-// One path-traced sample per pixel into a six-target G-buffer: radiance, albedo (base colour),
-// normal + depth, object id, diffuse albedo, specular albedo + roughness (GBufferAttachment).
+// One path-traced sample per pixel into a seven-target G-buffer: radiance, albedo (base colour),
+// normal + depth, object id, diffuse albedo, specular albedo + roughness, and the part of the
+// radiance that the first hit's specular lobes carried (GBufferAttachment).
 #include "renderer/gl/fullscreen_triangle.h"
 #include "renderer/gl/program_cache.h"
 #include "renderer/gl/render_target.h"
@@ -11,7 +12,9 @@
 
 namespace glint::renderer {
 
-enum class DebugView { None, AmbientOcclusion };
+// DiffuseRadiance: radiance holds only the part the first hit's diffuse lobe carried (its
+// specular part stays in specularRadianceAttachment): a view of the lobe split, and its check.
+enum class DebugView { None, AmbientOcclusion, DiffuseRadiance };
 
 struct PathTraceSettings {
     std::uint32_t seed = 0;
@@ -19,7 +22,13 @@ struct PathTraceSettings {
     float clamp = 0.0f;     // radiance clamp per sample; 0 = off
     bool independentSampler = false; // hashed uniforms instead of R2 for the pixel jitter
     DebugView view = DebugView::None;
-    float aoDistance = 1.0f;
+    float aoDistance = 1.0f; // metres: the AO view's rays and the ambient term's
+    // Write specularRadianceAttachment (the SVGF configurations); off, it holds 0 and the
+    // radiance is computed by the same code without the split (a shader variant).
+    bool splitLobes = false;
+    // Baseline's ambient term (shaders/pathtrace/ambient_term.glsl), a shader variant: only for
+    // configurations that cut paths short (ConfigurationTraits::ao).
+    bool ambientTerm = false;
 };
 
 enum GBufferAttachment {
@@ -29,7 +38,8 @@ enum GBufferAttachment {
     objectIdAttachment = 3,
     diffuseAlbedoAttachment = 4,
     specularAlbedoAttachment = 5, // a: roughness
-    gBufferAttachmentCount = 6
+    specularRadianceAttachment = 6, // rgb <= radiance; radiance - this is the diffuse lobe's part
+    gBufferAttachmentCount = 7
 };
 
 gl::RenderTarget makeGBuffer(int width, int height);

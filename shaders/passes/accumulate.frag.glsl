@@ -8,6 +8,7 @@ uniform sampler2D uPreviousNormalDepth;
 uniform sampler2D uPreviousObjectId;
 uniform sampler2D uPreviousDiffuseAlbedo;
 uniform sampler2D uPreviousSpecularAlbedo;
+uniform sampler2D uPreviousSpecularRadiance;
 uniform sampler2D uPreviousRadianceSquared;
 uniform sampler2D uSampleRadiance;
 uniform sampler2D uSampleAlbedo;
@@ -15,6 +16,7 @@ uniform sampler2D uSampleNormalDepth;
 uniform sampler2D uSampleObjectId;
 uniform sampler2D uSampleDiffuseAlbedo;
 uniform sampler2D uSampleSpecularAlbedo;
+uniform sampler2D uSampleSpecularRadiance;
 uniform float uSampleCount; // n, counting this sample
 
 out vec4 outRadiance;
@@ -23,6 +25,7 @@ out vec4 outNormalDepth;
 out vec4 outObjectId;
 out vec4 outDiffuseAlbedo;
 out vec4 outSpecularAlbedo;
+out vec4 outSpecularRadiance;
 out vec4 outRadianceSquared;
 
 vec4 runningMean(vec4 mean, vec4 value) {
@@ -46,6 +49,7 @@ void main() {
     outObjectId = firstSample(uPreviousObjectId, uSampleObjectId, pixel);
     outDiffuseAlbedo = runningMean(uPreviousDiffuseAlbedo, uSampleDiffuseAlbedo, pixel);
     outSpecularAlbedo = runningMean(uPreviousSpecularAlbedo, uSampleSpecularAlbedo, pixel);
+    outSpecularRadiance = runningMean(uPreviousSpecularRadiance, uSampleSpecularRadiance, pixel);
     vec4 radiance = texelFetch(uSampleRadiance, pixel, 0);
     // Squares of huge (finite) radiance would overflow to Inf: saturate at the largest float.
     outRadianceSquared = runningMean(texelFetch(uPreviousRadianceSquared, pixel, 0), min(radiance * radiance, vec4(3.0e38)));

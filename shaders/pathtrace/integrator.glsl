@@ -31,6 +31,10 @@ struct Vertex {
 // routine draws (so alpha-free scenes keep their random streams).
 uvec4 alphaKey(Rng rng, uint salt) { return rngBits(rng.key, 0x80000000u + salt * 0x10000u + rng.dimension); }
 
+#ifdef AMBIENT_TERM
+#include "ambient_term.glsl"
+#endif
+
 // A light sample waiting for its shadow ray: unoccluded, it adds `contribution`.
 struct ShadowCandidate {
     vec3 direction;
@@ -73,14 +77,18 @@ ShadowCandidate environmentCandidate(Vertex v, INOUT(Rng) rng) {
 // Next-event estimation: every punctual light, one emissive triangle and one environment sample.
 // All shadow rays go through one call site: GLSL inlines every call, and each traversal copy costs
 // compile time (seconds on llvmpipe for the BVH variant).
-vec3 directLight(Vertex v, INOUT(Rng) rng) {
+// `diffuse`: the part of the sum the diffuse lobe carried, where `split` (the first hit) asks for it.
+vec3 directLight(Vertex v, bool split, INOUT(Rng) rng, OUT(vec3) diffuse) {
     vec3 sum = vec3(0.0);
+    diffuse = vec3(0.0);
     for (int i = 0; i < uLightCount + 2; ++i) {
         ShadowCandidate c = i < uLightCount ? punctualCandidate(v, i, rng)
                           : (i == uLightCount ? areaCandidate(v, rng) : environmentCandidate(v, rng));
         if (!(maxComponent(c.contribution) > 0.0)) continue;
         setTraceState(false, alphaKey(rng, 1u), v.cone);
-        if (!occluded(spawnRay(v.position, v.faceNormal, c.direction), c.distance)) sum += c.contribution;
+        if (occluded(spawnRay(v.position, v.faceNormal, c.direction), c.distance)) continue;
+        sum += c.contribution;
+        if (split) diffuse += diffusePart(v.material, v.wo, localFromWorld(v.frame, c.direction), c.contribution);
     }
     return sum;
 }
@@ -97,8 +105,11 @@ float environmentMisWeight(vec3 direction, float bsdfPdf) {
     return powerHeuristic(bsdfPdf, environmentPdf(direction));
 }
 
-PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng) {
+// `lobes`: the radiance split by the first hit's lobe that carried it (albedo_split.glsl).
+PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng, OUT(LobeRadiance) lobes) {
     PathResult result = PathResult(vec3(0.0), vec3(0.0), vec3(0.0), -1.0, 0.0, vec4(0.0, 1.0, 0.0, 0.0));
+    lobes = LobeRadiance(vec3(0.0), vec3(0.0));
+    bool specularPath = false; // the first bounce left by a specular lobe (reflection or transmission)
     vec3 throughput = vec3(1.0);
     vec3 attenuation = vec3(0.0); // Beer-Lambert sigma of the medium the ray travels in
     float lastBsdfPdf = 0.0;       // of the sampled direction; 0 for camera rays and delta lobes
@@ -110,7 +121,7 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng) {
         float lampT;
         vec3 lamp = sphereLampEmission(ray, hit.t, lastBsdfPdf, lampT); // a sphere lamp in front ends the path
         if (lampT < hit.t) {
-            result.radiance += throughput * lamp;
+            addRadiance(result.radiance, lobes, throughput * lamp, specularPath);
             if (depth == 0) {
                 result.albedo = lamp;
                 result.depth = lampT * dot(ray.direction, viewAxis);
@@ -119,8 +130,8 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng) {
         }
         if (hit.material < 0) {
             vec3 environment = environmentRadiance(ray.direction);
-            result.radiance += throughput * (environment * environmentMisWeight(ray.direction, lastBsdfPdf) +
-                                             sunDiskRadiance(ray.direction, lastBsdfPdf));
+            addRadiance(result.radiance, lobes, throughput * (environment * environmentMisWeight(ray.direction, lastBsdfPdf) +
+                                                     sunDiskRadiance(ray.direction, lastBsdfPdf)), specularPath);
             if (depth == 0) result.albedo = environment;
             break;
         }
@@ -140,10 +151,17 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng) {
             result.objectId = hit.objectId;
             result.lobes = vec4(v.material.metallic, v.material.roughness, v.material.transmission, v.material.specularFactor);
         }
-        result.radiance += throughput * shading.emission * emissionMisWeight(hit, shading.sampledEmission, ray.direction, lastBsdfPdf);
+        addRadiance(result.radiance, lobes, throughput * shading.emission * emissionMisWeight(hit, shading.sampledEmission, ray.direction, lastBsdfPdf),
+                    specularPath);
         if (depth > maxBounces) break;
 
-        result.radiance += throughput * directLight(v, rng);
+        vec3 diffuseDirect;
+        vec3 direct = throughput * directLight(v, depth == 0, rng, diffuseDirect);
+        if (depth == 0) addSplitRadiance(result.radiance, lobes, direct, throughput * diffuseDirect);
+        else addRadiance(result.radiance, lobes, direct, specularPath);
+#ifdef AMBIENT_TERM
+        if (depth == 0) addRadiance(result.radiance, lobes, ambientTerm(v, rng), false); // diffuse: it is albedo x light
+#endif
 
         BsdfSample bs;
         if (!bsdfSample(v.material, v.wo, rand3(rng), bs) || maxComponent(bs.weight) <= 0.0) break;
@@ -155,6 +173,7 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng) {
             bs.weight /= survive;
         }
         throughput *= bs.weight;
+        if (depth == 0) specularPath = (bs.lobe & LOBE_DIFFUSE) == 0u;
         lastBsdfPdf = (bs.lobe & LOBE_SPECULAR) != 0u ? 0.0 : bs.pdf;
         bool crosses = (bs.wi.z > 0.0) != (v.wo.z > 0.0);
         if (crosses && !v.material.thinWalled) attenuation = v.wo.z > 0.0 ? attenuationCoefficient(v.material) : vec3(0.0);
@@ -163,7 +182,7 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng) {
         cone = bounceCone(cone, hit.t, shading.curvature, lobeRoughness);
         ray = spawnRay(v.position, v.faceNormal, wi);
     }
-    if (uClamp > 0.0) result.radiance = min(result.radiance, vec3(uClamp));
+    if (uClamp > 0.0) clampRadiance(result.radiance, lobes, uClamp);
     return result;
 }
 

@@ -1,5 +1,5 @@
-// Path tracing pass: one sample per pixel into six targets (radiance, albedo, normal + depth, id,
-// diffuse albedo, specular albedo + roughness).
+// Path tracing pass: one sample per pixel into seven targets (radiance, albedo, normal + depth, id,
+// diffuse albedo, specular albedo + roughness, specular radiance).
 #include "constants.glsl"
 #include "common/rng.glsl"
 #include "ray.glsl"
@@ -16,6 +16,7 @@
 #include "lights.glsl"
 #include "emissive_lights.glsl"
 #include "camera.glsl"
+#include "lobe_radiance.glsl"
 #include "integrator.glsl"
 #include "output_guard.glsl"
 #include "albedo_split.glsl"
@@ -29,17 +30,27 @@ out vec4 outNormalDepth;
 out vec4 outObjectId;
 out vec4 outDiffuseAlbedo;  // what the diffuse lobe reflects: SVGF demodulates by diffuse + specular
 out vec4 outSpecularAlbedo; // rgb: approximate directional albedo of the specular lobes; a: roughness
+// The part of outRadiance the first hit's specular lobes carried (lobe_radiance.glsl); the rest is
+// the diffuse part. Only the SPLIT_LOBES variant (the SVGF configurations) writes it: elsewhere it
+// is 0 and the split compiles away. DEBUG_VIEW_DIFFUSE writes the diffuse part into outRadiance.
+out vec4 outSpecularRadiance;
 
 void main() {
     uvec2 pixel = uvec2(gl_FragCoord.xy);
     Rng rng = rngStart(pixel, uSampleIndex, uSeed);
     Ray ray = cameraRay(pixel, uSampleIndex, uSeed, rng);
+    LobeRadiance lobes = LobeRadiance(vec3(0.0), vec3(0.0));
 #ifdef DEBUG_VIEW_AO
     PathResult path = ambientOcclusion(ray, cameraForward(), rng);
 #else
-    PathResult path = tracePath(ray, cameraForward(), rng);
+    PathResult path = tracePath(ray, cameraForward(), rng, lobes);
 #endif
     outRadiance = vec4(finiteNonNegative(path.radiance), 1.0);
+    outSpecularRadiance = vec4(guardedSpecular(lobes.specular, outRadiance.rgb), 1.0);
+#ifdef DEBUG_VIEW_DIFFUSE
+    outRadiance = vec4(finiteNonNegative(lobes.diffuse), 1.0);
+    outSpecularRadiance = vec4(finiteNonNegative(lobes.specular), 1.0);
+#endif
     outAlbedo = vec4(finiteNonNegative(path.albedo), 1.0);
     outNormalDepth = vec4(finiteOrZero(path.normal), path.depth);
     outObjectId = vec4(path.objectId, 0.0, 0.0, 1.0);

@@ -9,3 +9,13 @@ vec3 finiteNonNegative(vec3 v) {
 vec3 finiteOrZero(vec3 v) {
     return isFiniteVec3(v) ? v : vec3(0.0);
 }
+
+// The specular part of a sample: 0 outside the SPLIT_LOBES variant, dropped with its radiance, and
+// never above it (rounding), so that the diffuse part, radiance - specular, is never negative.
+vec3 guardedSpecular(vec3 specular, vec3 guardedRadiance) {
+#ifdef SPLIT_LOBES
+    return min(finiteNonNegative(specular), guardedRadiance);
+#else
+    return vec3(0.0);
+#endif
+}
