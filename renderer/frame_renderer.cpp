@@ -167,6 +167,7 @@ struct FrameRenderer::State {
     Scene posed; // the document at `time`
     std::filesystem::path environmentFile;
     MeshBvhCache meshCache; // mesh BVHs survive uploads: only changed meshes are rebuilt
+    TextureCache textureCache; // decoded, mip-mapped images survive uploads: only new image bytes are decoded
     std::unique_ptr<GpuScene> gpu;
     double time = 0.0;
     bool followSceneCamera = false;
@@ -185,7 +186,7 @@ struct FrameRenderer::State {
     const gl::RenderTarget* result = nullptr; // linear radiance of the last frame (attachment 0)
 
     void upload() {
-        gpu = std::make_unique<GpuScene>(posed, environmentFile, meshCache);
+        gpu = std::make_unique<GpuScene>(posed, environmentFile, meshCache, &textureCache);
         instances = instanceTransforms(posed);
     }
     // Transforms (node animations included) and light parameters: shapes, lights, the top-level

@@ -2,6 +2,7 @@
 
 #include "renderer/cpu_twin/env_sampling.h"
 #include "renderer/gpu_scene/environment_image.h"
+#include "renderer/gpu_scene/texture_refs.h"
 #include "scene/io/oiio/oiio_image_decoder.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -52,8 +53,8 @@ bool meshesHaveColors(const Scene& scene) {
     return false;
 }
 
-TextureSet sceneTextures(const Scene& scene) {
-    return buildTextureSet(scene, meshMaterials(scene), OiioImageDecoder{}, queryTextureLimits());
+TextureSet sceneTextures(const Scene& scene, TextureCache* cache) {
+    return buildTextureSet(scene, meshMaterials(scene), OiioImageDecoder{}, queryTextureLimits(), cache);
 }
 
 } // namespace
@@ -65,14 +66,15 @@ gl::Defines SceneFeatures::defines() const {
     if (meshes && textures) {
         defines["HAS_TEXTURES"] = "";
         defines["TEXTURE_ARRAY_COUNT"] = std::to_string(textureArrays);
+        for (const std::string& name : extensionTextureDefines(extensionTextures)) defines[name] = "";
     }
     if (meshes && alpha) defines["HAS_ALPHA"] = "";
     if (meshes && singleSided) defines["HAS_SINGLE_SIDED"] = "";
     return defines;
 }
 
-GpuScene::GpuScene(const Scene& scene, const std::filesystem::path& environmentFile, MeshBvhCache& meshCache)
-    : GpuScene(scene, environmentFile, sceneTextures(scene), meshCache) {}
+GpuScene::GpuScene(const Scene& scene, const std::filesystem::path& environmentFile, MeshBvhCache& meshCache, TextureCache* textureCache)
+    : GpuScene(scene, environmentFile, sceneTextures(scene, textureCache), meshCache) {}
 
 GpuScene::GpuScene(const Scene& scene, const std::filesystem::path& environmentFile, TextureSet textures, MeshBvhCache& meshCache)
     : packed_(packScene(scene, &textures)),
@@ -89,6 +91,7 @@ GpuScene::GpuScene(const Scene& scene, const std::filesystem::path& environmentF
     addMeshMaterialFeatures(scene, features_);
     features_.textures = !textureArrays_.empty() || meshesHaveColors(scene);
     features_.textureArrays = static_cast<int>(textures.buckets.size());
+    features_.extensionTextures = extensionTexturesUsed(scene, meshMaterials(scene), textureSlots_);
     if (!environmentFile.empty()) {
         const EnvironmentImage image = loadEnvironmentImage(environmentFile);
         const auto table = twin::buildEnvironmentSamplingTable(image.width, image.height, image.rgb);
@@ -117,7 +120,10 @@ bool GpuScene::updateMaterials(const Scene& scene) {
     SceneFeatures features = features_;
     features.alpha = features.singleSided = false;
     addMeshMaterialFeatures(scene, features);
-    if (features.alpha != features_.alpha || features.singleSided != features_.singleSided) return false; // another variant
+    features.extensionTextures = extensionTexturesUsed(scene, meshMaterials(scene), textureSlots_);
+    if (features.alpha != features_.alpha || features.singleSided != features_.singleSided ||
+        features.extensionTextures != features_.extensionTextures)
+        return false; // another variant
     PackedScene repacked = packScene(scene, &textureSlots_);
     if (repacked.materialIndex != packed_.materialIndex || repacked.shapes != packed_.shapes) return false;
     packed_.materials = std::move(repacked.materials);

@@ -19,6 +19,7 @@ struct SceneFeatures {
     bool environmentMap = false;
     bool textures = false;    // material textures or COLOR_0 on meshes: UVs, tangents, texture arrays
     int textureArrays = 0;    // texture arrays bound (TEXTURE_ARRAY_COUNT)
+    unsigned extensionTextures = 0; // KHR_materials_* textures sampled (texture_refs.h ExtensionTextureBits)
     bool alpha = false;       // a mesh material with alpha mode MASK or BLEND
     bool singleSided = false; // a non-emissive single-sided mesh material: camera rays cull its back faces
     gl::Defines defines() const;
@@ -28,7 +29,9 @@ class GpuScene {
 public:
     // `environmentFile`: an equirectangular image, or empty for the project's uniform colour.
     // `meshCache`: mesh BVHs kept across uploads; meshes whose content is unchanged are not rebuilt.
-    GpuScene(const Scene& scene, const std::filesystem::path& environmentFile, MeshBvhCache& meshCache);
+    // `textureCache`: decoded and mip-mapped images kept across uploads (none: decode every image).
+    GpuScene(const Scene& scene, const std::filesystem::path& environmentFile, MeshBvhCache& meshCache,
+             TextureCache* textureCache = nullptr);
 
     // After a change of transforms alone (same visible nodes, meshes, materials, lights and
     // environment): re-uploads the shape and light buffers, the top-level BVH, the instance table
