@@ -53,6 +53,7 @@ struct FrameImages {
     std::vector<float> variance;  // RGB sample variance of one sample (Accumulate/Reference; else empty)
     std::vector<float> motion;    // RG: previous minus current position in pixels (real-time configs)
     std::vector<std::uint8_t> tonemapped; // RGBA8, sRGB, as drawTo shows it
+    std::vector<float> bvhCost;   // the optional bvh_cost AOV (renderer/bvh_cost_render.h); else empty
 };
 
 class FrameRenderer {

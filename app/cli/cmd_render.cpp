@@ -83,8 +83,10 @@ void addRenderCommand(CLI::App& app, Action& action) {
                                            "frames/shot_####.exr")
         ->required()
         ->check(CLI::Validator(rejection([](const std::string& v) { renderer::imageFormatFor(v); }), "FILE", "image"));
-    cmd->add_option("--aovs", options->aovs, "EXR layers: all, none, or a list of albedo,normal,depth,id,variance "
-                                             "(default: all = every layer but variance)")
+    cmd->add_option("--aovs", options->aovs, "EXR layers: all, none, or a list of albedo,normal,depth,id,variance,"
+                                             "bvh_cost (default: all = every layer but variance and bvh_cost; "
+                                             "bvh_cost: BVH nodes visited + primitives tested by the camera "
+                                             "rays, mean per pixel, stills and per-frame renders only)")
         ->check(CLI::Validator(rejection([](const std::string& v) { renderer::parseAovList(v); }), "LIST", "aovs"));
     cmd->add_option("--time", options->time, "Render the scene at this time in seconds: camera path and node "
                                              "animations (default: the scene as stored)");

@@ -1,6 +1,7 @@
 #include "frame_render.h"
 
 #include "app/version.h"
+#include "renderer/bvh_cost_render.h"
 #include "renderer/output/image_files.h"
 
 #include <cstdio>
@@ -47,11 +48,14 @@ void renderImage(renderer::OfflineRenderer& gpu, const RenderOptions& o, const F
     };
     if (stop.requested()) throw RenderStopped{};
     renderer::RenderOutput image = gpu.render(*job.scene, plan.request);
+    const renderer::ExrLayers layers = renderer::parseAovList(o.aovs);
+    if (layers.bvhCost && renderer::imageFormatFor(job.out) == renderer::ImageFormat::Exr)
+        image.bvhCost = renderer::renderBvhCost(gpu, *job.scene, plan.request); // a debug pass of its own
     renderer::ImageMetadata metadata = plan.metadata;
     metadata["version"] = kVersion;
     metadata["renderTimeMs"] = formatNumber(image.timings.setupMs + image.timings.renderMs);
     // Written even when a signal arrived meanwhile: the frame is finished, and the write is atomic.
-    renderer::writeRenderImage(job.out, image, renderer::parseAovList(o.aovs), metadata);
+    renderer::writeRenderImage(job.out, image, layers, metadata);
 }
 
 } // namespace glint::cli

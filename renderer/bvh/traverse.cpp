@@ -62,8 +62,11 @@ constexpr int kTraversalStack = 2 * kStackSize;
 // onTriangle(instance, slot, hit) and onShape(instance, shape, localRay) return true to stop; they
 // may lower tMax (closest hit).
 template <class OnTriangle, class OnShape>
-void walkScene(const FlatScene& scene, const Ray& worldRay, float& tMax, OnTriangle&& onTriangle, OnShape&& onShape)
+void walkScene(const FlatScene& scene, const Ray& worldRay, float& tMax, OnTriangle&& onTriangle, OnShape&& onShape,
+               TraversalCost* cost = nullptr)
 {
+    TraversalCost unused;
+    TraversalCost& counted = cost ? *cost : unused;
     if (scene.topLevelRoot < 0) return;
     const auto topRoot = static_cast<std::uint32_t>(scene.topLevelRoot);
     const BoxRay worldBox = boxRay(worldRay);
@@ -90,10 +93,12 @@ void walkScene(const FlatScene& scene, const Ray& worldRay, float& tMax, OnTrian
         }
         --size;
         if (stackNear[size] > tMax) continue;
+        ++counted.nodes;
         const glm::uvec4 link = scene.nodeLinks[stackNode[size]];
         if (link.y > 0 && instance >= 0) {
             for (std::uint32_t slot = link.x; slot < link.x + link.y; ++slot) {
                 TriangleHit hit;
+                ++counted.primitives;
                 const auto p = [&](int k) { return glm::vec3(scene.trianglePositions[kTrianglePositionTexels * slot + k]); };
                 if (intersectTriangle(triangleRay, p(0), p(1), p(2), 0.0f, tMax, hit) &&
                     onTriangle(static_cast<std::uint32_t>(instance), slot, hit))
@@ -105,6 +110,7 @@ void walkScene(const FlatScene& scene, const Ray& worldRay, float& tMax, OnTrian
             const glm::uvec4 info = scene.instances[kInstanceTexels * link.x + 3];
             const Ray local = localRay(scene, link.x, worldRay);
             if (info.x == kInstanceShape) {
+                ++counted.primitives;
                 if (onShape(link.x, info.y, local)) return;
                 continue;
             }
@@ -132,7 +138,8 @@ void walkScene(const FlatScene& scene, const Ray& worldRay, float& tMax, OnTrian
 
 } // namespace
 
-RayHit intersectClosest(const FlatScene& scene, const Ray& worldRay, float tMax, const ShapeIntersector& shapes)
+RayHit intersectClosest(const FlatScene& scene, const Ray& worldRay, float tMax, const ShapeIntersector& shapes,
+                        TraversalCost* cost)
 {
     RayHit result;
     walkScene(
@@ -147,7 +154,8 @@ RayHit intersectClosest(const FlatScene& scene, const Ray& worldRay, float tMax,
             if (shapes && shapes(shape, local, tMax))
                 result = RayHit{tMax, 0.0f, 0.0f, static_cast<std::int32_t>(instance), -1, -1};
             return false;
-        });
+        },
+        cost);
     return result;
 }
 

@@ -13,9 +13,16 @@ namespace glint::bvh {
 // tMax it lowers tMax and returns true. Without one, shape instances are skipped.
 using ShapeIntersector = std::function<bool(std::uint32_t shape, const Ray& localRay, float& tMax)>;
 
-// Closest hit with 0 < t < tMax.
+// The work of one walk, counted as the GPU's BVH heat map counts it (shaders/bvh/traverse.glsl,
+// BVH_COUNT_COST): nodes taken off the stack and not culled (both levels), and primitive tests.
+struct TraversalCost {
+    int nodes = 0;
+    int primitives = 0;
+};
+
+// Closest hit with 0 < t < tMax. `cost`, when given, is added to.
 RayHit intersectClosest(const FlatScene& scene, const Ray& worldRay, float tMax,
-                        const ShapeIntersector& shapes = nullptr);
+                        const ShapeIntersector& shapes = nullptr, TraversalCost* cost = nullptr);
 
 // Any hit with 0 < t < tMax (shadow rays).
 bool occluded(const FlatScene& scene, const Ray& worldRay, float tMax, const ShapeIntersector& shapes = nullptr);

@@ -36,7 +36,10 @@ Planes exrPlanes(const RenderOutput& img, const ExrLayers& layers) {
     if (layers.depth) p.names.push_back("Z");
     if (layers.objectId) p.names.push_back("id");
     if (layers.variance) p.names.insert(p.names.end(), {"variance.R", "variance.G", "variance.B"});
+    if (layers.bvhCost) p.names.push_back("bvh_cost");
     const std::size_t count = std::size_t(img.width) * std::size_t(img.height);
+    if (layers.bvhCost && img.bvhCost.size() != count)
+        throw std::invalid_argument("the bvh_cost AOV is available for stills and per-frame renders only");
     p.pixels.reserve(count * p.names.size());
     for (std::size_t i = 0; i < count; ++i) {
         p.pixels.insert(p.pixels.end(), img.radiance.begin() + std::ptrdiff_t(i * 4), img.radiance.begin() + std::ptrdiff_t(i * 4 + 4));
@@ -45,6 +48,7 @@ Planes exrPlanes(const RenderOutput& img, const ExrLayers& layers) {
         if (layers.depth) p.pixels.push_back(img.depth[i]);
         if (layers.objectId) p.pixels.push_back(img.objectId[i]);
         if (layers.variance) p.pixels.insert(p.pixels.end(), img.variance.begin() + std::ptrdiff_t(i * 3), img.variance.begin() + std::ptrdiff_t(i * 3 + 3));
+        if (layers.bvhCost) p.pixels.push_back(img.bvhCost[i]);
     }
     return p;
 }
@@ -130,7 +134,8 @@ ExrLayers parseAovList(const std::string& list) {
         else if (item == "depth") none.depth = true;
         else if (item == "id") none.objectId = true;
         else if (item == "variance") none.variance = true;
-        else throw std::invalid_argument("unknown AOV '" + item + "' (use all, none or a list of albedo, normal, depth, id, variance)");
+        else if (item == "bvh_cost") none.bvhCost = true;
+        else throw std::invalid_argument("unknown AOV '" + item + "' (use all, none or a list of albedo, normal, depth, id, variance, bvh_cost)");
         start = comma + 1;
     }
     return none;

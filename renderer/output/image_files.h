@@ -24,10 +24,11 @@ struct ExrLayers {
     bool depth = true;
     bool objectId = true;
     bool variance = false; // optional: only when listed
+    bool bvhCost = false;  // optional debug AOV `bvh_cost` (one float channel): only when listed
 };
 
 // Parses --aovs: "all" (every layer but the optional variance), "none" or a comma list of albedo,
-// normal, depth, id, variance.
+// normal, depth, id, variance, bvh_cost.
 ExrLayers parseAovList(const std::string& list);
 
 using ImageMetadata = std::map<std::string, std::string>; // written as string attributes "glint:<key>"

@@ -12,9 +12,11 @@
 
 namespace glint::renderer {
 
+// BvhCost: the camera ray's BVH work per pixel in radiance (nodes + primitives, nodes, primitives),
+// a shader variant of its own (shaders/pathtrace/bvh_cost.glsl).
 // DiffuseRadiance: radiance holds only the part the first hit's diffuse lobe carried (its
 // specular part stays in specularRadianceAttachment): a view of the lobe split, and its check.
-enum class DebugView { None, AmbientOcclusion, DiffuseRadiance };
+enum class DebugView { None, AmbientOcclusion, BvhCost, DiffuseRadiance };
 
 struct PathTraceSettings {
     std::uint32_t seed = 0;

@@ -10,6 +10,11 @@
 // Triangle filter (alpha testing, back-face culling): define BVH_TRIANGLE_FILTER and, before
 // including this file, bool bvhAcceptTriangle(int instance, int slot, vec3 tuv, vec3 localDirection);
 // a rejected triangle hit is skipped as if the ray had missed it (closest and any hit alike).
+//
+// Cost counting (the BVH heat map, a debug variant): define BVH_COUNT_COST and the walk adds to
+// bvhCostNodes (nodes taken off the stack and not culled, both levels) and bvhCostPrimitives
+// (triangle and shape tests). Without the define the counters do not exist and the walk is the
+// same code as before.
 #include "bvh/buffers.glsl"
 #include "bvh/box.glsl"
 #include "bvh/triangle.glsl"
@@ -17,6 +22,16 @@
 
 // Both levels share one stack: room for a full top-level walk and a full mesh walk above it.
 const int BVH_TRAVERSAL_STACK = 2 * BVH_STACK_SIZE;
+
+#ifdef BVH_COUNT_COST
+int bvhCostNodes = 0;
+int bvhCostPrimitives = 0;
+#define BVH_COUNT_NODE() ++bvhCostNodes
+#define BVH_COUNT_PRIMITIVE() ++bvhCostPrimitives
+#else
+#define BVH_COUNT_NODE()
+#define BVH_COUNT_PRIMITIVE()
+#endif
 
 struct BvhHit {
     float t;
@@ -69,10 +84,12 @@ BvhHit bvhTraverse(vec3 origin, vec3 direction, float tMax, bool anyHit) {
         }
         --size;
         if (stackNear[size] > hit.t) continue;
+        BVH_COUNT_NODE();
         uvec4 link = bvhNodeLink(stackNode[size]);
         if (link.y > 0u && instance >= 0) {
             for (int slot = int(link.x); slot < int(link.x + link.y); ++slot) {
                 vec3 tuv;
+                BVH_COUNT_PRIMITIVE();
                 if (bvhIntersectTriangle(triangleRay, bvhTrianglePosition(slot, 0), bvhTrianglePosition(slot, 1),
                                          bvhTrianglePosition(slot, 2), hit.t, tuv)) {
 #ifdef BVH_TRIANGLE_FILTER
@@ -108,6 +125,7 @@ BvhHit bvhTraverse(vec3 origin, vec3 direction, float tMax, bool anyHit) {
 #ifdef BVH_SHAPE_INSTANCES
             else if (info.x == BVH_INSTANCE_SHAPE) {
                 float t = hit.t;
+                BVH_COUNT_PRIMITIVE();
                 if (bvhIntersectShapeInstance(info.y, localOrigin, localDirection, t)) {
                     hit = BvhHit(t, 0.0, 0.0, leafInstance, -1);
                     if (anyHit) return hit;

@@ -20,6 +20,9 @@
 #include "integrator.glsl"
 #include "output_guard.glsl"
 #include "albedo_split.glsl"
+#ifdef DEBUG_VIEW_BVH_COST
+#include "bvh_cost.glsl"
+#endif
 
 uniform uint uSampleIndex;
 uniform uint uSeed;
@@ -40,7 +43,9 @@ void main() {
     Rng rng = rngStart(pixel, uSampleIndex, uSeed);
     Ray ray = cameraRay(pixel, uSampleIndex, uSeed, rng);
     LobeRadiance lobes = LobeRadiance(vec3(0.0), vec3(0.0));
-#ifdef DEBUG_VIEW_AO
+#if defined(DEBUG_VIEW_BVH_COST)
+    PathResult path = bvhCost(ray, cameraForward(), rng);
+#elif defined(DEBUG_VIEW_AO)
     PathResult path = ambientOcclusion(ray, cameraForward(), rng);
 #else
     PathResult path = tracePath(ray, cameraForward(), rng, lobes);
