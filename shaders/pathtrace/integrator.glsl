@@ -105,7 +105,7 @@ float environmentMisWeight(vec3 direction, float bsdfPdf) {
     return powerHeuristic(bsdfPdf, environmentPdf(direction));
 }
 
-// `lobes`: the radiance split by the first hit's lobe that carried it (albedo_split.glsl).
+// `lobes`: the radiance split by the first hit's lobe that carried it (lobe_radiance.glsl).
 PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng, OUT(LobeRadiance) lobes) {
     PathResult result = PathResult(vec3(0.0), vec3(0.0), vec3(0.0), -1.0, 0.0, vec4(0.0, 1.0, 0.0, 0.0));
     lobes = LobeRadiance(vec3(0.0), vec3(0.0));

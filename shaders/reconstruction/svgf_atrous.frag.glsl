@@ -1,44 +1,73 @@
-// SVGF stage 3 (run N times with step 2^i): an edge-aware a-trous wavelet step over illumination
-// (rgb) and its variance (a). Weights: B3-spline kernel x depth x normal x luminance, the luminance
-// scale set by the 3x3-blurred variance. Misses (the environment) pass through unfiltered.
+// SVGF stage 3 (run N times with step 2^i): an edge-aware a-trous wavelet step over each lobe's
+// illumination (rgb) and variance (a). Weights: B3-spline kernel x depth x normal x luminance, the
+// luminance scale set by the lobe's 3x3-blurred variance. Misses (the environment) pass through.
+// The specular lobe follows the surface's roughness r (specular albedo's a): smooth lobes get
+// fewer iterations (1 at r = 0, all from uSpecularFullRoughness up: a small kernel keeps a sharp
+// reflection sharp), up to 2x stricter luminance and 4x stricter normal stops, and neighbours of a
+// different roughness count less.
 #include "reconstruction/common.glsl"
 
-uniform sampler2D uIllumination;
+uniform sampler2D uDiffuse;  // rgb, a = variance
+uniform sampler2D uSpecular; // rgb, a = variance
 uniform sampler2D uNormalDepth;
 uniform sampler2D uObjectId; // filtering never crosses objects (an emitter would bleed onto its surroundings)
+uniform sampler2D uSpecularAlbedo; // a: roughness
 uniform int uStep;
+uniform int uIteration;        // 0-based
+uniform int uIterations;
 uniform float uSigmaLuminance; // 4 in the paper
 uniform float uSigmaNormal;    // 128
 uniform float uSigmaDepth;     // 1
+uniform float uSpecularFullRoughness;
 
-out vec4 outIllumination;
+out vec4 outDiffuse;
+out vec4 outSpecular;
 
-float blurredVariance(ivec2 pixel, ivec2 size) {
+vec2 blurredVariance(ivec2 pixel, ivec2 size) {
     const float kernel[2] = float[2](0.25, 0.125);
-    float sum = 0.0;
+    vec2 sum = vec2(0.0);
     for (int y = -1; y <= 1; ++y)
         for (int x = -1; x <= 1; ++x) {
             ivec2 q = clamp(pixel + ivec2(x, y), ivec2(0), size - 1);
-            sum += kernel[abs(x)] * kernel[abs(y)] * texelFetch(uIllumination, q, 0).a;
+            sum += kernel[abs(x)] * kernel[abs(y)] * vec2(texelFetch(uDiffuse, q, 0).a, texelFetch(uSpecular, q, 0).a);
         }
     return sum * 4.0; // the 3x3 weights sum to 1/4
 }
 
+// One lobe's running sum: rgb weighted by w, variance by w^2.
+struct Sum {
+    vec4 value;
+    float weight;
+};
+
+void addTap(inout Sum s, vec4 c, float w) {
+    s.value += vec4(c.rgb * w, c.a * w * w);
+    s.weight += w;
+}
+
+vec4 result(Sum s) { return vec4(s.value.rgb / s.weight, s.value.a / (s.weight * s.weight)); }
+
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
-    ivec2 size = textureSize(uIllumination, 0);
-    vec4 centre = texelFetch(uIllumination, pixel, 0);
+    ivec2 size = textureSize(uDiffuse, 0);
+    vec4 diffuse = texelFetch(uDiffuse, pixel, 0);
+    vec4 specular = texelFetch(uSpecular, pixel, 0);
     vec4 nd = texelFetch(uNormalDepth, pixel, 0);
     float id = texelFetch(uObjectId, pixel, 0).x;
-    if (nd.w < 0.0) {
-        outIllumination = centre;
-        return;
-    }
+    outDiffuse = diffuse;
+    outSpecular = specular;
+    if (nd.w < 0.0) return;
+    float roughness = texelFetch(uSpecularAlbedo, pixel, 0).a;
+    float rough = clamp(roughness / max(uSpecularFullRoughness, 1.0e-3), 0.0, 1.0);
+    bool filterSpecular = uIteration < 1 + int(floor(float(uIterations - 1) * rough + 0.5));
+
     const float kernel[3] = float[3](3.0 / 8.0, 1.0 / 4.0, 1.0 / 16.0);
-    float lCentre = luminance(centre.rgb);
-    float lScale = uSigmaLuminance * sqrt(max(blurredVariance(pixel, size), 0.0)) + 1.0e-6;
-    vec4 sum = centre * vec4(vec3(kernel[0] * kernel[0]), kernel[0] * kernel[0] * kernel[0] * kernel[0]);
-    float weight = kernel[0] * kernel[0];
+    vec2 lCentre = vec2(luminance(diffuse.rgb), luminance(specular.rgb));
+    vec2 lScale = uSigmaLuminance * vec2(1.0, mix(0.5, 1.0, rough)) * sqrt(max(blurredVariance(pixel, size), vec2(0.0))) + 1.0e-6;
+    vec2 normalExponent = uSigmaNormal * vec2(1.0, mix(4.0, 1.0, rough));
+    float centre = kernel[0] * kernel[0];
+    Sum d = Sum(diffuse * vec4(vec3(centre), centre * centre), centre);
+    Sum s = Sum(specular * vec4(vec3(centre), centre * centre), centre);
     for (int y = -2; y <= 2; ++y)
         for (int x = -2; x <= 2; ++x) {
             if (x == 0 && y == 0) continue;
@@ -46,13 +75,16 @@ void main() {
             if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
             vec4 qnd = texelFetch(uNormalDepth, q, 0);
             if (qnd.w < 0.0 || texelFetch(uObjectId, q, 0).x != id) continue;
-            vec4 c = texelFetch(uIllumination, q, 0);
             float wz = abs(nd.w - qnd.w) / (uSigmaDepth * 0.02 * nd.w * float(uStep) * length(vec2(x, y)) + 1.0e-4);
-            float wn = pow(max(dot(nd.xyz, qnd.xyz), 0.0), uSigmaNormal);
-            float wl = abs(luminance(c.rgb) - lCentre) / lScale;
-            float w = kernel[abs(x)] * kernel[abs(y)] * wn * exp(-wz - wl);
-            sum += vec4(c.rgb * w, c.a * w * w);
-            weight += w;
+            float cosNormals = max(dot(nd.xyz, qnd.xyz), 0.0);
+            float base = kernel[abs(x)] * kernel[abs(y)] * exp(-wz);
+            vec4 qd = texelFetch(uDiffuse, q, 0);
+            addTap(d, qd, base * pow(cosNormals, normalExponent.x) * exp(-abs(luminance(qd.rgb) - lCentre.x) / lScale.x));
+            if (!filterSpecular) continue;
+            vec4 qs = texelFetch(uSpecular, q, 0);
+            float wr = exp(-abs(texelFetch(uSpecularAlbedo, q, 0).a - roughness) * 10.0);
+            addTap(s, qs, base * wr * pow(cosNormals, normalExponent.y) * exp(-abs(luminance(qs.rgb) - lCentre.y) / lScale.y));
         }
-    outIllumination = vec4(sum.rgb / weight, sum.a / (weight * weight));
+    outDiffuse = result(d);
+    outSpecular = filterSpecular ? result(s) : specular;
 }

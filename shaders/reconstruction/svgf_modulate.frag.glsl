@@ -1,7 +1,8 @@
-// SVGF stage 4: filtered illumination times albedo gives radiance again.
+// SVGF stage 4: each lobe's filtered illumination times its albedo, summed, gives radiance again.
 #include "reconstruction/svgf_demodulate.glsl"
 
-uniform sampler2D uIllumination;
+uniform sampler2D uDiffuse;  // filtered illumination, rgb
+uniform sampler2D uSpecular;
 uniform sampler2D uDiffuseAlbedo;
 uniform sampler2D uSpecularAlbedo;
 
@@ -9,5 +10,7 @@ out vec4 outRadiance;
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
-    outRadiance = vec4(remodulate(texelFetch(uIllumination, pixel, 0).rgb, lobeAlbedo(uDiffuseAlbedo, uSpecularAlbedo, pixel)), 1.0);
+    vec3 diffuse = remodulate(texelFetch(uDiffuse, pixel, 0).rgb, texelFetch(uDiffuseAlbedo, pixel, 0).rgb);
+    vec3 specular = remodulate(texelFetch(uSpecular, pixel, 0).rgb, texelFetch(uSpecularAlbedo, pixel, 0).rgb);
+    outRadiance = vec4(diffuse + specular, 1.0);
 }

@@ -1,13 +1,16 @@
-// SVGF stage 1: temporal accumulation of demodulated illumination and of its first two luminance
-// moments, with a history length per pixel (Schied et al. 2017). Disoccluded pixels restart at 1.
-// Smooth specular surfaces (mirrors, glass) see reflections whose motion the primary motion vectors
-// do not describe: their history is kept short (current-frame weight up to 0.5 at roughness 0).
-// Guard: NaN/Inf become 0, and a pixel far brighter than all its neighbours (a firefly) is clamped
-// to them before it can enter history.
+// SVGF stage 1: temporal accumulation of each lobe's demodulated illumination (diffuse and
+// specular apart) and of their first two luminance moments, with a history length per pixel
+// (Schied et al. 2017). Disoccluded pixels restart at 1.
+// Smooth specular lobes (mirrors, glass, a polished layer) see reflections whose motion the primary
+// motion vectors do not describe: their history is kept short (current-frame weight up to 0.5 at
+// roughness 0); the diffuse lobe on the same pixel keeps its long history.
+// Guard: NaN/Inf become 0, and a lobe far brighter than the same lobe of all its neighbours (a
+// firefly) is clamped to them before it can enter history.
 #include "reconstruction/common.glsl"
 #include "reconstruction/svgf_demodulate.glsl"
 
 uniform sampler2D uRadiance;
+uniform sampler2D uSpecularRadiance;
 uniform sampler2D uDiffuseAlbedo;
 uniform sampler2D uSpecularAlbedo; // a: roughness
 uniform sampler2D uNormalDepth;
@@ -15,49 +18,66 @@ uniform sampler2D uObjectId;
 uniform sampler2D uMotion;
 uniform sampler2D uPreviousNormalDepth;
 uniform sampler2D uPreviousObjectId;
-uniform sampler2D uHistoryIllumination; // rgb
-uniform sampler2D uHistoryMoments;      // x = E[l], y = E[l^2], z = history length
+uniform sampler2D uHistoryDiffuse;  // filtered illumination, rgb
+uniform sampler2D uHistorySpecular;
+uniform sampler2D uHistoryMoments;  // diffuse E[l], E[l^2], specular E[l], E[l^2]
+uniform sampler2D uHistoryLength;   // x
 uniform int uHistoryValid;
 uniform float uAlpha;         // minimum weight of the current frame (0.2 in the paper)
 uniform float uMomentsAlpha;
-uniform float uFireflyRatio;  // a pixel may exceed its brightest neighbour this many times
+uniform float uFireflyRatio;  // a lobe may exceed its brightest neighbour this many times
 
-out vec4 outIllumination; // rgb, a = variance
+out vec4 outDiffuse;  // rgb, a = variance
+out vec4 outSpecular; // rgb, a = variance
 out vec4 outMoments;
+out vec4 outHistoryLength;
 
-vec3 illuminationAt(ivec2 p) {
-    return demodulate(finiteRadiance(texelFetch(uRadiance, p, 0).rgb), lobeAlbedo(uDiffuseAlbedo, uSpecularAlbedo, p));
+// This frame's illumination at p, each lobe demodulated by its albedo.
+void illuminationAt(ivec2 p, out vec3 diffuse, out vec3 specular) {
+    vec3 d, s;
+    splitRadiance(texelFetch(uRadiance, p, 0).rgb, texelFetch(uSpecularRadiance, p, 0).rgb, d, s);
+    diffuse = demodulate(d, texelFetch(uDiffuseAlbedo, p, 0).rgb);
+    specular = demodulate(s, texelFetch(uSpecularAlbedo, p, 0).rgb);
 }
 
-vec3 withoutFirefly(ivec2 pixel, vec3 c) {
-    ivec2 size = textureSize(uRadiance, 0);
-    float brightest = 0.0;
-    for (int y = -1; y <= 1; ++y)
-        for (int x = -1; x <= 1; ++x)
-            if (x != 0 || y != 0) brightest = max(brightest, luminance(illuminationAt(clamp(pixel + ivec2(x, y), ivec2(0), size - 1))));
+vec3 clampedTo(vec3 c, float brightest) {
     float limit = uFireflyRatio * max(brightest, 1.0e-2);
     float l = luminance(c);
     return l > limit ? c * (limit / l) : c;
 }
 
-// 1 for a smooth surface whose light is mostly specular, 0 for rough or diffuse ones.
-float mirrorLikeness(ivec2 p) {
-    vec4 specular = texelFetch(uSpecularAlbedo, p, 0);
-    float s = luminance(specular.rgb), d = luminance(texelFetch(uDiffuseAlbedo, p, 0).rgb);
-    return s / max(s + d, 1.0e-4) * (1.0 - clamp(specular.a / 0.3, 0.0, 1.0));
+void withoutFireflies(ivec2 pixel, inout vec3 diffuse, inout vec3 specular) {
+    ivec2 size = textureSize(uRadiance, 0);
+    vec2 brightest = vec2(0.0);
+    for (int y = -1; y <= 1; ++y)
+        for (int x = -1; x <= 1; ++x) {
+            if (x == 0 && y == 0) continue;
+            vec3 d, s;
+            illuminationAt(clamp(pixel + ivec2(x, y), ivec2(0), size - 1), d, s);
+            brightest = max(brightest, vec2(luminance(d), luminance(s)));
+        }
+    diffuse = clampedTo(diffuse, brightest.x);
+    specular = clampedTo(specular, brightest.y);
 }
+
+// 1 for a mirror, 0 from roughness 0.3 up: how much shorter the specular lobe's history is.
+float smoothness(ivec2 p) { return 1.0 - clamp(texelFetch(uSpecularAlbedo, p, 0).a / 0.3, 0.0, 1.0); }
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
-    vec3 current = withoutFirefly(pixel, illuminationAt(pixel));
-    float l = luminance(current);
+    vec3 diffuse, specular;
+    illuminationAt(pixel, diffuse, specular);
+    withoutFireflies(pixel, diffuse, specular);
+    vec4 l = vec4(luminance(diffuse), 0.0, luminance(specular), 0.0);
+    l.yw = l.xz * l.xz;
     vec4 normalDepth = texelFetch(uNormalDepth, pixel, 0);
     float id = texelFetch(uObjectId, pixel, 0).x;
     vec2 previous = gl_FragCoord.xy + texelFetch(uMotion, pixel, 0).xy;
 
     // Bilinear reprojection over the taps that saw the same surface.
-    vec3 illumination = vec3(0.0);
-    vec3 moments = vec3(0.0);
+    vec3 historyDiffuse = vec3(0.0), historySpecular = vec3(0.0);
+    vec4 moments = vec4(0.0);
+    float pastLength = 0.0;
     float weight = 0.0;
     if (uHistoryValid != 0 && insideImage(previous, vec2(textureSize(uRadiance, 0)))) {
         vec2 base = floor(previous - 0.5);
@@ -69,22 +89,32 @@ void main() {
                 if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
                 if (!sameSurface(normalDepth, id, texelFetch(uPreviousNormalDepth, q, 0), texelFetch(uPreviousObjectId, q, 0).x)) continue;
                 float w = (i == 1 ? f.x : 1.0 - f.x) * (j == 1 ? f.y : 1.0 - f.y);
-                illumination += w * finiteRadiance(texelFetch(uHistoryIllumination, q, 0).rgb);
-                moments += w * texelFetch(uHistoryMoments, q, 0).xyz;
+                historyDiffuse += w * finiteRadiance(texelFetch(uHistoryDiffuse, q, 0).rgb);
+                historySpecular += w * finiteRadiance(texelFetch(uHistorySpecular, q, 0).rgb);
+                moments += w * texelFetch(uHistoryMoments, q, 0);
+                pastLength += w * texelFetch(uHistoryLength, q, 0).x;
                 weight += w;
             }
     }
     if (weight < 1.0e-3) {
-        outIllumination = vec4(current, 0.0);
-        outMoments = vec4(l, l * l, 1.0, 0.0);
+        outDiffuse = vec4(diffuse, 0.0);
+        outSpecular = vec4(specular, 0.0);
+        outMoments = l;
+        outHistoryLength = vec4(1.0, 0.0, 0.0, 0.0);
         return;
     }
-    illumination /= weight;
+    historyDiffuse /= weight;
+    historySpecular /= weight;
     moments /= weight;
-    float historyLength = moments.z + 1.0;
-    float alpha = max(max(uAlpha, 1.0 / historyLength), mix(uAlpha, 0.5, mirrorLikeness(pixel)));
+    pastLength /= weight;
+    float historyLength = pastLength + 1.0;
+    float alpha = max(uAlpha, 1.0 / historyLength);
     float momentsAlpha = max(uMomentsAlpha, 1.0 / historyLength);
-    vec2 m = mix(moments.xy, vec2(l, l * l), momentsAlpha);
-    outIllumination = vec4(mix(illumination, current, alpha), max(m.y - m.x * m.x, 0.0));
-    outMoments = vec4(m, historyLength, 0.0);
+    float specularShort = mix(uAlpha, 0.5, smoothness(pixel));
+    vec2 alphas = vec2(alpha, max(alpha, specularShort));
+    vec4 m = mix(moments, l, vec4(momentsAlpha, momentsAlpha, max(momentsAlpha, specularShort), max(momentsAlpha, specularShort)));
+    outDiffuse = vec4(mix(historyDiffuse, diffuse, alphas.x), max(m.y - m.x * m.x, 0.0));
+    outSpecular = vec4(mix(historySpecular, specular, alphas.y), max(m.w - m.z * m.z, 0.0));
+    outMoments = m;
+    outHistoryLength = vec4(historyLength, 0.0, 0.0, 0.0);
 }
