@@ -12,13 +12,16 @@ gl::Texture uploadBucket(const TextureBucket& bucket) {
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     const auto levels = bucket.layers.front()->size();
     const GLint internalFormat = bucket.srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8;
+    // Each level is allocated, then filled layer by layer straight from the (cached) chains: no
+    // copy of the whole array on the CPU.
     for (std::size_t level = 0; level < levels; ++level) {
         const TextureLevel& first = (*bucket.layers.front())[level];
-        std::vector<std::uint8_t> texels;
-        texels.reserve(first.rgba.size() * bucket.layers.size());
-        for (const auto& chain : bucket.layers) texels.insert(texels.end(), (*chain)[level].rgba.begin(), (*chain)[level].rgba.end());
-        glTexImage3D(GL_TEXTURE_2D_ARRAY, static_cast<GLint>(level), internalFormat, first.width, first.height,
-                     static_cast<GLsizei>(bucket.layers.size()), 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
+        const auto layers = static_cast<GLsizei>(bucket.layers.size());
+        glTexImage3D(GL_TEXTURE_2D_ARRAY, static_cast<GLint>(level), internalFormat, first.width, first.height, layers, 0,
+                     GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+        for (GLsizei layer = 0; layer < layers; ++layer)
+            glTexSubImage3D(GL_TEXTURE_2D_ARRAY, static_cast<GLint>(level), 0, 0, layer, first.width, first.height, 1, GL_RGBA,
+                            GL_UNSIGNED_BYTE, (*bucket.layers[static_cast<std::size_t>(layer)])[level].rgba.data());
     }
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BASE_LEVEL, 0);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, static_cast<GLint>(levels) - 1);
