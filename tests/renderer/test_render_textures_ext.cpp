@@ -8,6 +8,10 @@
 #include "image_stats.h"
 #include "test_render_textures_scenes.h"
 
+#include "renderer/frame_renderer.h"
+#include "renderer/gl/headless_context.h"
+#include "scene/history/change_set.h"
+
 #include <QTest>
 
 #include <cmath>
@@ -171,6 +175,58 @@ private slots:
             QVERIFY2(std::abs(halfMean(volume, true, c) - 0.5) < 0.002, qPrintable(QString("reference: %1").arg(halfMean(volume, true, c))));
             QVERIFY(shareWithin(out, volume, false, c, 1e-3) >= 0.95);
         }
+    }
+
+    // A material edit that starts sampling a specular texture whose image the scene already uploads
+    // (here as metallic-roughness: the same linear image, so no new texture set) needs another
+    // shader variant: FrameRenderer must rebuild instead of updating the material buffer in place.
+    // The edited frame equals a fresh render of the edited scene (bit for bit) and differs from the
+    // frame before. Last: it makes a context of its own current.
+    void materialEditAddingASpecularTextureSwitchesTheVariant() {
+        renderer_.reset();
+        gl::HeadlessContext context;
+        Scene scene;
+        scene.settings.environment.color = glm::vec3(1.0f);
+        const TextureId mr = halvesTexture(scene, {255, 255, 255, 0}, {255, 255, 255, 0}); // roughness 1x, metallic 1x, A 0
+        Material m = lambert(glm::vec3(0.2f));
+        m.specularFactor = 1.0f;
+        m.roughnessFactor = 0.4f;
+        m.doubleSided = true;
+        m.metallicRoughnessTexture = ref(mr);
+        const MaterialId id = scene.materials.add(m);
+        addQuad(scene, texturedQuad(1.0f, id));
+        addTopCamera(scene, 0.5f);
+        renderer::FrameSettings settings;
+        settings.spp = kSpp;
+        settings.bounces = 0;
+        settings.seed = kSeed;
+        settings.width = settings.height = kSize;
+        settings.tonemapper = Tonemapper::None;
+        const auto frame = [&](renderer::FrameRenderer& frames) {
+            frames.renderFrame();
+            return frames.readImages().radiance;
+        };
+        renderer::FrameRenderer edited;
+        edited.setSettings(settings);
+        edited.setCamera(renderer::resolveCamera(scene, "", kSize, kSize));
+        edited.setScene(scene);
+        const std::vector<float> before = frame(edited);
+
+        scene.materials.at(id).specularTexture = ref(mr);
+        ChangeSet change;
+        change.add(Change::Material);
+        change.materials.insert(id);
+        edited.applyChanges(scene, change);
+        const std::vector<float> after = frame(edited);
+
+        renderer::FrameRenderer fresh;
+        fresh.setSettings(settings);
+        fresh.setCamera(renderer::resolveCamera(scene, "", kSize, kSize));
+        fresh.setScene(scene);
+        QVERIFY2(after == frame(fresh), "the edited frame differs from a fresh render of the edited scene");
+        double change0 = 0.0;
+        for (std::size_t i = 0; i < after.size(); i += 4) change0 += std::abs(after[i] - before[i]);
+        QVERIFY2(change0 / double(after.size() / 4) > 0.02, qPrintable(QString("mean change %1").arg(change0 / double(after.size() / 4))));
     }
 };
 
