@@ -280,10 +280,11 @@ void FrameRenderer::applyChanges(const Scene& scene, const ChangeSet& changes) {
     if (s.gpu && onlyTransformsOrLights(changes)) s.uploadTransforms();
     else if (!(s.gpu && onlyMaterials(changes) && s.gpu->updateMaterials(s.posed))) s.upload();
     s.pictureChanged = true;
-    // Lighting edits drop the history: reprojected history would keep the old light for ~17 frames
-    // (docs/DENOISING.md); a few noisy frames after an edit are the lesser evil. Moves keep it.
-    if (changes.has(Change::Settings) || changes.has(Change::Structure) || changes.has(Change::Light) ||
-        changes.has(Change::Material) || changes.has(Change::Environment))
+    // Light edits keep the history: anti-lag (anti_lag_pass.h) shortens it where the lighting
+    // changed, so a switched-off light goes in a frame and unchanged pixels stay converged. Edits
+    // that change what surfaces are (materials, structure, environment image) or settings drop it.
+    if (changes.has(Change::Settings) || changes.has(Change::Structure) || changes.has(Change::Material) ||
+        changes.has(Change::Environment))
         s.historyValid = false;
 }
 

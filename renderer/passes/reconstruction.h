@@ -1,8 +1,10 @@
 #pragma once
-// The real-time reconstruction chain of one frame: motion vectors -> SVGF -> TAA -> fade into the
-// still mean (converge.frag.glsl). Each stage is its own pass with its own shaders; this class wires
-// their targets and keeps the previous frame's normal + depth and id for disocclusion tests.
+// The real-time reconstruction chain of one frame: motion vectors -> anti-lag -> SVGF -> TAA -> fade
+// into the still mean (converge.frag.glsl). Each stage is its own pass with its own shaders; this
+// class wires their targets and keeps the previous frame's normal + depth and id for disocclusion
+// tests.
 #include "renderer/configuration.h"
+#include "renderer/passes/anti_lag_pass.h"
 #include "renderer/passes/motion_pass.h"
 #include "renderer/passes/svgf_pass.h"
 #include "renderer/passes/taa_pass.h"
@@ -31,14 +33,17 @@ public:
     // Returns the target whose attachment 0 holds the frame's linear radiance.
     const gl::RenderTarget& run(const ReconstructionInputs& in);
     const gl::RenderTarget& motion() const { return motion_.output(); }
+    const AntiLagPass& antiLag() const { return antiLag_; }
 
     TaaSettings taa;
     SvgfSettings svgf;
+    AntiLagSettings antiLagSettings;
 
 private:
     gl::ProgramCache& programs_;
     gl::FullscreenTriangle triangle_;
     MotionPass motion_;
+    AntiLagPass antiLag_;
     SvgfPass svgfPass_;
     TaaPass taaPass_;
     gl::RenderTarget previousGBuffer_; // 0: normal + depth, 1: id

@@ -1,5 +1,6 @@
 #include "renderer/passes/svgf_pass.h"
 
+#include "renderer/passes/anti_lag_pass.h"
 #include "renderer/passes/path_trace_pass.h"
 
 #include <algorithm>
@@ -48,7 +49,8 @@ void SvgfPass::reproject(const SvgfInputs& in, const SvgfSettings& settings) {
                {"uHistoryDiffuse", filteredHistory_[previous], diffuseLobe},
                {"uHistorySpecular", filteredHistory_[previous], specularLobe},
                {"uHistoryMoments", temporal_[previous], momentsAttachment},
-               {"uHistoryLength", temporal_[previous], historyLengthAttachment}},
+               {"uHistoryLength", temporal_[previous], historyLengthAttachment},
+               {"uAntiLag", in.antiLag, antiLagAttachment}},
               [&](const gl::ShaderProgram& p) {
                   glUniform1i(p.uniform("uHistoryValid"), in.historyValid ? 1 : 0);
                   glUniform1f(p.uniform("uAlpha"), settings.alpha);

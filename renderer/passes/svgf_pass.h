@@ -31,6 +31,7 @@ struct SvgfInputs {
     const gl::RenderTarget& motion;
     const gl::RenderTarget& previousGBuffer; // attachments 0 normal + depth, 1 id
     bool historyValid = false;
+    const gl::RenderTarget& antiLag; // attachment antiLagAttachment, x: how stale history is (anti_lag_pass.h)
 };
 
 class SvgfPass {

@@ -1,5 +1,6 @@
 #include "renderer/passes/taa_pass.h"
 
+#include "renderer/passes/anti_lag_pass.h"
 #include "renderer/passes/path_trace_pass.h"
 
 namespace glint::renderer {
@@ -18,7 +19,8 @@ const gl::RenderTarget& TaaPass::execute(const TaaInputs& in, const TaaSettings&
                {"uNormalDepth", in.gbuffer, normalDepthAttachment},
                {"uObjectId", in.gbuffer, objectIdAttachment},
                {"uPreviousNormalDepth", in.previousGBuffer, 0},
-               {"uPreviousObjectId", in.previousGBuffer, 1}},
+               {"uPreviousObjectId", in.previousGBuffer, 1},
+               {"uAntiLag", in.antiLag, antiLagAttachment}},
               [&](const gl::ShaderProgram& p) {
                   glUniform1i(p.uniform("uHistoryValid"), in.historyValid ? 1 : 0);
                   glUniform1f(p.uniform("uMinBlend"), settings.minBlend);

@@ -1,7 +1,7 @@
 #pragma once
 // Temporal anti-aliasing (shaders/reconstruction/taa.frag.glsl). Inputs: this frame's linear
-// radiance, motion vectors, the current and previous G-buffers (disocclusion). Internal: two history
-// targets, swapped each frame. Output: the new history (linear radiance, alpha = history length).
+// radiance, motion vectors, the current and previous G-buffers (disocclusion), anti-lag (stale
+// lighting shortens history). Internal: two history targets, swapped each frame. Output: the new history (linear radiance, alpha = history length).
 #include "renderer/passes/fullscreen_stage.h"
 
 namespace glint::renderer {
@@ -18,6 +18,7 @@ struct TaaInputs {
     const gl::RenderTarget& gbuffer;          // path_trace_pass.h attachments
     const gl::RenderTarget& previousGBuffer;  // attachments 0 normal + depth, 1 id
     bool historyValid = false;
+    const gl::RenderTarget& antiLag; // attachment antiLagAttachment, x: how stale history is (anti_lag_pass.h)
 };
 
 class TaaPass {

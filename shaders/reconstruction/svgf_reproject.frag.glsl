@@ -22,6 +22,7 @@ uniform sampler2D uHistoryDiffuse;  // filtered illumination, rgb
 uniform sampler2D uHistorySpecular;
 uniform sampler2D uHistoryMoments;  // diffuse E[l], E[l^2], specular E[l], E[l^2]
 uniform sampler2D uHistoryLength;   // x
+uniform sampler2D uAntiLag;         // x: how stale history is, 0..1 (anti_lag_pass.h)
 uniform int uHistoryValid;
 uniform float uAlpha;         // minimum weight of the current frame (0.2 in the paper)
 uniform float uMomentsAlpha;
@@ -107,9 +108,11 @@ void main() {
     historySpecular /= weight;
     moments /= weight;
     pastLength /= weight;
-    float historyLength = pastLength + 1.0;
-    float alpha = max(uAlpha, 1.0 / historyLength);
-    float momentsAlpha = max(uMomentsAlpha, 1.0 / historyLength);
+    // Where the lighting changed, history is shortened (and the variance turns spatial) by anti-lag.
+    float stale = texelFetch(uAntiLag, pixel, 0).x;
+    float historyLength = mix(pastLength, 0.0, stale) + 1.0;
+    float alpha = max(max(uAlpha, 1.0 / historyLength), stale);
+    float momentsAlpha = max(max(uMomentsAlpha, 1.0 / historyLength), stale);
     float specularShort = mix(uAlpha, 0.5, smoothness(pixel));
     vec2 alphas = vec2(alpha, max(alpha, specularShort));
     vec4 m = mix(moments, l, vec4(momentsAlpha, momentsAlpha, max(momentsAlpha, specularShort), max(momentsAlpha, specularShort)));

@@ -3,6 +3,7 @@
 // Salvi 2016) and blended (see uPerceptualBlend). The blend weight grows with speed (less smear when moving) and is
 // 1 where the surface was not visible last frame (id/depth/normal test) or history is invalid.
 // History alpha holds its length in frames, so a still view averages up to 1 / uMinBlend frames.
+// Anti-lag (stale lighting under the pixel) shortens that length and raises the blend weight.
 #include "reconstruction/common.glsl"
 
 uniform sampler2D uCurrent;      // linear radiance
@@ -12,6 +13,7 @@ uniform sampler2D uNormalDepth;
 uniform sampler2D uObjectId;
 uniform sampler2D uPreviousNormalDepth;
 uniform sampler2D uPreviousObjectId;
+uniform sampler2D uAntiLag;      // x: how stale history is, 0..1 (anti_lag_pass.h)
 uniform int uHistoryValid;
 uniform float uMinBlend;         // weight of the current frame on a still, long history
 uniform float uClipGamma;        // box half-size in standard deviations
@@ -87,9 +89,11 @@ void main() {
     vec4 history = historyAt(previous);
     vec3 past = perceptualFromLinear(finiteRadiance(history.rgb));
     past = rgbFromYCoCg(clipToBox(yCoCgFromRgb(past), mean, uClipGamma * sigma));
-    float frames = min(history.a + 1.0, 1.0 / uMinBlend);
+    // Where anti-lag finds the lighting changed, the history counts as that much shorter.
+    float stale = texelFetch(uAntiLag, pixel, 0).x;
+    float frames = min(mix(history.a, 0.0, stale) + 1.0, 1.0 / uMinBlend);
     float speed = clamp(length(motion) / 2.0, 0.0, 1.0); // pixels per frame
-    float blend = mix(1.0 / frames, max(1.0 / frames, 0.5), speed);
+    float blend = max(mix(1.0 / frames, max(1.0 / frames, 0.5), speed), stale);
     vec3 blended = uPerceptualBlend != 0 ? linearFromPerceptual(mix(past, current, blend))
                                          : mix(linearFromPerceptual(past), linearFromPerceptual(current), blend);
     outColor = vec4(blended, frames);

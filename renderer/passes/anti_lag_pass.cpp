@@ -1,0 +1,76 @@
+#include "renderer/passes/anti_lag_pass.h"
+
+#include "renderer/passes/path_trace_pass.h"
+
+namespace glint::renderer {
+namespace {
+
+int strata(int pixels) { return (pixels + antiLagStratum - 1) / antiLagStratum; }
+
+} // namespace
+
+AntiLagPass::AntiLagPass(gl::ProgramCache& programs, int width, int height)
+    : programs_(programs), gradient_(strata(width), strata(height), {GL_RGBA32F}),
+      history_{gl::RenderTarget(width, height, {GL_RGBA32F, GL_RGBA32F}),
+               gl::RenderTarget(width, height, {GL_RGBA32F, GL_RGBA32F})} {}
+
+const gl::RenderTarget& AntiLagPass::execute(const AntiLagInputs& in, const AntiLagSettings& settings) {
+    current_ = 1 - current_; // this frame writes what the last one did not
+    if (!settings.enabled) {
+        history_[current_].clear();
+        return history_[current_];
+    }
+    measureGradient(in, settings);
+    updateHistory(in, settings);
+    return history_[current_];
+}
+
+void AntiLagPass::measureGradient(const AntiLagInputs& in, const AntiLagSettings& settings) {
+    const gl::RenderTarget& previous = history_[1 - current_];
+    runStage(programs_, triangle_,
+             {"reconstruction/anti_lag_gradient.frag.glsl",
+              {"outGradient"},
+              {{"uRadiance", in.gbuffer, radianceAttachment},
+               {"uDiffuseAlbedo", in.gbuffer, diffuseAlbedoAttachment},
+               {"uSpecularAlbedo", in.gbuffer, specularAlbedoAttachment},
+               {"uNormalDepth", in.gbuffer, normalDepthAttachment},
+               {"uObjectId", in.gbuffer, objectIdAttachment},
+               {"uMotion", in.motion, 0},
+               {"uPreviousNormalDepth", in.previousGBuffer, 0},
+               {"uPreviousObjectId", in.previousGBuffer, 1},
+               {"uHistory", previous, 0}},
+              [&](const gl::ShaderProgram& p) {
+                  glUniform1i(p.uniform("uHistoryValid"), in.historyValid ? 1 : 0);
+                  glUniform1i(p.uniform("uStratum"), antiLagStratum);
+                  glUniform1f(p.uniform("uNoiseLow"), settings.noiseLow);
+                  glUniform1f(p.uniform("uNoiseHigh"), settings.noiseHigh);
+                  glUniform1f(p.uniform("uFullChange"), settings.fullChange);
+                  glUniform1f(p.uniform("uSpikeSigmas"), settings.spikeSigmas);
+              }},
+             gradient_);
+}
+
+void AntiLagPass::updateHistory(const AntiLagInputs& in, const AntiLagSettings& settings) {
+    const gl::RenderTarget& previous = history_[1 - current_];
+    runStage(programs_, triangle_,
+             {"reconstruction/anti_lag_history.frag.glsl",
+              {"outMoments", "outAntiLag"},
+              {{"uRadiance", in.gbuffer, radianceAttachment},
+               {"uDiffuseAlbedo", in.gbuffer, diffuseAlbedoAttachment},
+               {"uSpecularAlbedo", in.gbuffer, specularAlbedoAttachment},
+               {"uNormalDepth", in.gbuffer, normalDepthAttachment},
+               {"uObjectId", in.gbuffer, objectIdAttachment},
+               {"uMotion", in.motion, 0},
+               {"uPreviousNormalDepth", in.previousGBuffer, 0},
+               {"uPreviousObjectId", in.previousGBuffer, 1},
+               {"uHistory", previous, 0},
+               {"uGradient", gradient_, 0}},
+              [&](const gl::ShaderProgram& p) {
+                  glUniform1i(p.uniform("uHistoryValid"), in.historyValid ? 1 : 0);
+                  glUniform1i(p.uniform("uStratum"), antiLagStratum);
+                  glUniform1f(p.uniform("uAlpha"), settings.momentsAlpha);
+              }},
+             history_[current_]);
+}
+
+} // namespace glint::renderer

@@ -1,0 +1,42 @@
+// Anti-lag helpers shared by its two stages: this frame's demodulated luminance (the signal SVGF
+// accumulates) and the anti-lag history's luminance moments reprojected to a pixel.
+// Needs common.glsl and svgf_demodulate.glsl included before it.
+
+uniform sampler2D uRadiance;
+uniform sampler2D uDiffuseAlbedo;
+uniform sampler2D uSpecularAlbedo;
+uniform sampler2D uNormalDepth;
+uniform sampler2D uObjectId;
+uniform sampler2D uMotion;
+uniform sampler2D uPreviousNormalDepth;
+uniform sampler2D uPreviousObjectId;
+uniform sampler2D uHistory; // x = E[l], y = E[l^2], z = history length in frames
+uniform int uHistoryValid;
+
+float currentLuminance(ivec2 p) {
+    return luminance(demodulate(finiteRadiance(texelFetch(uRadiance, p, 0).rgb), lobeAlbedo(uDiffuseAlbedo, uSpecularAlbedo, p)));
+}
+
+// Bilinear over the previous frame's taps that saw this pixel's surface (SVGF's per-tap test, so a
+// disoccluded pixel has no history). `weight` < 1e-3: no history.
+vec3 reprojectedMoments(ivec2 pixel, out float weight) {
+    weight = 0.0;
+    vec3 sum = vec3(0.0);
+    ivec2 size = textureSize(uHistory, 0);
+    vec2 previous = vec2(pixel) + 0.5 + texelFetch(uMotion, pixel, 0).xy;
+    if (uHistoryValid == 0 || !insideImage(previous, vec2(size))) return sum;
+    vec4 normalDepth = texelFetch(uNormalDepth, pixel, 0);
+    float id = texelFetch(uObjectId, pixel, 0).x;
+    vec2 base = floor(previous - 0.5);
+    vec2 f = previous - 0.5 - base;
+    for (int j = 0; j <= 1; ++j)
+        for (int i = 0; i <= 1; ++i) {
+            ivec2 q = ivec2(base) + ivec2(i, j);
+            if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
+            if (!sameSurface(normalDepth, id, texelFetch(uPreviousNormalDepth, q, 0), texelFetch(uPreviousObjectId, q, 0).x)) continue;
+            float w = (i == 1 ? f.x : 1.0 - f.x) * (j == 1 ? f.y : 1.0 - f.y);
+            sum += w * texelFetch(uHistory, q, 0).xyz;
+            weight += w;
+        }
+    return weight >= 1.0e-3 ? sum / weight : vec3(0.0);
+}
