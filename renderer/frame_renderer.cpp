@@ -4,6 +4,7 @@
 #include "renderer/gl/render_target.h"
 #include "renderer/passes/accumulate_pass.h"
 #include "renderer/passes/reconstruction.h"
+#include "renderer/passes/region_composite.h"
 #include "renderer/passes/tonemap_pass.h"
 #include "scene/anim/node_animation.h"
 #include "scene/anim/scene_at_time.h"
@@ -154,6 +155,7 @@ struct FrameTargets {
     AccumulatePass stillMean;    // every sample since the picture last changed
     gl::RenderTarget display;    // tonemapped RGBA8
     Reconstruction reconstruction;
+    RegionComposite region;      // with a render region: the image outside it stays
 };
 
 struct FrameRenderer::State {
@@ -184,6 +186,7 @@ struct FrameRenderer::State {
     int frames = 0;
     std::uint32_t frameSampleIndex = 0; // real-time frames' sample counter: decorrelates frames
     const gl::RenderTarget* result = nullptr; // linear radiance of the last frame (attachment 0)
+    bool regionChanged = false; // set, moved or cleared since the last frame
 
     void upload() {
         gpu = std::make_unique<GpuScene>(posed, environmentFile, meshCache, &textureCache);
@@ -217,7 +220,32 @@ struct FrameRenderer::State {
     }
     void renderAccumulated();
     void renderRealTime();
+    void beginRegion();
+    void endRegion();
 };
+
+// A new, moved or cleared region restarts the samples (inside it); a set one freezes the last
+// image for the outside and keeps every pass inside its pixels with the scissor.
+void FrameRenderer::State::beginRegion() {
+    if (regionChanged) {
+        pictureChanged = true;
+        historyValid = false;
+        regionChanged = false;
+        if (settings.region.active) targets->region.freeze(result, settings.width, settings.height);
+    }
+    if (!settings.region.active) return;
+    if (!targets->region.fits(settings.width, settings.height)) targets->region.freeze(result, settings.width, settings.height);
+    const PixelRect r = regionPixels(settings.region, settings.width, settings.height);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(r.x, r.y, r.width, r.height);
+}
+
+void FrameRenderer::State::endRegion() {
+    if (!settings.region.active) return;
+    glDisable(GL_SCISSOR_TEST);
+    if (result) targets->region.update(*result, regionPixels(settings.region, settings.width, settings.height));
+    result = &targets->region.image();
+}
 
 void FrameRenderer::State::renderAccumulated() {
     FrameTargets& t = *targets;
@@ -291,6 +319,10 @@ void FrameRenderer::applyChanges(const Scene& scene, const ChangeSet& changes) {
 void FrameRenderer::setSettings(const FrameSettings& settings) {
     State& s = *state_;
     const bool image = !sameImageSettings(s.settings, settings);
+    if (!(settings.region == s.settings.region)) {
+        s.regionChanged = true;
+        if (s.targets) s.targets->stillMean.reset(); // the count restarts now (the mean's pixels stay)
+    }
     s.settings = settings;
     if (image) s.resetAll();
 }
@@ -336,9 +368,11 @@ void FrameRenderer::renderFrame() {
         s.camera = camera;
         s.cameraSet = true;
     }
+    s.beginRegion();
     if (!s.historyValid) s.previousCamera = s.camera;
     if (traitsOf(s.settings.configuration).accumulate) s.renderAccumulated();
     else s.renderRealTime();
+    s.endRegion();
     s.previousCamera = s.camera;
     s.previousInstances = s.instances;
     ++s.frames;

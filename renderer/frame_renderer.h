@@ -12,6 +12,7 @@
 #include "renderer/configuration.h"
 #include "renderer/gpu_scene/camera_setup.h"
 #include "renderer/passes/path_trace_pass.h"
+#include "renderer/render_region.h"
 #include "scene/core/scene.h"
 #include "scene/history/change_set.h"
 
@@ -37,6 +38,10 @@ struct FrameSettings {
     float aoDistance = 1.0f;
     int width = 640;
     int height = 360;
+    // Samples go only into this region; outside it the last image stays (renderer/render_region.h).
+    // Accumulation, reconstruction and sampleCount() then refer to the region's pixels; the
+    // G-buffer images read back are valid inside it only.
+    RenderRegion region;
 };
 
 // Linear images read back from the last frame, rows top-down (as image files want them).

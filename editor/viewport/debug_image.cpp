@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace glint::editor {
 
@@ -17,9 +18,54 @@ float largestFinite(const std::vector<float>& values) {
     return m > 0.0f ? m : 1.0f;
 }
 
+// Cost per pixel of the BvhCost variant: radiance.r (RGBA).
+float costAt(const renderer::FrameImages& images, std::size_t pixel) { return images.radiance[4 * pixel]; }
+
+QImage heatImage(const renderer::FrameImages& images) {
+    QImage out(images.width, images.height, QImage::Format_RGB32);
+    out.fill(Qt::black);
+    const std::size_t n = std::size_t(images.width) * std::size_t(images.height);
+    if (images.radiance.size() < 4 * n) return out;
+    const float top = bvhCostScale(images);
+    out.setText(kCostScaleKey, QString::number(double(top)));
+    const float scale = 1.0f / top;
+    for (int y = 0; y < images.height; ++y) {
+        auto* row = reinterpret_cast<QRgb*>(out.scanLine(y));
+        for (int x = 0; x < images.width; ++x)
+            row[x] = heatColour(costAt(images, std::size_t(y) * std::size_t(images.width) + std::size_t(x)) * scale).rgb();
+    }
+    return out;
+}
+
 } // namespace
 
+QColor heatColour(float t) {
+    // Black, blue, cyan, green, yellow, red: ordered by lightness first, then hue, so that both
+    // "none" and "a lot" are easy to tell apart from the middle of the scale.
+    static constexpr float stops[][3] = {{0, 0, 0}, {0.1f, 0.2f, 0.9f}, {0, 0.8f, 0.9f}, {0.1f, 0.85f, 0.2f}, {1, 0.9f, 0.1f}, {0.95f, 0.1f, 0.05f}};
+    constexpr int last = int(std::size(stops)) - 1;
+    if (!(t > 0.0f)) return QColor(0, 0, 0);
+    const float x = std::min(t, 1.0f) * float(last);
+    const int i = std::min(int(x), last - 1);
+    const float f = x - float(i);
+    const auto mixed = [&](int c) { return toByte(stops[i][c] + (stops[i + 1][c] - stops[i][c]) * f); };
+    return QColor(mixed(0), mixed(1), mixed(2));
+}
+
+float bvhCostScale(const renderer::FrameImages& images) {
+    float largest = 0.0f;
+    const std::size_t n = std::min(images.radiance.size() / 4, std::size_t(images.width) * std::size_t(images.height));
+    for (std::size_t i = 0; i < n; ++i)
+        if (std::isfinite(costAt(images, i))) largest = std::max(largest, costAt(images, i));
+    float step = 1.0f;
+    while (step * 10.0f < largest) step *= 10.0f;
+    for (const float m : {1.0f, 2.0f, 5.0f, 10.0f})
+        if (largest <= m * step) return m * step;
+    return 10.0f * step;
+}
+
 QImage debugImage(const renderer::FrameImages& images, ViewMode mode) {
+    if (mode == ViewMode::BvhCost) return heatImage(images);
     QImage out(images.width, images.height, QImage::Format_RGB32);
     out.fill(Qt::black);
     const std::size_t n = std::size_t(images.width) * std::size_t(images.height);

@@ -1,9 +1,11 @@
 #include "editor/viewport/overlay_painter.h"
 
 #include "editor/document/document.h"
+#include "editor/viewport/debug_image.h"
 #include "editor/viewport/render_view.h"
 #include "scene/anim/camera_path_sampling.h"
 
+#include <QFontMetrics>
 #include <QPainter>
 #include <QPainterPath>
 
@@ -102,6 +104,37 @@ void OverlayPainter::drawBoxes(const std::vector<bvh::Aabb>& boxes) {
                 if (a && b) painter_.drawLine(*a, *b);
             }
     }
+}
+
+void OverlayPainter::drawCostLegend(float scale) {
+    constexpr int kBarWidth = 120, kBarHeight = 10, kMargin = 8, kSteps = 60;
+    const QFontMetrics metrics = painter_.fontMetrics();
+    const int textHeight = metrics.height();
+    const QRect box(view_.width() - kBarWidth - 2 * kMargin, view_.height() - kBarHeight - 2 * textHeight - 2 * kMargin,
+                    kBarWidth + kMargin, kBarHeight + 2 * textHeight + kMargin);
+    painter_.setRenderHint(QPainter::Antialiasing, false);
+    painter_.fillRect(box, QColor(0, 0, 0, 160));
+    const QRect bar(box.left() + kMargin / 2, box.top() + textHeight + kMargin / 2, kBarWidth, kBarHeight);
+    for (int i = 0; i < kSteps; ++i) {
+        const int x0 = bar.left() + bar.width() * i / kSteps, x1 = bar.left() + bar.width() * (i + 1) / kSteps;
+        painter_.fillRect(QRect(x0, bar.top(), x1 - x0, bar.height()), heatColour((float(i) + 0.5f) / float(kSteps)));
+    }
+    painter_.setPen(Qt::white);
+    painter_.drawText(QRect(bar.left(), box.top() + 2, bar.width(), textHeight), Qt::AlignLeft | Qt::AlignVCenter,
+                      tr("BVH nodes + primitives"));
+    const QRect labels(bar.left(), bar.bottom() + 2, bar.width(), textHeight);
+    painter_.drawText(labels, Qt::AlignLeft | Qt::AlignVCenter, QStringLiteral("0"));
+    painter_.drawText(labels, Qt::AlignRight | Qt::AlignVCenter, QString::number(double(scale), 'g', 6));
+}
+
+void OverlayPainter::drawRegion(const QRectF& rect) {
+    painter_.setRenderHint(QPainter::Antialiasing, false);
+    painter_.setBrush(Qt::NoBrush);
+    painter_.setPen(QPen(QColor(0, 0, 0, 200), 1.0));
+    painter_.drawRect(rect);
+    QPen dashed(QColor(255, 200, 40), 1.0, Qt::DashLine);
+    painter_.setPen(dashed);
+    painter_.drawRect(rect);
 }
 
 void OverlayPainter::drawMessage(const QString& text) {

@@ -1,11 +1,14 @@
 #pragma once
 // The viewport's 2D overlays, drawn with QPainter over the rendered image: the gizmo of the
-// current node, camera-path curves with their keys, and messages. Geometry is projected with the
+// current node, camera-path curves with their keys, messages, the BVH heat map's legend and the
+// render region's frame. Geometry is projected with the
 // view camera, so overlays and the path-traced image line up.
 #include "editor/viewport/gizmo_math.h"
 #include "renderer/bvh/aabb.h"
 #include "scene/core/ids.h"
 
+#include <QCoreApplication>
+#include <QRectF>
 #include <QString>
 
 #include <vector>
@@ -18,6 +21,7 @@ class Document;
 class RenderView;
 
 class OverlayPainter {
+    Q_DECLARE_TR_FUNCTIONS(OverlayPainter)
 public:
     OverlayPainter(QPainter& painter, const RenderView& view, const Document& document)
         : painter_(painter), view_(view), document_(document) {}
@@ -27,6 +31,10 @@ public:
     void drawMessage(const QString& text);
     // The top-level BVH's leaves: one world box per instance.
     void drawBoxes(const std::vector<bvh::Aabb>& boxes);
+    // The BVH heat map's legend: a colour bar from 0 to `scale` (nodes + primitives per camera ray).
+    void drawCostLegend(float scale);
+    // The render region: a dashed frame around `rect` (widget coordinates).
+    void drawRegion(const QRectF& rect);
 
 private:
     QPainter& painter_;

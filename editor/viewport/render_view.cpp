@@ -148,12 +148,17 @@ void RenderView::configure(bool moving, int divisor) {
     s.exposure = project.exposure;
     s.clamp = project.clamp;
     s.view = mode_ == ViewMode::AmbientOcclusion ? renderer::DebugView::AmbientOcclusion : renderer::DebugView::None;
+    if (mode_ == ViewMode::BvhCost) { // counts: a plain mean, never reconstructed with history
+        s.view = renderer::DebugView::BvhCost;
+        s.configuration = renderer::Configuration::Accumulate;
+    }
+    s.region = region_.renderRegion();
     s.width = std::max(1, int(std::lround(width() * dpr)) / divisor);
     s.height = std::max(1, int(std::lround(height() * dpr)) / divisor);
     const renderer::FrameSettings& old = renderer_->settings();
     const bool same = old.configuration == s.configuration && old.spp == s.spp && old.maxSamples == s.maxSamples &&
                       old.bounces == s.bounces && old.seed == s.seed && old.exposure == s.exposure && old.clamp == s.clamp &&
-                      old.view == s.view && old.width == s.width && old.height == s.height;
+                      old.view == s.view && old.width == s.width && old.height == s.height && old.region == s.region;
     if (!same) renderer_->setSettings(s);
     if (lookThrough_.valid() && document_.scene().contains(lookThrough_))
         renderer_->useSceneCamera(document_.scene().at(lookThrough_).name);
@@ -263,6 +268,8 @@ void RenderView::drawOverlays() {
     }
     OverlayPainter overlays(painter, *this, document_);
     if (mode_ == ViewMode::BvhBoxes) overlays.drawBoxes(picker().instanceBounds());
+    if (mode_ == ViewMode::BvhCost && !readBack_.isNull()) overlays.drawCostLegend(readBack_.text(kCostScaleKey).toFloat());
+    if (const auto frame = region_.frame(size()); frame && !showsRaster(mode_)) overlays.drawRegion(*frame);
     overlays.drawCameraPaths(lookThrough_);
     if (const NodeId node = document_.currentNode(); node.valid() && document_.scene().contains(node))
         overlays.drawGizmo(gizmoFrame(node), gizmoMode_, gizmoDrag_ ? gizmoDrag_->axis() : -1);
@@ -323,6 +330,18 @@ void RenderView::takeSnapshot() {
 
 void RenderView::setComparing(bool on) {
     comparing_ = on;
+    update();
+}
+
+void RenderView::armRenderRegion() {
+    region_.arm();
+    setCursor(Qt::CrossCursor);
+}
+
+void RenderView::setRenderRegion(const std::optional<QRectF>& fractions) {
+    region_.cancel();
+    unsetCursor();
+    region_.setRegion(fractions);
     update();
 }
 
@@ -398,6 +417,7 @@ void RenderView::inspectPixel(QPointF p) {
 
 void RenderView::mousePressEvent(QMouseEvent* event) {
     lastMouse_ = pressMouse_ = event->position();
+    if (event->button() == Qt::LeftButton && region_.press(event->position())) return;
     const auto mods = event->modifiers();
     if (event->button() == Qt::LeftButton && !(mods & Qt::AltModifier)) {
         const NodeId node = document_.currentNode();
@@ -422,6 +442,10 @@ void RenderView::mousePressEvent(QMouseEvent* event) {
 }
 
 void RenderView::mouseMoveEvent(QMouseEvent* event) {
+    if (region_.move(event->position())) {
+        update();
+        return;
+    }
     const QPointF d = event->position() - lastMouse_;
     lastMouse_ = event->position();
     switch (drag_) {
@@ -444,6 +468,11 @@ void RenderView::mouseMoveEvent(QMouseEvent* event) {
 }
 
 void RenderView::mouseReleaseEvent(QMouseEvent* event) {
+    if (region_.release(event->position(), size())) {
+        unsetCursor();
+        update();
+        return;
+    }
     if (drag_ == Drag::Click) {
         const QPointF moved = event->position() - pressMouse_;
         if (std::hypot(moved.x(), moved.y()) <= kClickSlopPixels) {
@@ -467,6 +496,10 @@ void RenderView::wheelEvent(QWheelEvent* event) {
 void RenderView::keyPressEvent(QKeyEvent* event) {
     if (drag_ == Drag::Fly && !event->isAutoRepeat()) {
         flyKeys_.insert(event->key());
+        return;
+    }
+    if (event->key() == Qt::Key_Escape && region_.armed()) {
+        setRenderRegion(region_.region()); // drops the armed drag, keeps the region
         return;
     }
     if (drag_ == Drag::Gizmo && event->key() == Qt::Key_Escape) {

@@ -6,6 +6,7 @@
 // floating the viewport).
 #include "editor/viewport/frame_budget.h"
 #include "editor/viewport/gizmo_math.h"
+#include "editor/viewport/region_tool.h"
 #include "editor/viewport/view_camera.h"
 #include "editor/viewport/view_modes.h"
 #include "scene/history/change_set.h"
@@ -66,6 +67,10 @@ public:
     void takeSnapshot();                // A/B: the current image becomes A
     void setComparing(bool on);         // A on the left of a divider, the live view on the right
     bool hasSnapshot() const { return !snapshot_.isNull(); }
+    // Render region (region_tool.h): arm a drag, or set it as fractions of the view (nullopt clears).
+    void armRenderRegion();
+    void setRenderRegion(const std::optional<QRectF>& fractions);
+    const std::optional<QRectF>& renderRegion() const { return region_.region(); }
     const ViewportStats& stats() const { return stats_; }
 
     void frameSelection();
@@ -131,6 +136,7 @@ private:
     bool comparing_ = false;
     int stillDivisor_ = 0; // locked while the view is still, so accumulation is not reset
     QImage snapshot_;
+    RegionTool region_;
     QImage readBack_;      // the G-buffer views' image
     QElapsedTimer sinceMotion_;
     QTimer settleTimer_;   // one paint after motion stops: switch to the still configuration

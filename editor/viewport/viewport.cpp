@@ -24,6 +24,7 @@ QString modeName(ViewMode mode) {
     case ViewMode::Variance: return Viewport::tr("Variance");
     case ViewMode::Depth: return Viewport::tr("Depth");
     case ViewMode::BvhBoxes: return Viewport::tr("BVH instance boxes");
+    case ViewMode::BvhCost: return Viewport::tr("BVH traversal cost (heat map)");
     }
     return {};
 }
@@ -101,6 +102,18 @@ void Viewport::createActions() {
         view_->takeSnapshot();
         compare_->setEnabled(true);
     });
+    renderRegion_ = new QAction(tr("Set render region"), this);
+    renderRegion_->setToolTip(tr("Drag a rectangle: the path tracer renders only inside it"));
+    renderRegion_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
+    renderRegion_->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    addAction(renderRegion_);
+    connect(renderRegion_, &QAction::triggered, view_, &RenderView::armRenderRegion);
+    clearRenderRegion_ = new QAction(tr("Clear render region"), this);
+    clearRenderRegion_->setShortcut(QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_B));
+    clearRenderRegion_->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    addAction(clearRenderRegion_);
+    connect(clearRenderRegion_, &QAction::triggered, this, [this] { view_->setRenderRegion(std::nullopt); });
+
     compare_ = checkable(this, tr("Compare A | B"), QKeySequence());
     compare_->setEnabled(false);
     connect(compare_, &QAction::toggled, view_, &RenderView::setComparing);
@@ -111,7 +124,8 @@ QList<QAction*> Viewport::gizmoActions() const { return gizmos_->actions(); }
 
 QList<QAction*> Viewport::allActions() const {
     QList<QAction*> all = viewModeActions();
-    all << gizmoActions() << frameSelection_ << makeSceneCamera_ << lookThrough_ << snap_ << inspect_ << snapshot_ << compare_;
+    all << gizmoActions() << frameSelection_ << makeSceneCamera_ << lookThrough_ << snap_ << inspect_ << snapshot_ << compare_ << renderRegion_
+        << clearRenderRegion_;
     return all;
 }
 

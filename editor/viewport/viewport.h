@@ -32,6 +32,8 @@ public:
     QAction* inspectAction() const { return inspect_; }
     QAction* snapshotAction() const { return snapshot_; }
     QAction* compareAction() const { return compare_; }
+    QAction* renderRegionAction() const { return renderRegion_; }      // Ctrl+B: drag a render region
+    QAction* clearRenderRegionAction() const { return clearRenderRegion_; } // Ctrl+Alt+B
     QList<QAction*> gizmoActions() const;
     // Every action above, for a menu.
     QList<QAction*> allActions() const;
@@ -61,6 +63,8 @@ private:
     QAction* inspect_ = nullptr;
     QAction* snapshot_ = nullptr;
     QAction* compare_ = nullptr;
+    QAction* renderRegion_ = nullptr;
+    QAction* clearRenderRegion_ = nullptr;
 };
 
 } // namespace glint::editor
