@@ -4,6 +4,7 @@
 #include "renderer/gl/render_target.h"
 #include "renderer/passes/accumulate_pass.h"
 #include "renderer/passes/reconstruction.h"
+#include "renderer/passes/reconstruction_parameters.h"
 #include "renderer/passes/region_composite.h"
 #include "renderer/passes/tonemap_pass.h"
 #include "scene/anim/node_animation.h"
@@ -280,6 +281,8 @@ void FrameRenderer::State::renderRealTime() {
         if (previous != previousInstances.end() && previous->second != worldFromNode)
             in.movedInstances.push_back({static_cast<float>(id.value), previous->second * glm::inverse(worldFromNode)});
     }
+    t.reconstruction.taa = taaSettingsOf(document.settings.render.taa); // the project's, as the CLI renders it
+    t.reconstruction.svgf = svgfSettingsOf(document.settings.render.svgf);
     result = &t.reconstruction.run(in);
     historyValid = true;
 }

@@ -56,6 +56,8 @@ void PropertiesPanel::rebuild() {
     };
     if (scene_) {
         add(makeRenderForm(document_, report, content_));
+        add(makeReconstructionForm(document_, report, content_));
+        add(makeProjectForm(document_, report, content_));
         add(makeEnvironmentForm(document_, report, content_));
     } else if (!shown_.node) {
         auto* hint = new QLabel(tr("Select a node in the outliner or the viewport to edit it."), content_);

@@ -3,12 +3,16 @@
 
 #include "property_edits.h"
 
+#include <QComboBox>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLineEdit>
+#include <QSignalBlocker>
 #include <QToolButton>
+
+#include <algorithm>
 
 namespace glint::editor {
 namespace {
@@ -112,6 +116,98 @@ PropertyForm* makeRenderForm(Document& document, const Report& report, QWidget* 
         PropertyForm::tr("Light units"), {PropertyForm::tr("Blender (W = lm / 683)"), PropertyForm::tr("Raw")},
         [&scene] { return static_cast<int>(scene.settings.lightUnits); },
         [edit](int i) { edit([&](ProjectSettings& s) { s.lightUnits = static_cast<LightUnits>(i); }, 0); });
+    return form;
+}
+
+PropertyForm* makeProjectForm(Document& document, const Report& report, QWidget* parent) {
+    // What `glint render` and the exports take from the project besides the render settings.
+    auto* form = new PropertyForm(document, PropertyForm::tr("Camera and timeline"), parent);
+    const Edit edit = settingsEditor(document, report);
+    const Scene& scene = document.scene();
+    auto* camera = new QComboBox(form);
+    QObject::connect(camera, &QComboBox::activated, form, [edit, camera](int i) {
+        edit([&](ProjectSettings& s) { s.activeCamera = NodeId{camera->itemData(i).toUInt()}; }, 0);
+    });
+    // Filled on every refresh: cameras come and go with the document (renames too).
+    form->addWidget(PropertyForm::tr("Active camera"), camera, [&scene, camera] {
+        QSignalBlocker block(camera);
+        camera->clear();
+        camera->addItem(PropertyForm::tr("(the first camera)"), 0u);
+        for (const NodeId id : scene.depthFirst())
+            if (scene.at(id).get<Camera>()) camera->addItem(QString::fromStdString(scene.at(id).name), id.value);
+        camera->setCurrentIndex(std::max(0, camera->findData(scene.settings.activeCamera.value)));
+    });
+    form->addFloat(
+        PropertyForm::tr("Timeline start (s)"), 0.0, 60.0, 3, [&scene] { return scene.settings.timeline.start; },
+        [edit](double v, std::uint64_t i) { edit([&](ProjectSettings& s) { s.timeline.start = std::max(0.0, v); }, i); });
+    form->addFloat(
+        PropertyForm::tr("Timeline end (s, 0 = the animation's)"), 0.0, 60.0, 3, [&scene] { return scene.settings.timeline.end; },
+        [edit](double v, std::uint64_t i) { edit([&](ProjectSettings& s) { s.timeline.end = std::max(0.0, v); }, i); });
+    form->addText(
+        PropertyForm::tr("Frames per second"),
+        [&scene] {
+            const Timeline& t = scene.settings.timeline;
+            return t.fpsDenominator == 1 ? QString::number(t.fpsNumerator)
+                                         : QStringLiteral("%1/%2").arg(t.fpsNumerator).arg(t.fpsDenominator);
+        },
+        [edit, report](const QString& text) {
+            // "24" or a rational rate such as "24000/1001" (CONTRACTS.md).
+            const QStringList parts = text.trimmed().split('/');
+            bool okN = false, okD = parts.size() == 1;
+            const int numerator = parts.value(0).toInt(&okN);
+            const int denominator = parts.size() == 2 ? parts[1].toInt(&okD) : 1;
+            if (!okN || !okD || parts.size() > 2 || numerator <= 0 || denominator <= 0) {
+                report(PropertyForm::tr("Frames per second must be a positive number or a ratio such as 24000/1001, not \"%1\".").arg(text));
+                return;
+            }
+            edit(
+                [&](ProjectSettings& s) {
+                    s.timeline.fpsNumerator = numerator;
+                    s.timeline.fpsDenominator = denominator;
+                },
+                0);
+        });
+    return form;
+}
+
+PropertyForm* makeReconstructionForm(Document& document, const Report& report, QWidget* parent) {
+    // Used by the configurations with history (baseline to heavy) and saved in the project, so
+    // exports and `glint render` filter the same way (docs/DENOISING.md says what each one does).
+    auto* form = new PropertyForm(document, PropertyForm::tr("Real-time reconstruction"), parent);
+    const Edit edit = settingsEditor(document, report);
+    const Scene& scene = document.scene();
+    const TaaParameters& taa = scene.settings.render.taa;
+    const SvgfParameters& svgf = scene.settings.render.svgf;
+    form->addFloat(
+        PropertyForm::tr("TAA blend (current frame)"), 0.01, 1.0, 3, [&taa] { return double(taa.blend); },
+        [edit](double v, std::uint64_t i) { edit([&](ProjectSettings& s) { s.render.taa.blend = float(std::clamp(v, 0.01, 1.0)); }, i); });
+    form->addFloat(
+        PropertyForm::tr("TAA clip box (std. deviations)"), 0.25, 4.0, 2, [&taa] { return double(taa.clipGamma); },
+        [edit](double v, std::uint64_t i) { edit([&](ProjectSettings& s) { s.render.taa.clipGamma = float(std::clamp(v, 0.05, 16.0)); }, i); });
+    form->addCheck(
+        PropertyForm::tr("TAA perceptual blend"), [&taa] { return taa.perceptualBlend; },
+        [edit](bool on) { edit([&](ProjectSettings& s) { s.render.taa.perceptualBlend = on; }, 0); });
+    form->addInt(
+        PropertyForm::tr("SVGF a-trous iterations"), 1, 10, [&svgf] { return svgf.iterations; },
+        [edit](int v) { edit([&](ProjectSettings& s) { s.render.svgf.iterations = v; }, 0); });
+    form->addFloat(
+        PropertyForm::tr("SVGF temporal alpha"), 0.01, 1.0, 3, [&svgf] { return double(svgf.alpha); },
+        [edit](double v, std::uint64_t i) { edit([&](ProjectSettings& s) { s.render.svgf.alpha = float(std::clamp(v, 0.01, 1.0)); }, i); });
+    form->addFloat(
+        PropertyForm::tr("SVGF moments alpha"), 0.01, 1.0, 3, [&svgf] { return double(svgf.momentsAlpha); },
+        [edit](double v, std::uint64_t i) { edit([&](ProjectSettings& s) { s.render.svgf.momentsAlpha = float(std::clamp(v, 0.01, 1.0)); }, i); });
+    form->addFloat(
+        PropertyForm::tr("SVGF luminance sigma"), 0.1, 32.0, 2, [&svgf] { return double(svgf.sigmaLuminance); },
+        [edit](double v, std::uint64_t i) { edit([&](ProjectSettings& s) { s.render.svgf.sigmaLuminance = float(std::max(v, 0.01)); }, i); });
+    form->addFloat(
+        PropertyForm::tr("SVGF normal sigma (exponent)"), 0.0, 512.0, 1, [&svgf] { return double(svgf.sigmaNormal); },
+        [edit](double v, std::uint64_t i) { edit([&](ProjectSettings& s) { s.render.svgf.sigmaNormal = float(std::max(v, 0.0)); }, i); });
+    form->addFloat(
+        PropertyForm::tr("SVGF depth sigma"), 0.05, 16.0, 2, [&svgf] { return double(svgf.sigmaDepth); },
+        [edit](double v, std::uint64_t i) { edit([&](ProjectSettings& s) { s.render.svgf.sigmaDepth = float(std::max(v, 0.01)); }, i); });
+    form->addFloat(
+        PropertyForm::tr("SVGF firefly ratio"), 1.0, 64.0, 1, [&svgf] { return double(svgf.fireflyRatio); },
+        [edit](double v, std::uint64_t i) { edit([&](ProjectSettings& s) { s.render.svgf.fireflyRatio = float(std::max(v, 1.0)); }, i); });
     return form;
 }
 

@@ -22,5 +22,7 @@ PropertyForm* makeCameraForm(Document& document, NodeId node, const Report& repo
 PropertyForm* makeMaterialForm(Document& document, MaterialId material, const Report& report, QWidget* parent);
 PropertyForm* makeEnvironmentForm(Document& document, const Report& report, QWidget* parent);
 PropertyForm* makeRenderForm(Document& document, const Report& report, QWidget* parent);
+PropertyForm* makeProjectForm(Document& document, const Report& report, QWidget* parent);
+PropertyForm* makeReconstructionForm(Document& document, const Report& report, QWidget* parent);
 
 } // namespace glint::editor

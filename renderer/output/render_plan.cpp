@@ -43,6 +43,25 @@ Configuration configurationOf(const Scene& scene, const RenderOverrides& o) {
     return *parsed;
 }
 
+// The project's TAA and SVGF parameters change the pixels of the configurations that use them.
+// Named only where they differ from the defaults, so earlier frames keep their settings hash.
+void addReconstruction(ImageMetadata& metadata, const RenderSettings& project, Configuration configuration) {
+    const ConfigurationTraits traits = traitsOf(configuration);
+    const auto number = [](float v) { return formatNumber(double(v)); };
+    if (traits.taa && project.taa != TaaParameters{}) {
+        const TaaParameters& t = project.taa;
+        metadata["taa"] = "blend=" + number(t.blend) + " clipGamma=" + number(t.clipGamma) +
+                          " perceptualBlend=" + (t.perceptualBlend ? "1" : "0");
+    }
+    if (traits.svgf && project.svgf != SvgfParameters{}) {
+        const SvgfParameters& s = project.svgf;
+        metadata["svgf"] = "iterations=" + std::to_string(s.iterations) + " alpha=" + number(s.alpha) +
+                           " momentsAlpha=" + number(s.momentsAlpha) + " sigmaLuminance=" + number(s.sigmaLuminance) +
+                           " sigmaNormal=" + number(s.sigmaNormal) + " sigmaDepth=" + number(s.sigmaDepth) +
+                           " fireflyRatio=" + number(s.fireflyRatio);
+    }
+}
+
 } // namespace
 
 void sealSettings(ImageMetadata& metadata) {
@@ -90,6 +109,7 @@ RenderPlan planRender(const Scene& scene, const std::filesystem::path& sceneFile
                      {"env", r.envFile.string()},
                      {"tonemap", tonemapperName(tonemapper)},
                      {"exposureEv", formatNumber(double(cameraExposure) + double(r.exposure))}};
+    addReconstruction(plan.metadata, project, r.configuration);
     return plan;
 }
 

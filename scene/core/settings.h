@@ -21,6 +21,27 @@ struct Environment {
     friend bool operator==(const Environment&, const Environment&) = default;
 };
 
+// Real-time reconstruction of the configurations with history (baseline, realistic, full, heavy;
+// docs/DENOISING.md). Part of the project because it changes the pixels: the editor and the command
+// line render a project with the same values. Written only where they differ from these defaults.
+struct TaaParameters {
+    float blend = 0.1f;           // the current frame's weight on a long still history, (0, 1]
+    float clipGamma = 1.25f;      // variance-clipping box half-size in standard deviations, (0, 16]
+    bool perceptualBlend = false; // blend tonemapped colour (bounds fireflies, darkens noisy input)
+    friend bool operator==(const TaaParameters&, const TaaParameters&) = default;
+};
+
+struct SvgfParameters {
+    int iterations = 5;            // a-trous passes, 1..10 (the first also filters the history)
+    float alpha = 0.2f;            // the current frame's minimum weight in the temporal mean, (0, 1]
+    float momentsAlpha = 0.2f;     // the same for the luminance moments, (0, 1]
+    float sigmaLuminance = 4.0f;   // edge-stopping: luminance, in standard deviations, > 0
+    float sigmaNormal = 128.0f;    // edge-stopping: exponent on the normals' cosine, >= 0
+    float sigmaDepth = 1.0f;       // edge-stopping: depth, > 0
+    float fireflyRatio = 8.0f;     // a pixel may be this many times brighter than its neighbours, >= 1
+    friend bool operator==(const SvgfParameters&, const SvgfParameters&) = default;
+};
+
 struct RenderSettings {
     std::string configuration = "accumulate"; // baseline, realistic, full, heavy, accumulate, reference
     int width = 640;
@@ -31,6 +52,8 @@ struct RenderSettings {
     float exposure = 0.0f;  // EV added to the camera's
     Tonemapper tonemapper = Tonemapper::AcesFitted;
     float clamp = 0.0f;     // radiance clamp for fireflies; 0 = off (unbiased)
+    TaaParameters taa;
+    SvgfParameters svgf;
     friend bool operator==(const RenderSettings&, const RenderSettings&) = default;
 };
 

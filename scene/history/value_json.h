@@ -72,8 +72,12 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Image, name, uri, mimeType, encoded, width, h
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Sampler, name, magFilter, minFilter, wrapS, wrapT, unknown)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Texture, name, image, sampler, unknown)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Environment, file, color, intensity, rotationDegrees)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(RenderSettings, configuration, width, height, spp, bounces, seed, exposure,
-                                   tonemapper, clamp)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(TaaParameters, blend, clipGamma, perceptualBlend)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(SvgfParameters, iterations, alpha, momentsAlpha, sigmaLuminance,
+                                                sigmaNormal, sigmaDepth, fireflyRatio)
+// With defaults: command logs written before the reconstruction parameters existed still replay.
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(RenderSettings, configuration, width, height, spp, bounces, seed,
+                                                exposure, tonemapper, clamp, taa, svgf)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Timeline, start, end, fpsNumerator, fpsDenominator)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(OutputSettings, path, aovs, codec)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(ProjectSettings, render, environment, activeCamera, timeline, output,

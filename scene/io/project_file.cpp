@@ -75,6 +75,22 @@ public:
             wrongType(key, "an integer from 0 to 4294967295");
         out = v->get<std::uint32_t>();
     }
+    void read(const std::string& key, bool& out)
+    {
+        const json* v = find(key);
+        if (!v) return;
+        if (!v->is_boolean()) wrongType(key, "true or false");
+        out = v->get<bool>();
+    }
+    // A value that must also pass `valid`; `expected` names the allowed range in the error.
+    template <class T, class Valid>
+    void readChecked(const std::string& key, T& out, Valid valid, const std::string& expected)
+    {
+        T value = out;
+        read(key, value);
+        if (!valid(value)) throw FileError(file_, "bad-value", "key '" + prefix_ + key + "' must be " + expected);
+        out = value;
+    }
     void read(const std::string& key, float& out)
     {
         const json* v = find(key);
@@ -153,6 +169,30 @@ const char* enumName(Enum value, const std::array<std::pair<const char*, Enum>, 
     return names.front().first;
 }
 
+// Ranges outside which the filters divide by zero, never converge or stop filtering at all.
+bool inUnitInterval(float v) { return v > 0.0f && v <= 1.0f; }
+
+void readTaa(ObjectReader& r, TaaParameters& t)
+{
+    r.readChecked("blend", t.blend, inUnitInterval, "greater than 0 and at most 1");
+    r.readChecked("clipGamma", t.clipGamma, [](float v) { return v > 0.0f && v <= 16.0f; }, "greater than 0 and at most 16");
+    r.read("perceptualBlend", t.perceptualBlend);
+}
+
+void readSvgf(ObjectReader& r, SvgfParameters& s)
+{
+    r.readChecked("iterations", s.iterations, [](int v) { return v >= 1 && v <= 10; }, "an integer from 1 to 10");
+    r.readChecked("alpha", s.alpha, inUnitInterval, "greater than 0 and at most 1");
+    r.readChecked("momentsAlpha", s.momentsAlpha, inUnitInterval, "greater than 0 and at most 1");
+    const auto positive = [](float v) { return v > 0.0f && v <= std::numeric_limits<float>::max(); };
+    r.readChecked("sigmaLuminance", s.sigmaLuminance, positive, "a positive number");
+    r.readChecked("sigmaNormal", s.sigmaNormal, [](float v) { return v >= 0.0f && v <= std::numeric_limits<float>::max(); },
+                  "a number of at least 0");
+    r.readChecked("sigmaDepth", s.sigmaDepth, positive, "a positive number");
+    r.readChecked("fireflyRatio", s.fireflyRatio, [](float v) { return v >= 1.0f && v <= std::numeric_limits<float>::max(); },
+                  "a number of at least 1");
+}
+
 void readRender(ObjectReader& r, RenderSettings& s)
 {
     r.read("configuration", s.configuration);
@@ -164,6 +204,8 @@ void readRender(ObjectReader& r, RenderSettings& s)
     r.read("exposure", s.exposure);
     r.readEnum("tonemapper", s.tonemapper, kTonemapperNames);
     r.read("clamp", s.clamp);
+    r.object("taa", [&](ObjectReader& nested) { readTaa(nested, s.taa); });
+    r.object("svgf", [&](ObjectReader& nested) { readSvgf(nested, s.svgf); });
 }
 
 void readEnvironment(ObjectReader& r, Environment& e)
@@ -237,6 +279,31 @@ json parseJson(const std::string& text, const std::string& file)
     }
 }
 
+// Only what differs from the defaults, so files that never touched these stay byte-identical.
+json taaJson(const TaaParameters& t)
+{
+    const TaaParameters d;
+    json j = json::object();
+    if (t.blend != d.blend) j["blend"] = jsonFloat(t.blend);
+    if (t.clipGamma != d.clipGamma) j["clipGamma"] = jsonFloat(t.clipGamma);
+    if (t.perceptualBlend != d.perceptualBlend) j["perceptualBlend"] = t.perceptualBlend;
+    return j;
+}
+
+json svgfJson(const SvgfParameters& s)
+{
+    const SvgfParameters d;
+    json j = json::object();
+    if (s.iterations != d.iterations) j["iterations"] = s.iterations;
+    if (s.alpha != d.alpha) j["alpha"] = jsonFloat(s.alpha);
+    if (s.momentsAlpha != d.momentsAlpha) j["momentsAlpha"] = jsonFloat(s.momentsAlpha);
+    if (s.sigmaLuminance != d.sigmaLuminance) j["sigmaLuminance"] = jsonFloat(s.sigmaLuminance);
+    if (s.sigmaNormal != d.sigmaNormal) j["sigmaNormal"] = jsonFloat(s.sigmaNormal);
+    if (s.sigmaDepth != d.sigmaDepth) j["sigmaDepth"] = jsonFloat(s.sigmaDepth);
+    if (s.fireflyRatio != d.fireflyRatio) j["fireflyRatio"] = jsonFloat(s.fireflyRatio);
+    return j;
+}
+
 } // namespace
 
 std::filesystem::path projectPathFor(const std::filesystem::path& sceneFile)
@@ -287,6 +354,8 @@ std::string writeProjectFileText(const ProjectFile& project)
     root["render"] = {{"configuration", r.configuration}, {"width", r.width}, {"height", r.height}, {"spp", r.spp},
                       {"bounces", r.bounces}, {"seed", r.seed}, {"exposure", jsonFloat(r.exposure)},
                       {"tonemapper", enumName(r.tonemapper, kTonemapperNames)}, {"clamp", jsonFloat(r.clamp)}};
+    if (json taa = taaJson(r.taa); !taa.empty()) root["render"]["taa"] = std::move(taa);
+    if (json svgf = svgfJson(r.svgf); !svgf.empty()) root["render"]["svgf"] = std::move(svgf);
     const Environment& e = s.environment;
     root["environment"] = {{"color", {jsonFloat(e.color.x), jsonFloat(e.color.y), jsonFloat(e.color.z)}},
                            {"intensity", jsonFloat(e.intensity)}, {"rotation", jsonFloat(e.rotationDegrees)}};

@@ -1,0 +1,113 @@
+// The scene settings panel (offscreen, no GL): in the real-time reconstruction section a slider
+// drag is one undo step, undo restores the default exactly, and the values reach the saved project
+// file; the active camera and the frame rate are chosen there too.
+#include "editor_fixtures.h"
+
+#include "editor/properties/properties_panel.h"
+#include "editor/properties/property_form.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QLineEdit>
+#include <QFile>
+#include <QSlider>
+#include <QSpinBox>
+#include <QTemporaryDir>
+
+#include <cmath>
+
+using namespace glint;
+using namespace glint::editor;
+using namespace glint::editor::test;
+
+namespace {
+
+template <class T>
+T* fieldNamed(QWidget& panel, const QString& name) {
+    for (T* field : panel.findChildren<T*>())
+        if (field->accessibleName() == name) return field;
+    return nullptr;
+}
+
+} // namespace
+
+class TestSceneSettingsPanel : public QObject {
+    Q_OBJECT
+private slots:
+    void sliderDragIsOneUndoStep() {
+        Document document;
+        QCOMPARE(document.open(cornellBox()), QString());
+        PropertiesPanel panel(document, true);
+        auto* blend = fieldNamed<FloatField>(panel, "TAA blend (current frame)");
+        QVERIFY(blend);
+        QSlider* slider = blend->slider();
+        slider->setSliderDown(true); // a mouse press on the handle
+        for (int position : {100, 400, 700, 1000}) slider->setValue(position);
+        slider->setSliderDown(false);
+        QCOMPARE(document.history().count(), std::size_t{1});
+        QCOMPARE(document.scene().settings.render.taa.blend, 1.0f);
+        document.undo();
+        QCOMPARE(document.scene().settings.render.taa.blend, TaaParameters{}.blend);
+        QVERIFY(std::abs(blend->spinBox()->value() - double(TaaParameters{}.blend)) < 1e-6); // 3 decimals shown
+        QVERIFY(!document.isModified()); // back at the clean state
+    }
+
+    void iterationsReachTheProjectFile() {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        Document document;
+        QCOMPARE(document.open(cornellBox()), QString());
+        PropertiesPanel panel(document, true);
+        auto* iterations = fieldNamed<QSpinBox>(panel, "SVGF a-trous iterations");
+        QVERIFY(iterations);
+        QCOMPARE(iterations->value(), 5);
+        iterations->setValue(2);
+        QCOMPARE(document.scene().settings.render.svgf.iterations, 2);
+        QCOMPARE(document.history().count(), std::size_t{1});
+        const QString scene = dir.filePath("box.gltf");
+        QCOMPARE(document.saveAs(scene), QString());
+        QFile project(dir.filePath("box.glint.json"));
+        QVERIFY(project.open(QIODevice::ReadOnly));
+        const QByteArray text = project.readAll();
+        QVERIFY2(text.contains("\"svgf\": {\n      \"iterations\": 2\n    }"), text.constData());
+        QVERIFY2(!text.contains("\"taa\""), text.constData()); // untouched: not written
+        document.undo();
+        QCOMPARE(iterations->value(), 5);
+    }
+
+    void activeCameraAndFrameRate() {
+        Document document;
+        QCOMPARE(document.open(cornellBox()), QString());
+        PropertiesPanel panel(document, true);
+        auto* camera = fieldNamed<QComboBox>(panel, "Active camera");
+        QVERIFY(camera);
+        // "(the first camera)" plus one entry per camera node, in outliner order.
+        int cameras = 0;
+        for (const NodeId id : document.scene().depthFirst()) cameras += document.scene().at(id).get<Camera>() != nullptr;
+        QVERIFY(cameras >= 1);
+        QCOMPARE(camera->count(), 1 + cameras);
+        emit camera->activated(1);
+        const NodeId chosen{camera->itemData(1).toUInt()};
+        QCOMPARE(document.scene().settings.activeCamera, chosen);
+        QVERIFY(document.scene().at(chosen).get<Camera>());
+
+        auto* fps = fieldNamed<QLineEdit>(panel, "Frames per second");
+        QVERIFY(fps);
+        QCOMPARE(fps->text(), QString("24"));
+        fps->setText("24000/1001");
+        emit fps->editingFinished();
+        QCOMPARE(document.scene().settings.timeline.fpsNumerator, 24000);
+        QCOMPARE(document.scene().settings.timeline.fpsDenominator, 1001);
+        fps->setText("0/1"); // refused: nothing changes, no undo step
+        emit fps->editingFinished();
+        QCOMPARE(document.scene().settings.timeline.fpsNumerator, 24000);
+        QCOMPARE(document.history().count(), std::size_t{2});
+        document.undo();
+        document.undo();
+        QVERIFY(!document.isModified());
+        QCOMPARE(camera->currentIndex(), 0);
+    }
+};
+
+QTEST_MAIN(TestSceneSettingsPanel)
+#include "test_scene_settings_panel.moc"
