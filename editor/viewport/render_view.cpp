@@ -347,6 +347,12 @@ void RenderView::setRenderRegion(const std::optional<QRectF>& fractions) {
 
 // --- picking and framing -------------------------------------------------------------------
 
+void RenderView::armFocusPick(bool on) {
+    focusPickArmed_ = on;
+    if (on) setCursor(Qt::CrossCursor);
+    else unsetCursor();
+}
+
 const ScenePicker& RenderView::picker() {
     if (!picker_) {
         const Scene& scene = document_.scene();
@@ -417,6 +423,11 @@ void RenderView::inspectPixel(QPointF p) {
 
 void RenderView::mousePressEvent(QMouseEvent* event) {
     lastMouse_ = pressMouse_ = event->position();
+    if (event->button() == Qt::LeftButton && focusPickArmed_) {
+        armFocusPick(false);
+        emit focusClicked(event->position());
+        return;
+    }
     if (event->button() == Qt::LeftButton && region_.press(event->position())) return;
     const auto mods = event->modifiers();
     if (event->button() == Qt::LeftButton && !(mods & Qt::AltModifier)) {
@@ -500,6 +511,10 @@ void RenderView::keyPressEvent(QKeyEvent* event) {
     }
     if (event->key() == Qt::Key_Escape && region_.armed()) {
         setRenderRegion(region_.region()); // drops the armed drag, keeps the region
+        return;
+    }
+    if (event->key() == Qt::Key_Escape && focusPickArmed_) {
+        armFocusPick(false);
         return;
     }
     if (drag_ == Drag::Gizmo && event->key() == Qt::Key_Escape) {

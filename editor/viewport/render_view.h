@@ -72,6 +72,9 @@ public:
     void setRenderRegion(const std::optional<QRectF>& fractions);
     const std::optional<QRectF>& renderRegion() const { return region_.region(); }
     const ViewportStats& stats() const { return stats_; }
+    // Pick focus (focus_pick.h): the next left click goes to focusClicked instead of selecting.
+    void armFocusPick(bool on);
+    bool focusPickArmed() const { return focusPickArmed_; }
 
     void frameSelection();
     NodeId pickAt(QPointF widgetPos);   // the node under a widget position (no selection change)
@@ -84,6 +87,7 @@ signals:
     void statsChanged();
     void pixelInspected(QPoint pixel, float r, float g, float b, float a);
     void cameraMoved();
+    void focusClicked(QPointF widgetPos);
 
 protected:
     void initializeGL() override;
@@ -133,6 +137,7 @@ private:
     bool timeDirty_ = true;
     bool paused_ = false;
     bool inspecting_ = false;
+    bool focusPickArmed_ = false;
     bool comparing_ = false;
     int stillDivisor_ = 0; // locked while the view is still, so accumulation is not reset
     QImage snapshot_;

@@ -1,11 +1,14 @@
 #include "editor/viewport/viewport.h"
 
 #include "editor/document/document.h"
+#include "editor/viewport/focus_pick.h"
 #include "editor/viewport/render_view.h"
 #include "scene/history/node_commands.h"
 
 #include <QAction>
 #include <QActionGroup>
+#include <QMainWindow>
+#include <QStatusBar>
 #include <QVBoxLayout>
 
 namespace glint::editor {
@@ -117,6 +120,30 @@ void Viewport::createActions() {
     compare_ = checkable(this, tr("Compare A | B"), QKeySequence());
     compare_->setEnabled(false);
     connect(compare_, &QAction::toggled, view_, &RenderView::setComparing);
+    createPickFocusAction();
+}
+
+void Viewport::createPickFocusAction() {
+    pickFocus_ = new QAction(tr("Pick focus distance"), this);
+    pickFocus_->setToolTip(tr("Click a surface: the camera looked through focuses at its depth"));
+    pickFocus_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F));
+    pickFocus_->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    addAction(pickFocus_);
+    connect(pickFocus_, &QAction::triggered, this, [this] {
+        if (!view_->lookThrough().valid()) {
+            showHint(tr("Pick focus works through a scene camera: select one and look through it (0) first."));
+            return;
+        }
+        view_->armFocusPick(true);
+        showHint(tr("Click the surface to focus on (Esc cancels)."));
+    });
+    connect(view_, &RenderView::focusClicked, this, [this](QPointF at) { showHint(pickFocus(document_, *view_, at)); });
+}
+
+// Hints go to the window's status bar; the viewport's own status line shows render progress.
+void Viewport::showHint(const QString& text) {
+    if (auto* main = qobject_cast<QMainWindow*>(window())) main->statusBar()->showMessage(text, 8000);
+    emit hint(text);
 }
 
 QList<QAction*> Viewport::viewModeActions() const { return modes_->actions(); }
@@ -125,7 +152,7 @@ QList<QAction*> Viewport::gizmoActions() const { return gizmos_->actions(); }
 QList<QAction*> Viewport::allActions() const {
     QList<QAction*> all = viewModeActions();
     all << gizmoActions() << frameSelection_ << makeSceneCamera_ << lookThrough_ << snap_ << inspect_ << snapshot_ << compare_ << renderRegion_
-        << clearRenderRegion_;
+        << clearRenderRegion_ << pickFocus_;
     return all;
 }
 

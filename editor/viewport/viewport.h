@@ -34,6 +34,8 @@ public:
     QAction* compareAction() const { return compare_; }
     QAction* renderRegionAction() const { return renderRegion_; }      // Ctrl+B: drag a render region
     QAction* clearRenderRegionAction() const { return clearRenderRegion_; } // Ctrl+Alt+B
+    // Ctrl+Shift+F, then a click: the looked-through camera focuses on the surface clicked.
+    QAction* pickFocusAction() const { return pickFocus_; }
     QList<QAction*> gizmoActions() const;
     // Every action above, for a menu.
     QList<QAction*> allActions() const;
@@ -47,9 +49,12 @@ public slots:
 
 signals:
     void statusMessage(const QString& text);
+    void hint(const QString& text); // a tool's explanation (also shown in the window's status bar)
 
 private:
     void createActions();
+    void createPickFocusAction();
+    void showHint(const QString& text);
     QString statusText() const;
 
     Document& document_;
@@ -63,6 +68,7 @@ private:
     QAction* inspect_ = nullptr;
     QAction* snapshot_ = nullptr;
     QAction* compare_ = nullptr;
+    QAction* pickFocus_ = nullptr;
     QAction* renderRegion_ = nullptr;
     QAction* clearRenderRegion_ = nullptr;
 };
