@@ -3,7 +3,9 @@
 #include "history_model.h"
 
 #include "editor/document/document.h"
+#include "editor/preferences/retranslate.h"
 
+#include <QEvent>
 #include <QListView>
 #include <QVBoxLayout>
 
@@ -15,7 +17,7 @@ HistoryPanel::HistoryPanel(Document& document, QWidget* parent) : QWidget(parent
     model_ = new HistoryModel(document_, this);
     view_ = new QListView(this);
     view_->setModel(model_);
-    view_->setAccessibleName(tr("Undo history"));
+    keepTranslated(view_, TextRole::AccessibleName, staticMetaObject.className(), QT_TR_NOOP("Undo history"));
     view_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     view_->setSelectionMode(QAbstractItemView::SingleSelection);
     connect(model_, &HistoryModel::modelReset, this, &HistoryPanel::selectCurrent);
@@ -30,6 +32,13 @@ HistoryPanel::HistoryPanel(Document& document, QWidget* parent) : QWidget(parent
     layout->setContentsMargins(2, 2, 2, 2);
     layout->addWidget(view_);
     selectCurrent();
+}
+
+void HistoryPanel::changeEvent(QEvent* event) {
+    QWidget::changeEvent(event);
+    // The labels are translated when shown: ask the view to read them again.
+    if (event->type() == QEvent::LanguageChange && model_->rowCount() > 0)
+        emit model_->dataChanged(model_->index(0), model_->index(model_->rowCount() - 1));
 }
 
 void HistoryPanel::selectCurrent() {

@@ -1,5 +1,6 @@
 #include "log_panel.h"
 
+#include "editor/preferences/retranslate.h"
 #include <QApplication>
 #include <QHBoxLayout>
 #include <QListWidget>
@@ -12,10 +13,11 @@ namespace glint::editor {
 
 LogPanel::LogPanel(QWidget* parent) : QWidget(parent) {
     list_ = new QListWidget(this);
-    list_->setAccessibleName(tr("Log messages"));
+    keepTranslated(list_, TextRole::AccessibleName, staticMetaObject.className(), QT_TR_NOOP("Log messages"));
     list_->setSelectionMode(QAbstractItemView::ExtendedSelection);
-    auto* clearButton = new QPushButton(tr("Clear"), this);
-    clearButton->setAccessibleName(tr("Clear the log"));
+    auto* clearButton = new QPushButton(this);
+    keepTranslated(clearButton, TextRole::Text, staticMetaObject.className(), QT_TR_NOOP("Clear"));
+    keepTranslated(clearButton, TextRole::AccessibleName, staticMetaObject.className(), QT_TR_NOOP("Clear the log"));
     connect(clearButton, &QPushButton::clicked, this, &LogPanel::clear);
 
     auto* buttons = new QHBoxLayout;

@@ -40,8 +40,7 @@ int runEditor(int argc, char** argv, const char* version) {
     QGuiApplication::setApplicationDisplayName(QStringLiteral("Glint"));
     QGuiApplication::setDesktopFileName(QStringLiteral("glint"));
 
-    Translations translations;
-    translations.install(app, Preferences::load().language);
+    Translations::of(app).install(app, Preferences::load().language);
 
     QCommandLineParser parser;
     parser.setApplicationDescription(QCoreApplication::translate("glint::editor::MainWindow", "Glint scene editor"));

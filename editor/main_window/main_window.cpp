@@ -8,6 +8,7 @@
 #include "editor/history_view/history_panel.h"
 #include "editor/log/log_panel.h"
 #include "editor/outliner/outliner_panel.h"
+#include "editor/preferences/retranslate.h"
 #include "editor/properties/properties_panel.h"
 
 #if defined(GLINT_HAVE_VIEWPORT)
@@ -77,9 +78,10 @@ void MainWindow::createCentralView() {
     }
 #endif
     // The viewport is not part of this build (or not wanted): say so where it would be.
-    auto* placeholder = new QLabel(tr("The viewport is not available in this build."), this);
+    auto* placeholder = new QLabel(this);
+    keepTranslated(placeholder, TextRole::Text, staticMetaObject.className(), QT_TR_NOOP("The viewport is not available in this build."));
     placeholder->setAlignment(Qt::AlignCenter);
-    placeholder->setAccessibleName(tr("Viewport"));
+    keepTranslated(placeholder, TextRole::AccessibleName, staticMetaObject.className(), QT_TR_NOOP("Viewport"));
     setCentralWidget(placeholder);
 }
 
@@ -87,18 +89,19 @@ void MainWindow::createViewport() {
 #if defined(GLINT_HAVE_VIEWPORT)
     auto* viewport = new Viewport(*document_, this);
     viewport_ = viewport;
-    viewport->setAccessibleName(tr("Viewport"));
+    keepTranslated(viewport, TextRole::AccessibleName, staticMetaObject.className(), QT_TR_NOOP("Viewport"));
     viewportActions_ = viewport->allActions();
     connect(viewport, &Viewport::statusMessage, this, [this](const QString& text) { renderLabel_->setText(text); });
     setCentralWidget(viewport);
 #endif
 }
 
-QDockWidget* MainWindow::addDock(QWidget* widget, const QString& title, const QString& name, Qt::DockWidgetArea area) {
-    auto* dock = new QDockWidget(title, this);
+QDockWidget* MainWindow::addDock(QWidget* widget, const char* title, const QString& name, Qt::DockWidgetArea area) {
+    auto* dock = new QDockWidget(this);
+    keepTranslated(dock, TextRole::Title, staticMetaObject.className(), title);
     dock->setObjectName(name); // saveState() keys the layout by object name
     dock->setWidget(widget);
-    widget->setAccessibleName(title);
+    keepTranslated(widget, TextRole::AccessibleName, staticMetaObject.className(), title);
     addDockWidget(area, dock);
     return dock;
 }
@@ -109,11 +112,11 @@ void MainWindow::createDocks() {
     sceneSettings_ = new PropertiesPanel(*document_, true, this);
     history_ = new HistoryPanel(*document_, this);
     log_ = new LogPanel(this);
-    auto* outlinerDock = addDock(outliner_, tr("Outliner"), "OutlinerDock", Qt::LeftDockWidgetArea);
-    auto* historyDock = addDock(history_, tr("Undo history"), "HistoryDock", Qt::LeftDockWidgetArea);
-    auto* propertiesDock = addDock(properties_, tr("Properties"), "PropertiesDock", Qt::RightDockWidgetArea);
-    auto* sceneDock = addDock(sceneSettings_, tr("Scene"), "SceneDock", Qt::RightDockWidgetArea);
-    auto* logDock = addDock(log_, tr("Log"), "LogDock", Qt::BottomDockWidgetArea);
+    auto* outlinerDock = addDock(outliner_, QT_TR_NOOP("Outliner"), "OutlinerDock", Qt::LeftDockWidgetArea);
+    auto* historyDock = addDock(history_, QT_TR_NOOP("Undo history"), "HistoryDock", Qt::LeftDockWidgetArea);
+    auto* propertiesDock = addDock(properties_, QT_TR_NOOP("Properties"), "PropertiesDock", Qt::RightDockWidgetArea);
+    auto* sceneDock = addDock(sceneSettings_, QT_TR_NOOP("Scene"), "SceneDock", Qt::RightDockWidgetArea);
+    auto* logDock = addDock(log_, QT_TR_NOOP("Log"), "LogDock", Qt::BottomDockWidgetArea);
     Q_UNUSED(logDock)
 #if defined(GLINT_HAVE_TIMELINE)
     timeline_ = new TimelinePanel(*document_, this);
@@ -124,7 +127,7 @@ void MainWindow::createDocks() {
         timeline_->setCameraMaker([this] { return viewport_->makeSceneCamera(); });
     }
 #endif
-    auto* timelineDock = addDock(timeline_, tr("Timeline"), "TimelineDock", Qt::BottomDockWidgetArea);
+    auto* timelineDock = addDock(timeline_, QT_TR_NOOP("Timeline"), "TimelineDock", Qt::BottomDockWidgetArea);
     tabifyDockWidget(logDock, timelineDock);
     timelineDock->raise();
 #endif
@@ -187,9 +190,9 @@ void MainWindow::createStatusBar() {
     selectionLabel_ = new QLabel(this);
     sceneLabel_ = new QLabel(this);
     renderLabel_ = new QLabel(this);
-    selectionLabel_->setAccessibleName(tr("Selection"));
-    sceneLabel_->setAccessibleName(tr("Scene statistics"));
-    renderLabel_->setAccessibleName(tr("Render progress"));
+    keepTranslated(selectionLabel_, TextRole::AccessibleName, staticMetaObject.className(), QT_TR_NOOP("Selection"));
+    keepTranslated(sceneLabel_, TextRole::AccessibleName, staticMetaObject.className(), QT_TR_NOOP("Scene statistics"));
+    keepTranslated(renderLabel_, TextRole::AccessibleName, staticMetaObject.className(), QT_TR_NOOP("Render progress"));
     statusBar()->addWidget(selectionLabel_);
     statusBar()->addWidget(sceneLabel_);
     statusBar()->addPermanentWidget(renderLabel_);
@@ -321,7 +324,18 @@ void MainWindow::openDropped(const QList<QUrl>& urls, bool merge) {
 
 void MainWindow::changeEvent(QEvent* event) {
     QMainWindow::changeEvent(event);
-    if (event->type() == QEvent::LanguageChange) updateTitle();
+    if (event->type() == QEvent::LanguageChange) retranslate();
+}
+
+// Every widget gets the LanguageChange too: panels that build texts from data rebuild themselves;
+// here the kept texts of the whole window (menus, actions, docks, tool bars, the viewport's and
+// open dialogs') and the window's own texts built from data.
+void MainWindow::retranslate() {
+    retranslateTree(this);
+    updateTitle();
+    updateStatus();
+    updateUndoActions();
+    rebuildRecentMenu();
 }
 
 } // namespace glint::editor

@@ -72,7 +72,7 @@ private:
     void createCentralView();
     void createViewport();
     void createDocks();
-    QDockWidget* addDock(QWidget* widget, const QString& title, const QString& name, Qt::DockWidgetArea area);
+    QDockWidget* addDock(QWidget* widget, const char* title, const QString& name, Qt::DockWidgetArea area);
     void createActions();
     void createMenus();
     void createToolBar();
@@ -87,7 +87,9 @@ private:
     void updateUndoActions();
     void rebuildRecentMenu();
     void report(const QString& message);
-    QAction* makeAction(const QString& name, const QString& text, const QKeySequence& shortcut = {});
+    // `text` is the untranslated source (QT_TR_NOOP): the action follows language changes.
+    QAction* makeAction(const QString& name, const char* text, const QKeySequence& shortcut = {});
+    void retranslate(); // after a language change: kept texts, then the ones built from data
 
     Options options_;
     Document* document_ = nullptr;

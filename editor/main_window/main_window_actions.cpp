@@ -8,7 +8,9 @@
 #include "editor/document/edit_operations.h"
 #include "editor/history_view/command_labels.h"
 #include "editor/outliner/outliner_panel.h"
+#include "editor/preferences/language.h"
 #include "editor/preferences/preferences_dialog.h"
+#include "editor/preferences/retranslate.h"
 
 #if defined(GLINT_HAVE_EXPORT)
 #include "editor/export/export_dialog.h"
@@ -29,9 +31,19 @@
 #include <exception>
 
 namespace glint::editor {
+namespace {
 
-QAction* MainWindow::makeAction(const QString& name, const QString& text, const QKeySequence& shortcut) {
-    auto* action = new QAction(text, this);
+// A menu whose title follows the language (retranslate.h).
+QMenu* keptMenu(QMenu* menu, const char* title) {
+    keepTranslated(menu, TextRole::Title, MainWindow::staticMetaObject.className(), title);
+    return menu;
+}
+
+} // namespace
+
+QAction* MainWindow::makeAction(const QString& name, const char* text, const QKeySequence& shortcut) {
+    auto* action = new QAction(this);
+    keepTranslated(action, TextRole::Text, staticMetaObject.className(), text);
     action->setObjectName(name);
     action->setShortcut(shortcut);
     action->setShortcutContext(Qt::WindowShortcut);
@@ -44,11 +56,11 @@ QList<QAction*> MainWindow::keymapActions() const { return actions_ + viewportAc
 
 void MainWindow::createActions() {
     QStyle* s = style();
-    auto* newScene = makeAction("file.new", tr("&New"), QKeySequence::New);
+    auto* newScene = makeAction("file.new", QT_TR_NOOP("&New"), QKeySequence::New);
     connect(newScene, &QAction::triggered, this, [this] {
         if (maybeSave()) document_->newScene();
     });
-    auto* open = makeAction("file.open", tr("&Open..."), QKeySequence::Open);
+    auto* open = makeAction("file.open", QT_TR_NOOP("&Open..."), QKeySequence::Open);
     open->setIcon(s->standardIcon(QStyle::SP_DialogOpenButton));
     connect(open, &QAction::triggered, this, [this] {
         if (!maybeSave()) return;
@@ -56,24 +68,24 @@ void MainWindow::createActions() {
                                                           tr("Scenes (*.gltf *.glb *.glint.json);;All files (*)"));
         if (!path.isEmpty()) openFile(path);
     });
-    auto* import = makeAction("file.import", tr("&Import..."), QKeySequence(Qt::CTRL | Qt::Key_I));
+    auto* import = makeAction("file.import", QT_TR_NOOP("&Import..."), QKeySequence(Qt::CTRL | Qt::Key_I));
     connect(import, &QAction::triggered, this, [this] {
         const QString path = QFileDialog::getOpenFileName(
             this, tr("Import into the scene"), {},
             tr("Scenes and models (*.gltf *.glb *.obj *.ply *.stl *.fbx *.dae *.3ds);;All files (*)"));
         if (!path.isEmpty()) importFile(path);
     });
-    auto* saveAction = makeAction("file.save", tr("&Save"), QKeySequence::Save);
+    auto* saveAction = makeAction("file.save", QT_TR_NOOP("&Save"), QKeySequence::Save);
     saveAction->setIcon(s->standardIcon(QStyle::SP_DialogSaveButton));
     connect(saveAction, &QAction::triggered, this, [this] { save(); });
-    auto* saveAsAction = makeAction("file.save_as", tr("Save &As..."), QKeySequence::SaveAs);
+    auto* saveAsAction = makeAction("file.save_as", QT_TR_NOOP("Save &As..."), QKeySequence::SaveAs);
     connect(saveAsAction, &QAction::triggered, this, [this] { saveAs(); });
-    auto* prefs = makeAction("edit.preferences", tr("&Preferences..."), QKeySequence::Preferences);
+    auto* prefs = makeAction("edit.preferences", QT_TR_NOOP("&Preferences..."), QKeySequence::Preferences);
     connect(prefs, &QAction::triggered, this, &MainWindow::showPreferences);
-    auto* quit = makeAction("file.quit", tr("&Quit"), QKeySequence::Quit);
+    auto* quit = makeAction("file.quit", QT_TR_NOOP("&Quit"), QKeySequence::Quit);
     connect(quit, &QAction::triggered, this, &QWidget::close);
 
-    undo_ = makeAction("edit.undo", tr("&Undo"), QKeySequence::Undo);
+    undo_ = makeAction("edit.undo", QT_TR_NOOP("&Undo"), QKeySequence::Undo);
     undo_->setIcon(s->standardIcon(QStyle::SP_ArrowBack));
     connect(undo_, &QAction::triggered, this, [this] {
         try {
@@ -82,7 +94,7 @@ void MainWindow::createActions() {
             report(QString::fromStdString(e.what()));
         }
     });
-    redo_ = makeAction("edit.redo", tr("&Redo"), QKeySequence::Redo);
+    redo_ = makeAction("edit.redo", QT_TR_NOOP("&Redo"), QKeySequence::Redo);
     redo_->setIcon(s->standardIcon(QStyle::SP_ArrowForward));
     connect(redo_, &QAction::triggered, this, [this] {
         try {
@@ -91,28 +103,28 @@ void MainWindow::createActions() {
             report(QString::fromStdString(e.what()));
         }
     });
-    delete_ = makeAction("edit.delete", tr("&Delete"), QKeySequence::Delete);
+    delete_ = makeAction("edit.delete", QT_TR_NOOP("&Delete"), QKeySequence::Delete);
     connect(delete_, &QAction::triggered, this, [this] {
         const QString error = deleteSelection(*document_);
         if (!error.isEmpty()) statusBar()->showMessage(error, 4000);
     });
-    duplicate_ = makeAction("edit.duplicate", tr("D&uplicate"), QKeySequence(Qt::CTRL | Qt::Key_D));
+    duplicate_ = makeAction("edit.duplicate", QT_TR_NOOP("D&uplicate"), QKeySequence(Qt::CTRL | Qt::Key_D));
     connect(duplicate_, &QAction::triggered, this, [this] {
         const QString error = duplicateSelection(*document_);
         if (!error.isEmpty()) statusBar()->showMessage(error, 4000);
     });
-    auto* selectAll = makeAction("edit.select_all", tr("Select &All"), QKeySequence::SelectAll);
+    auto* selectAll = makeAction("edit.select_all", QT_TR_NOOP("Select &All"), QKeySequence::SelectAll);
     connect(selectAll, &QAction::triggered, this, [this] { document_->setSelection(document_->scene().depthFirst()); });
-    auto* selectNone = makeAction("edit.select_none", tr("Select &None"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_A));
+    auto* selectNone = makeAction("edit.select_none", QT_TR_NOOP("Select &None"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_A));
     connect(selectNone, &QAction::triggered, this, [this] { document_->setSelection({}); });
 }
 
 void MainWindow::createMenus() {
-    QMenu* file = menuBar()->addMenu(tr("&File"));
+    QMenu* file = keptMenu(menuBar()->addMenu(QString()), QT_TR_NOOP("&File"));
     auto find = [this](const char* name) { return findChild<QAction*>(name, Qt::FindDirectChildrenOnly); };
     file->addAction(find("file.new"));
     file->addAction(find("file.open"));
-    recentMenu_ = file->addMenu(tr("Open &Recent"));
+    recentMenu_ = keptMenu(file->addMenu(QString()), QT_TR_NOOP("Open &Recent"));
     rebuildRecentMenu();
     file->addAction(find("file.import"));
     file->addSeparator();
@@ -122,7 +134,7 @@ void MainWindow::createMenus() {
     file->addSeparator();
     file->addAction(find("file.quit"));
 
-    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QMenu* edit = keptMenu(menuBar()->addMenu(QString()), QT_TR_NOOP("&Edit"));
     edit->addAction(undo_);
     edit->addAction(redo_);
     edit->addSeparator();
@@ -136,16 +148,17 @@ void MainWindow::createMenus() {
 
     menuBar()->addMenu(outliner_->addMenu());
 
-    viewMenu_ = menuBar()->addMenu(tr("&View"));
+    viewMenu_ = keptMenu(menuBar()->addMenu(QString()), QT_TR_NOOP("&View"));
     for (QAction* action : viewportActions_) viewMenu_->addAction(action);
     if (!viewportActions_.isEmpty()) viewMenu_->addSeparator();
-    QMenu* panels = viewMenu_->addMenu(tr("&Panels"));
+    QMenu* panels = keptMenu(viewMenu_->addMenu(QString()), QT_TR_NOOP("&Panels"));
     for (QDockWidget* dock : findChildren<QDockWidget*>()) panels->addAction(dock->toggleViewAction());
-    QMenu* theme = viewMenu_->addMenu(tr("&Theme"));
+    QMenu* theme = keptMenu(viewMenu_->addMenu(QString()), QT_TR_NOOP("&Theme"));
     auto* themes = new QActionGroup(this);
-    for (const auto& [value, label] : {std::pair{Theme::System, tr("System")}, std::pair{Theme::Light, tr("Light")},
-                                       std::pair{Theme::Dark, tr("Dark")}}) {
-        QAction* action = theme->addAction(label);
+    for (const auto& [value, label] : {std::pair{Theme::System, QT_TR_NOOP("System")}, std::pair{Theme::Light, QT_TR_NOOP("Light")},
+                                       std::pair{Theme::Dark, QT_TR_NOOP("Dark")}}) {
+        QAction* action = theme->addAction(QString());
+        keepTranslated(action, TextRole::Text, staticMetaObject.className(), label);
         action->setCheckable(true);
         action->setChecked(themeFromName(preferences_.theme) == value);
         themes->addAction(action);
@@ -156,20 +169,22 @@ void MainWindow::createMenus() {
         });
     }
 
-    QMenu* help = menuBar()->addMenu(tr("&Help"));
-    help->addAction(tr("&About Glint"), this, [this] {
+    QMenu* help = keptMenu(menuBar()->addMenu(QString()), QT_TR_NOOP("&Help"));
+    QAction* about = help->addAction(QString(), this, [this] {
         QMessageBox::about(this, tr("About Glint"),
                            tr("Glint %1: a scene editor with a built-in OpenGL 4.1 path tracer.")
                                .arg(QCoreApplication::applicationVersion()));
     });
-    help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
+    keepTranslated(about, TextRole::Text, staticMetaObject.className(), QT_TR_NOOP("&About Glint"));
+    QAction* aboutQt = help->addAction(QString(), qApp, &QApplication::aboutQt);
+    keepTranslated(aboutQt, TextRole::Text, staticMetaObject.className(), QT_TR_NOOP("About &Qt"));
 }
 
 void MainWindow::createExportActions(QMenu* file) {
 #if defined(GLINT_HAVE_EXPORT)
     file->addSeparator();
-    auto* still = makeAction("file.export_still", tr("Export &Image..."), QKeySequence(Qt::CTRL | Qt::Key_E));
-    auto* animation = makeAction("file.export_animation", tr("Export A&nimation..."),
+    auto* still = makeAction("file.export_still", QT_TR_NOOP("Export &Image..."), QKeySequence(Qt::CTRL | Qt::Key_E));
+    auto* animation = makeAction("file.export_animation", QT_TR_NOOP("Export A&nimation..."),
                                  QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E));
     auto open = [this](ExportDialog::Kind kind) {
         // Modeless: the export runs in the background while the dialog shows its progress.
@@ -187,9 +202,10 @@ void MainWindow::createExportActions(QMenu* file) {
 }
 
 void MainWindow::createToolBar() {
-    QToolBar* bar = addToolBar(tr("Main"));
+    QToolBar* bar = addToolBar(QString());
     bar->setObjectName("MainToolBar");
-    bar->setAccessibleName(tr("Main toolbar"));
+    keepTranslated(bar, TextRole::Title, staticMetaObject.className(), QT_TR_NOOP("Main"));
+    keepTranslated(bar, TextRole::AccessibleName, staticMetaObject.className(), QT_TR_NOOP("Main toolbar"));
     auto find = [this](const char* name) { return findChild<QAction*>(name, Qt::FindDirectChildrenOnly); };
     bar->addAction(find("file.open"));
     bar->addAction(find("file.save"));
@@ -197,9 +213,10 @@ void MainWindow::createToolBar() {
     bar->addAction(undo_);
     bar->addAction(redo_);
     if (!viewportActions_.isEmpty()) {
-        QToolBar* view = addToolBar(tr("View"));
+        QToolBar* view = addToolBar(QString());
         view->setObjectName("ViewToolBar");
-        view->setAccessibleName(tr("View toolbar"));
+        keepTranslated(view, TextRole::Title, staticMetaObject.className(), QT_TR_NOOP("View"));
+        keepTranslated(view, TextRole::AccessibleName, staticMetaObject.className(), QT_TR_NOOP("View toolbar"));
         view->addActions(viewportActions_);
     }
 }
@@ -238,8 +255,10 @@ void MainWindow::showPreferences() {
     preferences_ = dialog.result();
     preferences_.save();
     applyPreferences();
-    if (preferences_.language != oldLanguage)
-        statusBar()->showMessage(tr("The new language applies after a restart."), 8000);
+    if (preferences_.language != oldLanguage) { // every widget follows through QEvent::LanguageChange
+        QCoreApplication& app = *QCoreApplication::instance();
+        Translations::of(app).install(app, preferences_.language);
+    }
 }
 
 } // namespace glint::editor

@@ -4,7 +4,9 @@
 
 #include "editor/document/document.h"
 #include "editor/document/edit_operations.h"
+#include "editor/preferences/retranslate.h"
 
+#include <QEvent>
 #include <QHeaderView>
 #include <QItemSelectionModel>
 #include <QLineEdit>
@@ -25,8 +27,8 @@ OutlinerPanel::OutlinerPanel(Document& document, QWidget* parent) : QWidget(pare
     proxy_->setFilterKeyColumn(OutlinerModel::NameColumn);
 
     filter_ = new QLineEdit(this);
-    filter_->setPlaceholderText(tr("Filter by name"));
-    filter_->setAccessibleName(tr("Outliner filter"));
+    keepTranslated(filter_, TextRole::Placeholder, staticMetaObject.className(), QT_TR_NOOP("Filter by name"));
+    keepTranslated(filter_, TextRole::AccessibleName, staticMetaObject.className(), QT_TR_NOOP("Outliner filter"));
     filter_->setClearButtonEnabled(true);
     connect(filter_, &QLineEdit::textChanged, this, [this](const QString& text) {
         proxy_->setFilterFixedString(text);
@@ -35,15 +37,15 @@ OutlinerPanel::OutlinerPanel(Document& document, QWidget* parent) : QWidget(pare
     });
 
     auto* addButton = new QToolButton(this);
-    addButton->setText(tr("Add"));
-    addButton->setAccessibleName(tr("Add a shape, light or camera"));
+    keepTranslated(addButton, TextRole::Text, staticMetaObject.className(), QT_TR_NOOP("Add"));
+    keepTranslated(addButton, TextRole::AccessibleName, staticMetaObject.className(), QT_TR_NOOP("Add a shape, light or camera"));
     addButton->setPopupMode(QToolButton::InstantPopup);
     buildAddMenu();
     addButton->setMenu(addMenu_);
 
     view_ = new QTreeView(this);
     view_->setModel(proxy_);
-    view_->setAccessibleName(tr("Scene outliner"));
+    keepTranslated(view_, TextRole::AccessibleName, staticMetaObject.className(), QT_TR_NOOP("Scene outliner"));
     view_->setSelectionMode(QAbstractItemView::ExtendedSelection);
     view_->setSelectionBehavior(QAbstractItemView::SelectRows);
     view_->setDragDropMode(QAbstractItemView::DragDrop);
@@ -76,27 +78,32 @@ OutlinerPanel::OutlinerPanel(Document& document, QWidget* parent) : QWidget(pare
 }
 
 void OutlinerPanel::buildAddMenu() {
-    addMenu_ = new QMenu(tr("Add"), this);
-    auto add = [this](QMenu* menu, const QString& name, Component component) {
-        QAction* action = menu->addAction(name);
-        connect(action, &QAction::triggered, this, [this, name, component] {
-            const QString error = addNode(document_, name, component);
+    // Titles follow the language (retranslate.h); a new node is named in the language of the moment.
+    addMenu_ = new QMenu(this);
+    keepTranslated(addMenu_, TextRole::Title, staticMetaObject.className(), QT_TR_NOOP("Add"));
+    auto add = [this](QMenu* menu, const char* name, Component component) {
+        QAction* action = menu->addAction(QString());
+        keepTranslated(action, TextRole::Text, staticMetaObject.className(), name);
+        connect(action, &QAction::triggered, this, [this, action, component] {
+            const QString error = addNode(document_, action->text(), component);
             if (!error.isEmpty()) emit message(error);
         });
     };
-    QMenu* shapes = addMenu_->addMenu(tr("Shape"));
-    add(shapes, tr("Sphere"), defaultShape(ShapeKind::Sphere));
-    add(shapes, tr("Box"), defaultShape(ShapeKind::Box));
-    add(shapes, tr("Quad"), defaultShape(ShapeKind::Quad));
-    add(shapes, tr("Disk"), defaultShape(ShapeKind::Disk));
-    add(shapes, tr("Cylinder"), defaultShape(ShapeKind::Cylinder));
-    add(shapes, tr("Ground plane"), defaultShape(ShapeKind::GroundPlane));
-    QMenu* lights = addMenu_->addMenu(tr("Light"));
-    add(lights, tr("Point light"), defaultLight(LightType::Point));
-    add(lights, tr("Spot light"), defaultLight(LightType::Spot));
-    add(lights, tr("Sun"), defaultLight(LightType::Sun));
-    add(addMenu_, tr("Camera"), defaultCamera());
-    add(addMenu_, tr("Empty group"), Component{});
+    QMenu* shapes = addMenu_->addMenu(QString());
+    keepTranslated(shapes, TextRole::Title, staticMetaObject.className(), QT_TR_NOOP("Shape"));
+    add(shapes, QT_TR_NOOP("Sphere"), defaultShape(ShapeKind::Sphere));
+    add(shapes, QT_TR_NOOP("Box"), defaultShape(ShapeKind::Box));
+    add(shapes, QT_TR_NOOP("Quad"), defaultShape(ShapeKind::Quad));
+    add(shapes, QT_TR_NOOP("Disk"), defaultShape(ShapeKind::Disk));
+    add(shapes, QT_TR_NOOP("Cylinder"), defaultShape(ShapeKind::Cylinder));
+    add(shapes, QT_TR_NOOP("Ground plane"), defaultShape(ShapeKind::GroundPlane));
+    QMenu* lights = addMenu_->addMenu(QString());
+    keepTranslated(lights, TextRole::Title, staticMetaObject.className(), QT_TR_NOOP("Light"));
+    add(lights, QT_TR_NOOP("Point light"), defaultLight(LightType::Point));
+    add(lights, QT_TR_NOOP("Spot light"), defaultLight(LightType::Spot));
+    add(lights, QT_TR_NOOP("Sun"), defaultLight(LightType::Sun));
+    add(addMenu_, QT_TR_NOOP("Camera"), defaultCamera());
+    add(addMenu_, QT_TR_NOOP("Empty group"), Component{});
 }
 
 void OutlinerPanel::syncFromDocument() {
@@ -149,6 +156,13 @@ void OutlinerPanel::showContextMenu(const QPoint& pos) {
     }
     menu.addMenu(addMenu_);
     menu.exec(view_->viewport()->mapToGlobal(pos));
+}
+
+void OutlinerPanel::changeEvent(QEvent* event) {
+    QWidget::changeEvent(event);
+    // The kept texts are set by the window (retranslate.h); the model's headers are read on demand.
+    if (event->type() == QEvent::LanguageChange)
+        emit model_->headerDataChanged(Qt::Horizontal, 0, model_->columnCount() - 1);
 }
 
 } // namespace glint::editor

@@ -27,6 +27,9 @@ public:
 signals:
     void message(const QString& text);
 
+protected:
+    void changeEvent(QEvent* event) override;
+
 private:
     void buildAddMenu();
     void syncFromDocument();

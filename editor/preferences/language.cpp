@@ -6,6 +6,11 @@
 
 namespace glint::editor {
 
+Translations& Translations::of(QCoreApplication& app) {
+    auto* translations = app.findChild<Translations*>(QString(), Qt::FindDirectChildrenOnly);
+    return translations ? *translations : *new Translations(&app);
+}
+
 QString Translations::install(QCoreApplication& app, const QString& language) {
     QCoreApplication::removeTranslator(&editor_);
     QCoreApplication::removeTranslator(&qt_);

@@ -46,9 +46,6 @@ QWidget* PreferencesDialog::makeGeneralPage() {
     language_->setCurrentIndex(std::max(0, language_->findData(initial_.language)));
     language_->setAccessibleName(tr("Language"));
     form->addRow(tr("Language"), language_);
-    auto* note = new QLabel(tr("A new language applies to menus and panels after a restart."), page);
-    note->setWordWrap(true);
-    form->addRow(QString(), note);
 
     autosave_ = new QSpinBox(page);
     autosave_->setRange(0, 120);

@@ -5,6 +5,7 @@
 
 #include "editor/document/document.h"
 
+#include <QEvent>
 #include <QLabel>
 #include <QVBoxLayout>
 
@@ -18,6 +19,12 @@ PropertiesPanel::PropertiesPanel(Document& document, bool scene, QWidget* parent
     connect(&document_, &Document::changed, this, &PropertiesPanel::update);
     connect(&document_, &Document::selectionChanged, this, &PropertiesPanel::update);
     rebuild();
+}
+
+void PropertiesPanel::changeEvent(QEvent* event) {
+    QScrollArea::changeEvent(event);
+    // The forms hold their labels as plain text: build them again in the new language.
+    if (event->type() == QEvent::LanguageChange && built_) rebuild();
 }
 
 PropertiesPanel::Key PropertiesPanel::currentKey() const {

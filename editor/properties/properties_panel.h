@@ -28,6 +28,9 @@ public:
 signals:
     void message(const QString& text);
 
+protected:
+    void changeEvent(QEvent* event) override;
+
 private:
     struct Key {
         NodeId node;

@@ -1,0 +1,20 @@
+#pragma once
+// Texts that follow the language while the editor runs (Preferences > Language applies at once).
+// keepTranslated() sets a text from its untranslated source and keeps the source and its context
+// on the object; retranslateTree() sets every such text under a root again, from the translators
+// installed now. Widgets that build their texts from data (forms, models) rebuild instead.
+#include <QObject>
+
+namespace glint::editor {
+
+enum class TextRole { Text, Title, ToolTip, AccessibleName, Placeholder };
+
+// `context` is the class whose tr() the string belongs to (what lupdate records), e.g.
+// MainWindow::staticMetaObject.className(); mark `source` for lupdate with QT_TRANSLATE_NOOP or
+// QT_TR_NOOP. Both must outlive the object (string literals do).
+void keepTranslated(QObject* object, TextRole role, const char* context, const char* source);
+
+// Sets every kept text of `root` and its descendants again (call on QEvent::LanguageChange).
+void retranslateTree(QObject* root);
+
+} // namespace glint::editor
