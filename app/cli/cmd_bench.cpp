@@ -1,7 +1,10 @@
 // glint bench SCENE: for each configuration, N frames of a still view, timed per frame (median and
 // spread, finished on the GPU) and compared with a converged reference (relMSE, SSIM as CONTRACTS.md
 // defines them). Writes bench.csv, bench.json and the speed-vs-accuracy chart (PNG + SVG), and
-// prints the table. Headless: the chart is drawn on Qt's offscreen platform, set only here.
+// prints the table. Scenes with a camera path or animation are also run along it
+// (bench_camera_path.h: bench_path.csv, bench_path.json, speed_accuracy_path.png/.svg, same columns).
+// Headless: the chart is drawn on Qt's offscreen platform, set only here.
+#include "bench_camera_path.h"
 #include "command.h"
 #include "common_options.h"
 #include "exit_codes.h"
@@ -45,6 +48,7 @@ struct BenchOptions {
     std::string camera;
     std::string env;
     int referenceSpp = 1024;
+    PathBenchOptions path;
 };
 
 struct BenchRow {
@@ -159,6 +163,14 @@ BenchRow runConfiguration(renderer::FrameRenderer& frames, const BenchOptions& o
     return row;
 }
 
+// The camera-path rows in the still rows' shape: the same columns, table and chart.
+std::vector<BenchRow> benchRows(const std::vector<PathBenchRow>& path) {
+    std::vector<BenchRow> rows;
+    for (const PathBenchRow& p : path)
+        rows.push_back({p.config, p.spp, p.bounces, p.frames, p.msMedian, p.msP10, p.msP90, p.relmse, p.ssim, p.curve});
+    return rows;
+}
+
 const char* yesNo(bool b) { return b ? "yes" : "no"; }
 
 std::string csvLine(const BenchRow& r) {
@@ -215,7 +227,8 @@ void printTable(const std::vector<BenchRow>& rows) {
     }
 }
 
-void drawChart(const std::vector<BenchRow>& rows, const std::filesystem::path& dir, const std::string& title) {
+void drawChart(const std::vector<BenchRow>& rows, const std::vector<BenchRow>& path, const std::filesystem::path& dir,
+               const std::string& title) {
     qputenv("QT_QPA_PLATFORM", "offscreen"); // charts only; bench opens no window
     int argc = 1;
     char name[] = "glint";
@@ -224,6 +237,11 @@ void drawChart(const std::vector<BenchRow>& rows, const std::filesystem::path& d
     std::vector<bench::ChartCurve> curves;
     for (const BenchRow& r : rows) curves.push_back(r.curve);
     bench::writeSpeedAccuracyChart(curves, title, (dir / "speed_accuracy.png").string(), (dir / "speed_accuracy.svg").string());
+    if (path.empty()) return;
+    curves.clear();
+    for (const BenchRow& r : path) curves.push_back(r.curve);
+    bench::writeSpeedAccuracyChart(curves, title + " (camera path)", (dir / "speed_accuracy_path.png").string(),
+                                   (dir / "speed_accuracy_path.svg").string());
 }
 
 std::vector<renderer::Configuration> parseConfigs(const std::vector<std::string>& names) {
@@ -244,6 +262,7 @@ int runBench(const BenchOptions& o) {
     const std::filesystem::path dir(o.out);
     std::filesystem::create_directories(dir);
     std::vector<BenchRow> rows;
+    std::vector<PathBenchRow> path;
     {
         gl::HeadlessContext context;
         std::fprintf(stderr, "glint: GL_RENDERER: %s\n", context.renderer().c_str());
@@ -260,12 +279,18 @@ int runBench(const BenchOptions& o) {
             std::fprintf(stderr, "glint: %s: %d frames\n", std::string(renderer::configurationName(c)).c_str(), o.frames);
             rows.push_back(runConfiguration(frames, o, scene, c, reference));
         }
+        if (wantsPathBench(o.path, scene))
+            path = runPathBench(frames, scene, o.path, parseConfigs(o.configs),
+                                [&](renderer::Configuration c) { return settingsFor(o, scene, c); });
     }
     writeCsv(dir / "bench.csv", rows);
     writeJson(dir / "bench.json", rows);
-    drawChart(rows, dir, std::filesystem::path(o.scene).filename().string() + ", " + std::to_string(o.size.width) + "x" +
+    const std::vector<BenchRow> pathRows = benchRows(path);
+    if (!pathRows.empty()) writeCsv(dir / "bench_path.csv", pathRows), writeJson(dir / "bench_path.json", pathRows);
+    drawChart(rows, pathRows, dir, std::filesystem::path(o.scene).filename().string() + ", " + std::to_string(o.size.width) + "x" +
                              std::to_string(o.size.height) + ": error vs time");
     printTable(rows);
+    if (!pathRows.empty()) std::printf("along the camera path (%d frames):\n", pathRows.front().frames), printTable(pathRows);
     std::fprintf(stderr, "glint: wrote %s/bench.csv, bench.json, speed_accuracy.png, speed_accuracy.svg\n", o.out.c_str());
     return kSuccess;
 }
@@ -291,6 +316,7 @@ void addBenchCommand(CLI::App& app, Action& action) {
     cmd->add_option("--env", o->env, "Environment map (.hdr, .exr), anywhere on disk (default: the project's)");
     cmd->add_option("--reference-spp", o->referenceSpp, "Samples per pixel of the reference (default: 1024)")
         ->check(CLI::Range(1, 1 << 20));
+    addPathBenchOptions(*cmd, o->path);
     cmd->callback([&action, o] {
         parseConfigs(o->configs); // usage errors before any work
         action = [o] {
