@@ -127,11 +127,6 @@ std::map<NodeId, glm::mat4> instanceTransforms(const Scene& scene) {
     return transforms;
 }
 
-bool hasAnimation(const Scene& scene) {
-    const auto [start, end] = sceneAnimationTimeSpan(scene);
-    return end > start || !scene.animations.empty();
-}
-
 // Samples per frame of real-time frames, and the bounce count the configuration allows.
 int framesSpp(const FrameSettings& s) { return s.spp > 0 ? s.spp : traitsOf(s.configuration).sppPerFrame; }
 int effectiveBounces(const FrameSettings& s) { return traitsOf(s.configuration).gi ? s.bounces : 0; }
@@ -172,6 +167,7 @@ struct FrameRenderer::State {
     MeshBvhCache meshCache; // mesh BVHs survive uploads: only changed meshes are rebuilt
     TextureCache textureCache; // decoded, mip-mapped images survive uploads: only new image bytes are decoded
     std::unique_ptr<GpuScene> gpu;
+    Warnings noWarnings; // what warnings() returns before a scene is set
     double time = 0.0;
     bool followSceneCamera = false;
     std::string cameraName;
@@ -199,7 +195,7 @@ struct FrameRenderer::State {
         gpu->updateTransforms(posed);
         instances = instanceTransforms(posed);
     }
-    void pose() { posed = hasAnimation(document) ? sceneAt(document, time) : document; }
+    void pose() { posed = sceneForTime(document, time); }
     FrameTargets& sized() {
         if (!targets || targets->sample.width() != settings.width || targets->sample.height() != settings.height) {
             targets = std::make_unique<FrameTargets>(programs, settings.width, settings.height);
@@ -300,17 +296,63 @@ void FrameRenderer::setScene(const Scene& scene, const std::filesystem::path& en
     state_->resetAll();
 }
 
-void FrameRenderer::applyChanges(const Scene& scene, const ChangeSet& changes) {
-    State& s = *state_;
-    s.document = scene;
-    if (!affectsImage(changes)) return;
+void FrameRenderer::setPreparedScene(const Scene& document, double seconds, PreparedScene prepared) {
     CallerGlState guard;
+    State& s = *state_;
+    s.document = document;
+    s.time = seconds;
+    s.environmentFile = prepared.environmentFile;
     s.pose();
-    // Upload what the change names: transforms and lights alone keep meshes, materials, textures
-    // and the environment; anything else rebuilds the GPU scene, reusing unchanged mesh BVHs.
-    if (s.gpu && onlyTransformsOrLights(changes)) s.uploadTransforms();
-    else if (!(s.gpu && onlyMaterials(changes) && s.gpu->updateMaterials(s.posed))) s.upload();
+    s.gpu = std::make_unique<GpuScene>(std::move(prepared));
+    s.instances = instanceTransforms(s.posed);
+    s.previousInstances = s.instances;
+    s.resetAll();
+}
+
+bool FrameRenderer::mayApplyInPlace(const ChangeSet& changes) {
+    return !affectsImage(changes) || onlyTransformsOrLights(changes) || onlyMaterials(changes);
+}
+
+bool FrameRenderer::applyChangesInPlace(const Scene& scene, const ChangeSet& changes) {
+    State& s = *state_;
+    if (!affectsImage(changes)) {
+        s.document = scene;
+        return true;
+    }
+    if (!s.gpu || !mayApplyInPlace(changes)) return false;
+    CallerGlState guard;
+    if (onlyTransformsOrLights(changes)) {
+        s.document = scene;
+        s.pose();
+        s.uploadTransforms();
+    } else {
+        Scene posed = sceneForTime(scene, s.time);
+        if (!s.gpu->updateMaterials(posed)) return false; // other textures or variant: nothing changed here
+        s.document = scene;
+        s.posed = std::move(posed);
+    }
     s.pictureChanged = true;
+    dropHistoryFor(changes);
+    return true;
+}
+
+bool FrameRenderer::hasScene() const { return state_->gpu != nullptr; }
+
+const Warnings& FrameRenderer::warnings() const { return state_->gpu ? state_->gpu->warnings() : state_->noWarnings; }
+
+void FrameRenderer::applyChanges(const Scene& scene, const ChangeSet& changes) {
+    if (applyChangesInPlace(scene, changes)) return;
+    State& s = *state_;
+    CallerGlState guard;
+    s.document = scene;
+    s.pose();
+    s.upload(); // rebuilds the GPU scene, reusing the BVHs of unchanged meshes
+    s.pictureChanged = true;
+    dropHistoryFor(changes);
+}
+
+void FrameRenderer::dropHistoryFor(const ChangeSet& changes) {
+    State& s = *state_;
     // Light edits keep the history: anti-lag (anti_lag_pass.h) shortens it where the lighting
     // changed, so a switched-off light goes in a frame and unchanged pixels stay converged. Edits
     // that change what surfaces are (materials, structure, environment image) or settings drop it.
@@ -348,7 +390,7 @@ void FrameRenderer::setTime(double seconds) {
     State& s = *state_;
     if (seconds == s.time) return;
     s.time = seconds;
-    if (!hasAnimation(s.document)) return;
+    if (!sceneAnimates(s.document)) return;
     CallerGlState guard;
     s.pose();
     if (s.gpu) s.uploadTransforms(); // animations move nodes (and cameras) only

@@ -11,6 +11,7 @@
 // anything. All methods must be called with the creating context current; no GL header is needed here.
 #include "renderer/configuration.h"
 #include "renderer/gpu_scene/camera_setup.h"
+#include "renderer/gpu_scene/prepared_scene.h"
 #include "renderer/passes/path_trace_pass.h"
 #include "renderer/render_region.h"
 #include "scene/core/scene.h"
@@ -75,6 +76,19 @@ public:
     // re-upload shapes, lights and the top-level BVH alone; other image changes rebuild the GPU
     // scene, reusing the BVHs of unchanged meshes.
     void applyChanges(const Scene& scene, const ChangeSet& changes);
+    // The GL stage of setScene alone, for a host that prepares on a worker thread: uploads what
+    // prepareScene made of sceneForTime(document, seconds) (renderer/gpu_scene/prepared_scene.h).
+    void setPreparedScene(const Scene& document, double seconds, PreparedScene prepared);
+    // Whether changes like these may be applied without a new GPU scene (transforms, lights,
+    // material values; a material edit that needs other textures still returns false below).
+    static bool mayApplyInPlace(const ChangeSet& changes);
+    // applyChanges when it needs no new GPU scene (true); else false and nothing is changed: the
+    // host prepares a new scene (setScene or setPreparedScene).
+    bool applyChangesInPlace(const Scene& scene, const ChangeSet& changes);
+    bool hasScene() const;
+    // Problems of the current GPU scene that did not stop it (missing or undecodable textures,
+    // resampled texture sizes), each naming the texture; `file` is left to the host.
+    const Warnings& warnings() const;
     void setSettings(const FrameSettings& settings); // display-only changes keep all history
     void setCamera(const CameraSetup& camera);       // a moving camera keeps reprojected history
     // Follow the scene's camera (by name, empty = active) at the current time instead of setCamera.
@@ -93,6 +107,7 @@ public:
     const FrameSettings& settings() const;
 
 private:
+    void dropHistoryFor(const ChangeSet& changes);
     struct State;
     std::unique_ptr<State> state_;
 };

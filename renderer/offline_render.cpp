@@ -73,6 +73,7 @@ RenderOutput OfflineRenderer::render(const Scene& scene, const RenderRequest& re
     frames.resetHistory();
     RenderOutput out;
     out.glRenderer = state_->context.renderer();
+    out.warnings = frames.warnings();
     out.timings.setupMs = millisecondsSince(setupStart);
 
     const auto renderStart = Clock::now();

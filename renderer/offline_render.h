@@ -46,6 +46,7 @@ struct RenderTimings {
 struct RenderOutput : FrameImages {
     std::string glRenderer;
     RenderTimings timings;
+    Warnings warnings; // the GPU scene's (textures); `file` empty: the caller names the scene
 };
 
 // Owns a headless context and a FrameRenderer in it, so many renders share their setup cost (the

@@ -36,8 +36,9 @@ std::optional<std::string> fromEnvironment(const std::string& name) {
 
 // Renders one frame unless --resume finds it complete with the same settings hash.
 void renderFrame(renderer::OfflineRenderer& gpu, const RenderOptions& o, const Scene& scene, const FramePattern& pattern,
-                 int frame, const Fps& fps, const StopSignal& stop, FrameProgress& progress) {
+                 int frame, const Fps& fps, const StopSignal& stop, FrameProgress& progress, WarningsOnce& warnings) {
     FrameJob job;
+    job.warnings = &warnings;
     const Scene posed = sceneAt(scene, frameTime(scene, fps, frame));
     job.scene = &posed;
     job.out = pattern.frame(frame);
@@ -58,9 +59,10 @@ int renderConverged(const RenderOptions& o, const Scene& scene, const FramePatte
     renderer::OfflineRenderer gpu(o.common.requireGpu);
     std::fprintf(stderr, "glint: GL_RENDERER: %s\n", gpu.glRenderer().c_str());
     FrameProgress progress(int(frames.size()));
+    WarningsOnce warnings;
     for (int frame : frames) {
         try {
-            renderFrame(gpu, o, scene, pattern, frame, fps, stop, progress);
+            renderFrame(gpu, o, scene, pattern, frame, fps, stop, progress, warnings);
         } catch (const RenderStopped&) {
             std::fprintf(stderr, "glint: stopped by signal %d; frame %d discarded\n", stop.signalNumber(), frame);
             return stop.exitCode();

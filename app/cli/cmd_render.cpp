@@ -25,9 +25,11 @@ int renderStill(const RenderOptions& o, Scene& scene) {
     renderer::checkOutputWritable(o.out); // before a long render, not after
     if (o.time) poseSceneAt(scene, *o.time);
     FrameJob job;
+    WarningsOnce warnings;
     job.scene = &scene;
     job.out = o.out;
     job.time = o.time;
+    job.warnings = &warnings;
     RenderPlan plan = planImage(o, job);
     const int spp = plan.request.spp;
     renderer::OfflineRenderer gpu(o.common.requireGpu);

@@ -48,6 +48,7 @@ void renderImage(renderer::OfflineRenderer& gpu, const RenderOptions& o, const F
     };
     if (stop.requested()) throw RenderStopped{};
     renderer::RenderOutput image = gpu.render(*job.scene, plan.request);
+    if (job.warnings) job.warnings->report(image.warnings, o.scene, o.common.strict);
     const renderer::ExrLayers layers = renderer::parseAovList(o.aovs);
     if (layers.bvhCost && renderer::imageFormatFor(job.out) == renderer::ImageFormat::Exr)
         image.bvhCost = renderer::renderBvhCost(gpu, *job.scene, plan.request); // a debug pass of its own

@@ -3,6 +3,7 @@
 // Stills and every frame of an animation go through here, so both get the same metadata and hash.
 #include "render_options.h"
 #include "render_setup.h"
+#include "report.h"
 #include "stop_signal.h"
 
 #include "renderer/offline_render.h"
@@ -22,6 +23,7 @@ struct FrameJob {
     std::optional<int> frame;     // animation frames: the number, and the seed offset
     std::optional<Fps> fps;
     bool history = false;         // a frame of a history chunk: one seed for the chunk, K and W hashed
+    WarningsOnce* warnings = nullptr; // prints the renderer's warnings once per run (none: not printed)
 };
 
 // The plan of one image with its sealed settings hash (before rendering: --resume compares it).

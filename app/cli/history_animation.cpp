@@ -1,6 +1,7 @@
 #include "history_animation.h"
 
 #include "frame_render.h"
+#include "report.h"
 
 #include "app/version.h"
 #include "renderer/frame_renderer.h"
@@ -63,6 +64,7 @@ int renderHistoryChunks(const RenderOptions& o, const Scene& scene, const FrameP
     renderer::FrameRenderer frames;
     frames.setSettings(renderer::frameSettingsFor(base.request, o.common.spp.value_or(0))); // 0: the configuration's own
     frames.setScene(scene, renderer::environmentPath(scene, base.request));
+    WarningsOnce().report(frames.warnings(), o.scene, o.common.strict); // one upload for all chunks
     frames.useSceneCamera(base.request.cameraName);
     for (const ChunkWork& chunk : chunks) {
         if (chunkComplete(o, scene, pattern, fps, chunk)) {

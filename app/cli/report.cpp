@@ -23,4 +23,21 @@ bool reportWarnings(const Warnings& warnings, bool strict) {
     return false;
 }
 
+Warnings withFile(Warnings warnings, const std::string& file) {
+    for (Warning& w : warnings)
+        if (w.file.empty()) w.file = file;
+    return warnings;
+}
+
+void WarningsOnce::report(const Warnings& warnings, const std::string& file, bool strict) {
+    std::size_t fresh = 0;
+    for (const Warning& w : withFile(warnings, file)) {
+        if (!printed_.insert({w.code, w.message}).second) continue;
+        printWarning(w);
+        ++fresh;
+    }
+    if (strict && fresh > 0)
+        throw FileError(file, "strict", "--strict: " + std::to_string(fresh) + " renderer warning(s) treated as errors");
+}
+
 } // namespace glint::cli

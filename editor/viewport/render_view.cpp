@@ -1,5 +1,6 @@
 // The FrameRenderer (epoxy GL) comes before any Qt OpenGL header in this translation unit.
 #include "renderer/frame_renderer.h"
+#include "renderer/gpu_scene/texture_arrays.h"
 #include "renderer/raster/gpu_sync.h"
 #include "renderer/raster/preview_pass.h"
 
@@ -9,6 +10,7 @@
 #include "editor/viewport/debug_image.h"
 #include "editor/viewport/gizmo_drag.h"
 #include "editor/viewport/overlay_painter.h"
+#include "editor/viewport/scene_preparer.h"
 #include "editor/viewport/scene_picker.h"
 #include "renderer/configuration.h"
 #include "scene/anim/scene_at_time.h"
@@ -48,7 +50,8 @@ std::filesystem::path environmentPath(const Document& document) {
 
 } // namespace
 
-RenderView::RenderView(Document& document, QWidget* parent) : QOpenGLWidget(parent), document_(document) {
+RenderView::RenderView(Document& document, QWidget* parent)
+    : QOpenGLWidget(parent), document_(document), preparer_(std::make_unique<ScenePreparer>()) {
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(true);
     setAccessibleName(tr("Viewport"));
@@ -57,15 +60,27 @@ RenderView::RenderView(Document& document, QWidget* parent) : QOpenGLWidget(pare
     connect(&settleTimer_, &QTimer::timeout, this, qOverload<>(&QWidget::update));
     flyTimer_.setInterval(kFlyIntervalMs);
     connect(&flyTimer_, &QTimer::timeout, this, &RenderView::flyStep);
+    connect(preparer_.get(), &ScenePreparer::progress, this, &RenderView::showPreparationProgress);
+    connect(preparer_.get(), &ScenePreparer::finished, this, qOverload<>(&QWidget::update));
+    connect(preparer_.get(), &ScenePreparer::failed, this, [this](const QString& message) {
+        stats_.error = message;
+        stats_.preparing = false;
+        update();
+    });
     connect(&document_, &Document::changed, this, [this](const ChangeSet& changes) {
         if (preview_ && (changes.has(Change::Geometry) || changes.has(Change::Structure))) previewStale_ = true;
+        // A change the GPU scene cannot take in place supersedes the preparation in flight.
+        if (preparer_->busy() && !renderer::FrameRenderer::mayApplyInPlace(changes)) fullUpload_ = true;
         pending_.merge(changes);
         picker_.reset();
         followLookThrough();
         update();
     });
     connect(&document_, &Document::fileChanged, this, [this] {
+        preparer_->cancel(); // another document: the old preparation is of no use
         fullUpload_ = true;
+        showPrevious_ = false;
+        reportedWarnings_.clear(); // warnings are de-duplicated per opened file
         picker_.reset();
         update();
     });
@@ -80,6 +95,7 @@ RenderView::RenderView(Document& document, QWidget* parent) : QOpenGLWidget(pare
 }
 
 RenderView::~RenderView() {
+    preparer_.reset(); // cancels and waits for the worker's current step
     if (renderer_ && context()) {
         makeCurrent();
         renderer_.reset();
@@ -94,39 +110,71 @@ void RenderView::releaseGl() {
     renderer_.reset();
     preview_.reset();
     doneCurrent();
-    fullUpload_ = true;
+    // The new context needs a GPU scene: the preparation in flight will do (its data is CPU-side),
+    // else a new one starts at the next paint.
+    gpuCurrent_ = false;
+    showPrevious_ = false;
+    fullUpload_ = !preparer_ || !preparer_->busy(); // no preparer: the view is being destroyed
 }
 
 void RenderView::initializeGL() {
     connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &RenderView::releaseGl, Qt::UniqueConnection);
     renderer_ = std::make_unique<renderer::FrameRenderer>();
     preview_ = std::make_unique<renderer::raster::PreviewPass>();
+    textureLimits_ = renderer::queryTextureLimits();
     ++stats_.contexts;
-    fullUpload_ = true;
+    gpuCurrent_ = false;
+    fullUpload_ = !preparer_->busy();
     timeDirty_ = true;
 }
 
 void RenderView::resizeGL(int, int) { stillDivisor_ = 0; }
 
-void RenderView::uploadScene() {
+// Starts the CPU stage of a new GPU scene on the worker; pending changes are part of it.
+void RenderView::startPreparation() {
     stats_.error.clear();
-    try {
-        renderer_->setScene(document_.scene(), environmentPath(document_));
-    } catch (const std::exception& e) {
-        stats_.error = QString::fromStdString(e.what());
-    }
+    stats_.preparing = true;
+    stats_.preparation = tr("Preparing the scene");
+    ++stats_.preparations;
+    preparer_->start(document_.scene(), document_.currentTime(), environmentPath(document_), textureLimits_);
     fullUpload_ = false;
+    gpuCurrent_ = false;
     pending_ = {};
-    timeDirty_ = true;
 }
 
-void RenderView::applyPending() {
-    if (fullUpload_) uploadScene();
+// The GL stage, on the GL thread: a prepared scene becomes the renderer's.
+void RenderView::uploadPrepared(PreparedDocument prepared) {
+    QElapsedTimer upload;
+    upload.start();
+    stats_.preparing = false;
+    showPrevious_ = false; // until the upload succeeds
+    renderer_->setPreparedScene(prepared.document, prepared.time, std::move(prepared.gpu));
+    renderer::raster::finishGpuWork();
+    stats_.uploadMs = double(upload.nsecsElapsed()) / 1e6;
+    stats_.prepareMs = prepared.milliseconds;
+    ++stats_.uploads;
+    gpuCurrent_ = true;
+    showPrevious_ = true;
+    timeDirty_ = true;
+    reportRendererWarnings();
+}
+
+// Brings the GPU scene up to the document where that is cheap, starts a preparation where it is
+// not; false while the renderer has no current scene to draw.
+bool RenderView::syncGpuScene() {
+    if (std::unique_ptr<PreparedDocument> ready = preparer_->take()) uploadPrepared(std::move(*ready));
+    // After a failed preparation, the next change tries again.
+    if (fullUpload_ || (!gpuCurrent_ && !preparer_->busy() && pending_.flags != 0)) startPreparation();
+    if (preparer_->busy() || !gpuCurrent_) return false;
     if (pending_.flags != 0) {
-        try {
-            renderer_->applyChanges(document_.scene(), pending_);
-        } catch (const std::exception& e) {
-            stats_.error = QString::fromStdString(e.what());
+        QElapsedTimer clock;
+        clock.start();
+        const bool inPlace = renderer_->applyChangesInPlace(document_.scene(), pending_);
+        renderer::raster::finishGpuWork();
+        stats_.inPlaceMs = double(clock.nsecsElapsed()) / 1e6;
+        if (!inPlace) {
+            startPreparation();
+            return false;
         }
         pending_ = {};
     }
@@ -134,6 +182,41 @@ void RenderView::applyPending() {
         renderer_->setTime(document_.currentTime());
         timeDirty_ = false;
     }
+    return true;
+}
+
+// Meanwhile: the last image while it is of this document, else the raster preview.
+void RenderView::paintWhilePreparing() {
+    stats_.samples = 0; // none of the document as it is now
+    if (showPrevious_ && renderer_->hasScene()) {
+        const qreal dpr = devicePixelRatioF();
+        renderer_->drawTo(defaultFramebufferObject(), int(std::lround(width() * dpr)), int(std::lround(height() * dpr)));
+        ++stats_.paints;
+        drawOverlays();
+        emit statsChanged();
+        return;
+    }
+    paintPreview();
+}
+
+void RenderView::showPreparationProgress(const QString& stage, int done, int total) {
+    QString what = stage;
+    if (stage == QLatin1String("meshes")) what = tr("building mesh BVHs");
+    else if (stage == QLatin1String("textures")) what = tr("decoding textures");
+    else if (stage == QLatin1String("environment")) what = tr("loading the environment");
+    else if (stage == QLatin1String("packing")) what = tr("packing the scene");
+    stats_.preparation = total > 1 ? tr("Preparing the scene: %1 %2/%3").arg(what).arg(done + 1).arg(total)
+                                   : tr("Preparing the scene: %1").arg(what);
+    emit statsChanged();
+}
+
+// Renderer warnings reach the log panel through the document, as the loader's do, each once per
+// opened file (every preparation of the same scene reports the same ones).
+void RenderView::reportRendererWarnings() {
+    const QString file = document_.filePath().isEmpty() ? document_.displayName() : document_.filePath();
+    for (const Warning& w : renderer_->warnings())
+        if (reportedWarnings_.insert({w.code, w.message}).second)
+            document_.reportWarning(QStringLiteral("%1: %2").arg(file, QString::fromStdString(w.message)));
 }
 
 void RenderView::configure(bool moving, int divisor) {
@@ -233,7 +316,10 @@ void RenderView::paintGL() {
     const int divisor = isMoving ? budget_.resolutionDivisor(true) : stillDivisor_;
     stats_.divisor = divisor;
     try {
-        applyPending();
+        if (!syncGpuScene()) {
+            paintWhilePreparing();
+            return;
+        }
         configure(isMoving, divisor);
         if (stats_.error.isEmpty() && !paused_ && !converged()) renderSlice(isMoving, divisor);
         const qreal dpr = devicePixelRatioF();

@@ -2,13 +2,17 @@
 // The viewport's GL surface: hosts a renderer::FrameRenderer in the QOpenGLWidget's context and
 // time-slices it (each paint renders as many frames as fit its budget, then yields to the event
 // loop), draws the overlays, and turns mouse and keys into navigation, picks and gizmo drags.
-// The GPU scene is rebuilt from the document whenever Qt re-creates the context (re-docking or
-// floating the viewport).
+// The GPU scene is prepared on a worker thread (ScenePreparer: BVHs, textures, packing) and
+// uploaded here; meanwhile the view shows its last image of the document, or the raster preview.
+// Transform, light and material-value edits are applied in place at once (a top-level rebuild).
+// When Qt re-creates the context (re-docking or floating the viewport), the GPU scene is uploaded
+// again from a preparation (the one in flight, if any).
 #include "editor/viewport/frame_budget.h"
 #include "editor/viewport/gizmo_math.h"
 #include "editor/viewport/region_tool.h"
 #include "editor/viewport/view_camera.h"
 #include "editor/viewport/view_modes.h"
+#include "renderer/gpu_scene/texture_set.h"
 #include "scene/history/change_set.h"
 
 #include <QElapsedTimer>
@@ -20,6 +24,8 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <string>
+#include <utility>
 
 namespace glint::renderer {
 class FrameRenderer;
@@ -33,10 +39,12 @@ namespace glint::editor {
 class Document;
 class ScenePicker;
 class GizmoDrag;
+class ScenePreparer;
+struct PreparedDocument;
 
 // Figures of the last paint, for the status bar and the tests.
 struct ViewportStats {
-    int samples = 0;        // in the running mean behind the shown image
+    int samples = 0;        // in the running mean behind the shown image (0 while the scene is prepared)
     int framesThisPaint = 0;
     double paintMs = 0.0;   // GL work of the last paint (frames finished on the GPU)
     double frameMs = 0.0;   // the last frame alone
@@ -44,6 +52,14 @@ struct ViewportStats {
     long long paints = 0;
     int contexts = 0;       // GL contexts this view has built its GPU scene in (re-docking makes new ones)
     QString error;          // why nothing is drawn (scene too big for the GPU, ...), or empty
+    // GPU scene preparation (on a worker thread): in progress, and a line for the status bar.
+    bool preparing = false;
+    QString preparation;
+    int preparations = 0;   // preparations started (a newer one cancels the one in flight)
+    int uploads = 0;        // prepared scenes uploaded on the GL thread
+    double prepareMs = 0.0; // the last upload's preparation on the worker
+    double uploadMs = 0.0;  // and its upload on the GL thread
+    double inPlaceMs = 0.0; // the last edit applied in place (transforms, lights, material values)
 };
 
 class RenderView : public QOpenGLWidget {
@@ -105,8 +121,12 @@ private:
     void releaseGl();
     void followLookThrough();
     void placeAtCamera(NodeId camera);
-    void uploadScene();
-    void applyPending();
+    bool syncGpuScene();
+    void startPreparation();
+    void uploadPrepared(PreparedDocument prepared);
+    void paintWhilePreparing();
+    void showPreparationProgress(const QString& stage, int done, int total);
+    void reportRendererWarnings();
     void configure(bool moving, int divisor);
     void renderSlice(bool moving, int divisor);
     void drawOverlays();
@@ -121,6 +141,11 @@ private:
 
     Document& document_;
     std::unique_ptr<renderer::FrameRenderer> renderer_;
+    std::unique_ptr<ScenePreparer> preparer_; // CPU stage of the GPU scene, on a worker thread
+    renderer::TextureLimits textureLimits_;   // of the GL context, read on the GL thread
+    bool gpuCurrent_ = false;   // the renderer's GPU scene is the document's (bar pending_ changes)
+    bool showPrevious_ = false; // while preparing, the last image is of this document: keep showing it
+    std::set<std::pair<std::string, std::string>> reportedWarnings_; // (code, message) since the file was opened
     std::unique_ptr<renderer::raster::PreviewPass> preview_;
     bool previewStale_ = false;
     std::unique_ptr<ScenePicker> picker_;

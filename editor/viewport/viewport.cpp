@@ -191,6 +191,7 @@ void Viewport::toggleLookThrough() {
 QString Viewport::statusText() const {
     const ViewportStats& s = view_->stats();
     if (!s.error.isEmpty()) return s.error;
+    if (s.preparing) return s.preparation;
     return tr("%1 spp  |  %2 ms/frame  |  1/%3 resolution%4")
         .arg(s.samples)
         .arg(s.frameMs, 0, 'f', 1)

@@ -30,7 +30,9 @@ void check(const bvh::FlatScene& flat) {
 } // namespace
 
 GpuMeshes::GpuMeshes(const Scene& scene, const std::map<MaterialId, int>& materialIndex, bool texturing, MeshBvhCache& cache)
-    : data_(buildMeshData(scene, materialIndex, texturing, cache)) {
+    : GpuMeshes(buildMeshData(scene, materialIndex, texturing, cache)) {}
+
+GpuMeshes::GpuMeshes(MeshData data) : data_(std::move(data)) {
     if (data_.instances.empty()) return;
     const bvh::FlatScene& flat = data_.flat;
     check(flat);

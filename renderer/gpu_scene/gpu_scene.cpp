@@ -1,9 +1,6 @@
 #include "renderer/gpu_scene/gpu_scene.h"
 
-#include "renderer/cpu_twin/env_sampling.h"
-#include "renderer/gpu_scene/environment_image.h"
 #include "renderer/gpu_scene/texture_refs.h"
-#include "scene/io/oiio/oiio_image_decoder.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -36,69 +33,27 @@ void bindTexture2D(const gl::Texture& texture, GLuint unit, GLint location) {
     glUniform1i(location, static_cast<GLint>(unit));
 }
 
-// What the visible meshes' materials ask of the shader (textures are found by buildTextureSet).
-void addMeshMaterialFeatures(const Scene& scene, SceneFeatures& features) {
-    for (const MaterialId id : meshMaterials(scene)) {
-        const Material m = scene.materials.contains(id) ? scene.materials.at(id) : Material{};
-        if (m.alphaMode != AlphaMode::Opaque) features.alpha = true;
-        if (!m.doubleSided && m.emissiveFactor * m.emissiveStrength == glm::vec3(0.0f)) features.singleSided = true;
-    }
-}
-
-// COLOR_0 needs the textured vertex layout even without a texture.
-bool meshesHaveColors(const Scene& scene) {
-    for (const auto& [id, mesh] : scene.meshes)
-        for (const Primitive& p : mesh.primitives)
-            if (!p.colors.empty()) return true;
-    return false;
-}
-
-TextureSet sceneTextures(const Scene& scene, TextureCache* cache) {
-    return buildTextureSet(scene, meshMaterials(scene), OiioImageDecoder{}, queryTextureLimits(), cache);
-}
-
 } // namespace
 
-gl::Defines SceneFeatures::defines() const {
-    gl::Defines defines;
-    if (meshes) defines["HAS_MESHES"] = "";
-    if (environmentMap) defines["HAS_ENV_MAP"] = "";
-    if (meshes && textures) {
-        defines["HAS_TEXTURES"] = "";
-        defines["TEXTURE_ARRAY_COUNT"] = std::to_string(textureArrays);
-        for (const std::string& name : extensionTextureDefines(extensionTextures)) defines[name] = "";
-    }
-    if (meshes && alpha) defines["HAS_ALPHA"] = "";
-    if (meshes && singleSided) defines["HAS_SINGLE_SIDED"] = "";
-    return defines;
-}
-
 GpuScene::GpuScene(const Scene& scene, const std::filesystem::path& environmentFile, MeshBvhCache& meshCache, TextureCache* textureCache)
-    : GpuScene(scene, environmentFile, sceneTextures(scene, textureCache), meshCache) {}
+    : GpuScene(prepareScene(scene, environmentFile, queryTextureLimits(), meshCache, {}, textureCache)) {}
 
-GpuScene::GpuScene(const Scene& scene, const std::filesystem::path& environmentFile, TextureSet textures, MeshBvhCache& meshCache)
-    : packed_(packScene(scene, &textures)),
-      environment_(scene.settings.environment),
+GpuScene::GpuScene(PreparedScene prepared)
+    : features_(prepared.features),
+      packed_(std::move(prepared.packed)),
+      environment_(prepared.environment),
       shapes_(vec4Buffer("the shape buffer", packed_.shapes)),
       materials_(vec4Buffer("the material buffer", packed_.materials)),
       lights_(vec4Buffer("the light buffer", packed_.lights)),
-      meshes_(scene, packed_.materialIndex, !textures.empty() || meshesHaveColors(scene), meshCache),
-      textureArrays_(textures),
-      textureSlots_{{}, textures.slotOf, {}},
-      texturesUsed_(texturesUsed(scene, meshMaterials(scene))),
-      warnings_(std::move(textures.warnings)) {
-    features_.meshes = !meshes_.empty();
-    addMeshMaterialFeatures(scene, features_);
-    features_.textures = !textureArrays_.empty() || meshesHaveColors(scene);
-    features_.textureArrays = static_cast<int>(textures.buckets.size());
-    features_.extensionTextures = extensionTexturesUsed(scene, meshMaterials(scene), textureSlots_);
-    if (!environmentFile.empty()) {
-        const EnvironmentImage image = loadEnvironmentImage(environmentFile);
-        const auto table = twin::buildEnvironmentSamplingTable(image.width, image.height, image.rgb);
-        environmentMap_ = uploadFloatTexture(GL_RGB32F, GL_RGB, image.width, image.height, image.rgb.data(), GL_LINEAR);
-        environmentCdf_ = uploadFloatTexture(GL_R32F, GL_RED, table.tableWidth, table.tableHeight, table.cdf.data(), GL_NEAREST);
-        environmentSize_ = {image.width, image.height};
-        features_.environmentMap = true;
+      meshes_(std::move(prepared.meshes)),
+      textureArrays_(prepared.textures),
+      textureSlots_{{}, std::move(prepared.textures.slotOf), {}},
+      texturesUsed_(std::move(prepared.texturesUsed)),
+      warnings_(std::move(prepared.warnings)) {
+    if (const auto& env = prepared.environmentMap) {
+        environmentMap_ = uploadFloatTexture(GL_RGB32F, GL_RGB, env->image.width, env->image.height, env->image.rgb.data(), GL_LINEAR);
+        environmentCdf_ = uploadFloatTexture(GL_R32F, GL_RED, env->table.tableWidth, env->table.tableHeight, env->table.cdf.data(), GL_NEAREST);
+        environmentSize_ = {env->image.width, env->image.height};
     }
 }
 

@@ -1,10 +1,12 @@
 #pragma once
 // A scene snapshot compiled into GPU data: texture buffers of shapes, materials and lights, the
-// meshes' BVH, and the environment. Built on the GL thread; binds itself to a path-trace program.
+// meshes' BVH, and the environment. Prepared on the CPU (prepared_scene.h: any thread), uploaded on
+// the GL thread; binds itself to a path-trace program.
 #include "renderer/gl/shader_program.h"
 #include "renderer/gl/texture_buffer.h"
 #include "renderer/gpu_scene/gpu_meshes.h"
 #include "renderer/gpu_scene/packed_scene.h"
+#include "renderer/gpu_scene/prepared_scene.h"
 #include "renderer/gpu_scene/texture_arrays.h"
 
 #include <filesystem>
@@ -13,25 +15,16 @@
 
 namespace glint::renderer {
 
-// What the scene uses; selects shader variants so a scene pays only for its features.
-struct SceneFeatures {
-    bool meshes = false;
-    bool environmentMap = false;
-    bool textures = false;    // material textures or COLOR_0 on meshes: UVs, tangents, texture arrays
-    int textureArrays = 0;    // texture arrays bound (TEXTURE_ARRAY_COUNT)
-    unsigned extensionTextures = 0; // KHR_materials_* textures sampled (texture_refs.h ExtensionTextureBits)
-    bool alpha = false;       // a mesh material with alpha mode MASK or BLEND
-    bool singleSided = false; // a non-emissive single-sided mesh material: camera rays cull its back faces
-    gl::Defines defines() const;
-};
-
 class GpuScene {
 public:
     // `environmentFile`: an equirectangular image, or empty for the project's uniform colour.
     // `meshCache`: mesh BVHs kept across uploads; meshes whose content is unchanged are not rebuilt.
+    // Prepares (prepareScene with this context's texture limits) and uploads in one step.
     // `textureCache`: decoded and mip-mapped images kept across uploads (none: decode every image).
     GpuScene(const Scene& scene, const std::filesystem::path& environmentFile, MeshBvhCache& meshCache,
              TextureCache* textureCache = nullptr);
+    // The GL stage alone: uploads what prepareScene made, possibly on another thread.
+    explicit GpuScene(PreparedScene prepared);
 
     // After a change of transforms alone (same visible nodes, meshes, materials, lights and
     // environment): re-uploads the shape and light buffers, the top-level BVH, the instance table
@@ -47,14 +40,12 @@ public:
 
     const SceneFeatures& features() const { return features_; }
     // Problems that did not stop the upload (missing or undecodable textures, resampled sizes).
-    const std::vector<std::string>& warnings() const { return warnings_; }
+    const Warnings& warnings() const { return warnings_; }
     // Binds the buffers to texture units 0..12, the texture arrays to 13..15 (the 16 units GL 4.1
     // guarantees), and sets the scene uniforms of `program`.
     void bind(const gl::ShaderProgram& program) const;
 
 private:
-    GpuScene(const Scene& scene, const std::filesystem::path& environmentFile, TextureSet textures, MeshBvhCache& meshCache);
-
     SceneFeatures features_;
     PackedScene packed_;
     Environment environment_;
@@ -68,7 +59,7 @@ private:
     TextureArrays textureArrays_;
     TextureSet textureSlots_; // where each image lives (no pixels): material records point there
     std::set<std::pair<ImageId, bool>> texturesUsed_;
-    std::vector<std::string> warnings_;
+    Warnings warnings_;
 };
 
 } // namespace glint::renderer

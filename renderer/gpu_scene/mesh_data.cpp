@@ -96,13 +96,17 @@ void MeshBvhCache::keepOnly(const std::vector<MeshId>& used) {
     std::erase_if(entries_, [&](const auto& entry) { return std::find(used.begin(), used.end(), entry.first) == used.end(); });
 }
 
-MeshData buildMeshData(const Scene& scene, const std::map<MaterialId, int>& materialIndex, bool texturing, MeshBvhCache& cache) {
+MeshData buildMeshData(const Scene& scene, const std::map<MaterialId, int>& materialIndex, bool texturing, MeshBvhCache& cache,
+                       const std::function<void(std::size_t, std::size_t)>& beforeMesh) {
     const auto indexOf = [&](MaterialId id) {
         const auto it = materialIndex.find(id);
         return static_cast<std::uint32_t>(it == materialIndex.end() ? 0 : it->second);
     };
     MeshData data;
-    for (const auto& [meshId, nodes] : meshUsers(scene)) {
+    const auto users = meshUsers(scene);
+    std::size_t done = 0;
+    for (const auto& [meshId, nodes] : users) {
+        if (beforeMesh) beforeMesh(done++, users.size());
         auto triangles = bvh::trianglesFromMesh(scene.meshes.at(meshId), indexOf);
         if (triangles.triangleCount() == 0) continue;
         data.bvhs.push_back(cache.get(meshId, std::move(triangles)));

@@ -8,6 +8,7 @@
 #include "scene/core/scene.h"
 
 #include <cstddef>
+#include <functional>
 #include <map>
 #include <vector>
 
@@ -42,9 +43,10 @@ struct MeshData {
     EmissiveTriangles lights;
 };
 
-// Everything from scratch except the mesh BVHs `cache` already holds.
+// Everything from scratch except the mesh BVHs `cache` already holds. `beforeMesh(i, n)` runs
+// before each of the n mesh BVHs is fetched or built (progress; it may throw to stop the build).
 MeshData buildMeshData(const Scene& scene, const std::map<MaterialId, int>& materialIndex, bool texturing,
-                       MeshBvhCache& cache);
+                       MeshBvhCache& cache, const std::function<void(std::size_t, std::size_t)>& beforeMesh = {});
 
 // After transforms alone changed (same visible instances, same meshes and materials): new instance
 // matrices, top level and emissive triangles; mesh BVHs, triangles and vertex attributes are kept.

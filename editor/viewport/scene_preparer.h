@@ -1,0 +1,66 @@
+#pragma once
+// Runs the CPU stage of the GPU scene (renderer::prepareScene: mesh BVHs, top level, texture
+// decoding and mipmaps, packing) on a worker thread, so the viewport's event loop never waits for
+// it; the GL upload stays with the viewport, on the GL thread (no GL here, no context on the worker).
+//
+// One preparation runs at a time, on one worker, so the mesh BVH cache the worker keeps across
+// preparations is never shared. start() supersedes: the preparation in flight is cancelled at its
+// next step (between two meshes or two textures) and its result never arrives; only the newest
+// one's finished() or failed() is emitted. The destructor cancels and waits for the worker (at most
+// one step), so closing the document or the application leaves nothing running.
+#include "renderer/gpu_scene/prepared_scene.h"
+
+#include <QObject>
+#include <QString>
+#include <QThreadPool>
+
+#include <atomic>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+
+namespace glint::editor {
+
+// A finished preparation: the document it was made from (not yet posed) and the GPU scene's CPU data.
+struct PreparedDocument {
+    Scene document;
+    double time = 0.0;
+    renderer::PreparedScene gpu;
+    double milliseconds = 0.0; // on the worker
+};
+
+class ScenePreparer : public QObject {
+    Q_OBJECT
+public:
+    explicit ScenePreparer(QObject* parent = nullptr);
+    ~ScenePreparer() override;
+
+    // Prepares `document` posed at `seconds`, cancelling the preparation in flight.
+    void start(Scene document, double seconds, std::filesystem::path environmentFile, renderer::TextureLimits limits);
+    // Cancels the preparation in flight (its result is dropped).
+    void cancel();
+    bool busy() const { return current_ != nullptr; }
+    std::uint64_t started() const { return generation_; } // preparations started so far
+    // The result of the last finished(), handed over once.
+    std::unique_ptr<PreparedDocument> take();
+
+signals:
+    // stage: "meshes", "textures", "environment" or "packing"; done of total steps of that stage.
+    void progress(const QString& stage, int done, int total);
+    void finished();
+    void failed(const QString& message);
+
+private:
+    struct Job;
+    void run(const std::shared_ptr<Job>& job);
+    void deliver(const std::shared_ptr<Job>& job);
+
+    QThreadPool pool_; // one thread: preparations run one after another
+    std::shared_ptr<renderer::MeshBvhCache> meshCache_;
+    std::shared_ptr<renderer::TextureCache> textureCache_; // decoded images: a rebuild decodes only new image bytes
+    std::shared_ptr<Job> current_;
+    std::unique_ptr<PreparedDocument> ready_;
+    std::uint64_t generation_ = 0;
+};
+
+} // namespace glint::editor

@@ -1,0 +1,85 @@
+#pragma once
+// The CPU stage of a GPU scene: everything GpuScene uploads, computed without GL, so the editor can
+// run it on a worker thread while the viewport keeps drawing. Mesh BVHs (through a MeshBvhCache),
+// the top level, texture decoding and mipmaps, the environment's sampling table and the packed
+// buffers. Deterministic: the same scene gives the same bytes on any thread, and GpuScene's one-step
+// constructor is this plus the upload, so both paths upload identical data.
+// Thread safety: prepareScene reads only its arguments; the MeshBvhCache must not be used by two
+// preparations at once (the editor runs them one after another on one worker).
+#include "renderer/cpu_twin/env_sampling.h"
+#include "renderer/gpu_scene/environment_image.h"
+#include "renderer/gpu_scene/mesh_data.h"
+#include "renderer/gpu_scene/packed_scene.h"
+#include "renderer/gpu_scene/texture_set.h"
+#include "scene/core/diagnostics.h"
+#include "scene/core/scene.h"
+
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <utility>
+
+namespace glint::renderer {
+
+// What the scene uses; selects shader variants so a scene pays only for its features.
+struct SceneFeatures {
+    bool meshes = false;
+    bool environmentMap = false;
+    bool textures = false;    // material textures or COLOR_0 on meshes: UVs, tangents, texture arrays
+    int textureArrays = 0;    // texture arrays bound (TEXTURE_ARRAY_COUNT)
+    unsigned extensionTextures = 0; // KHR_materials_* textures sampled (texture_refs.h ExtensionTextureBits)
+    bool alpha = false;       // a mesh material with alpha mode MASK or BLEND
+    bool singleSided = false; // a non-emissive single-sided mesh material: camera rays cull its back faces
+    std::map<std::string, std::string> defines() const; // gl::Defines: NAME -> value
+};
+
+// Adds the alpha and sidedness features of the visible meshes' materials.
+void addMeshMaterialFeatures(const Scene& scene, SceneFeatures& features);
+
+struct PreparedEnvironment {
+    EnvironmentImage image;
+    twin::EnvironmentSamplingTable table;
+};
+
+struct PreparedScene {
+    SceneFeatures features;
+    PackedScene packed;
+    MeshData meshes;
+    TextureSet textures;
+    std::set<std::pair<ImageId, bool>> texturesUsed;
+    Environment environment;
+    std::optional<PreparedEnvironment> environmentMap;
+    std::filesystem::path environmentFile;
+    // Problems that did not stop the preparation, naming the texture (code texture-missing,
+    // texture-unreadable, texture-resampled). `file` is empty: the host names the scene file.
+    Warnings warnings;
+};
+
+// Reports where a preparation is; `stage` is one of "meshes", "textures", "environment", "packing".
+// A callback may throw (PreparationCancelled) to stop the preparation between two steps.
+struct PrepareControl {
+    std::function<void(const char* stage, std::size_t done, std::size_t total)> progress;
+};
+
+// Thrown out of prepareScene by a progress callback when a newer preparation supersedes it.
+struct PreparationCancelled {};
+
+// `scene`: already posed at the time to render (sceneForTime). `limits`: the GL context's texture
+// limits (queryTextureLimits, read on the GL thread). Throws std::runtime_error or FileError like
+// GpuScene does, and whatever `control.progress` throws. `textureCache`: decoded, mip-mapped images
+// kept between preparations (texture_cache.h; it locks itself); none: every image is decoded.
+PreparedScene prepareScene(const Scene& scene, const std::filesystem::path& environmentFile, const TextureLimits& limits,
+                           MeshBvhCache& meshCache, const PrepareControl& control = {}, TextureCache* textureCache = nullptr);
+
+// Whether node animations or a camera path move anything over time.
+bool sceneAnimates(const Scene& scene);
+// The document as rendered at `seconds`: posed when it animates, else the document itself.
+Scene sceneForTime(const Scene& document, double seconds);
+
+// The warning code of one of TextureSet's messages.
+std::string textureWarningCode(const std::string& message);
+
+} // namespace glint::renderer
