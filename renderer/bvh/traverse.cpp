@@ -58,7 +58,8 @@ constexpr int kTraversalStack = 2 * kStackSize;
 
 // One loop over both levels with one stack, as the shader does: a top-level leaf (an instance)
 // pushes its mesh's root above the top-level entries and switches to the mesh-local ray; when the
-// stack falls back to that mark the walk is at the top level again. Nearer child first.
+// stack falls back to that mark the walk is at the top level again. Nearer child first; the next
+// node (nearer child, a mesh's root) is kept out of the stack, as the shader keeps it.
 // onTriangle(instance, slot, hit) and onShape(instance, shape, localRay) return true to stop; they
 // may lower tMax (closest hit).
 template <class OnTriangle, class OnShape>
@@ -75,26 +76,33 @@ void walkScene(const FlatScene& scene, const Ray& worldRay, float& tMax, OnTrian
     std::uint32_t stackNode[kTraversalStack];
     float stackNear[kTraversalStack];
     int size = 0;
-    const auto push = [&](std::uint32_t node, float nearT) {
+    const auto push = [&](std::uint32_t entry, float nearT) {
         if (nearT == kMissed || size == kTraversalStack) return false;
-        stackNode[size] = node;
+        stackNode[size] = entry;
         stackNear[size++] = nearT;
         return true;
     };
-    push(topRoot, rootNear);
+    std::int64_t node = topRoot; // the next node to visit; -1: take it from the stack
+    float nodeNear = rootNear;
     std::int64_t instance = -1; // the mesh instance being walked; -1 at the top level
     int meshMark = 0;           // stack size below the mesh's entries
     BoxRay box = worldBox;
     WatertightRay triangleRay = prepareWatertight(worldRay);
-    for (int steps = 1; size > 0 && steps <= kMaxTraversalSteps; ++steps) {
-        if (instance >= 0 && size == meshMark) {
-            instance = -1;
-            box = worldBox;
+    for (int steps = 1; (node >= 0 || size > 0) && steps <= kMaxTraversalSteps; ++steps) {
+        if (node < 0) {
+            if (instance >= 0 && size == meshMark) {
+                instance = -1;
+                box = worldBox;
+            }
+            --size;
+            node = stackNode[size];
+            nodeNear = stackNear[size];
         }
-        --size;
-        if (stackNear[size] > tMax) continue;
+        const auto current = static_cast<std::uint32_t>(node);
+        node = -1;
+        if (nodeNear > tMax) continue;
         ++counted.nodes;
-        const glm::uvec4 link = scene.nodeLinks[stackNode[size]];
+        const glm::uvec4 link = scene.nodeLinks[current];
         if (link.y > 0 && instance >= 0) {
             for (std::uint32_t slot = link.x; slot < link.x + link.y; ++slot) {
                 TriangleHit hit;
@@ -115,9 +123,11 @@ void walkScene(const FlatScene& scene, const Ray& worldRay, float& tMax, OnTrian
                 continue;
             }
             const BoxRay localBox = boxRay(local);
-            const int mark = size;
-            if (push(info.y, boxEntry(scene, info.y, localBox, tMax))) {
-                meshMark = mark;
+            const float meshNear = boxEntry(scene, info.y, localBox, tMax);
+            if (meshNear != kMissed) {
+                meshMark = size;
+                node = info.y;
+                nodeNear = meshNear;
                 instance = link.x;
                 box = localBox;
                 triangleRay = prepareWatertight(local);
@@ -126,12 +136,12 @@ void walkScene(const FlatScene& scene, const Ray& worldRay, float& tMax, OnTrian
         }
         const float nearLeft = boxEntry(scene, link.x, box, tMax);
         const float nearRight = boxEntry(scene, link.x + 1, box, tMax);
-        if (nearLeft <= nearRight) {
-            push(link.x + 1, nearRight);
-            push(link.x, nearLeft);
-        } else {
-            push(link.x, nearLeft);
-            push(link.x + 1, nearRight);
+        const bool leftFirst = nearLeft <= nearRight;
+        push(leftFirst ? link.x + 1 : link.x, leftFirst ? nearRight : nearLeft); // the farther one waits
+        const float nearNear = leftFirst ? nearLeft : nearRight;
+        if (nearNear != kMissed) {
+            node = leftFirst ? link.x : link.x + 1;
+            nodeNear = nearNear;
         }
     }
 }

@@ -56,6 +56,10 @@ void bvhLocalRay(int instance, vec3 origin, vec3 direction, out vec3 localOrigin
 // mark, the walk is at the top level again. On llvmpipe a single loop keeps the SIMD lanes together
 // (a nested mesh loop makes lanes still at the top level wait for the others' whole mesh walks), and
 // one pair of stack arrays replaces two. Nearer child first; anyHit: stop at the first hit.
+// The node to visit next (the nearer child, a mesh's root) stays in `node` instead of going through
+// the stack: only farther children are pushed. The order of visits is the same as pushing both,
+// but llvmpipe pays for every run-time indexed stack access (a gather or scatter across the SIMD
+// lanes), and this halves them (docs/PERFORMANCE.md, "BVH heat map").
 BvhHit bvhTraverse(vec3 origin, vec3 direction, float tMax, bool anyHit) {
     BvhHit hit = bvhNoHit(tMax);
     if (uBvhTopLevelRoot < 0) return hit;
@@ -64,9 +68,9 @@ BvhHit bvhTraverse(vec3 origin, vec3 direction, float tMax, bool anyHit) {
     if (rootNear < 0.0) return hit;
     int stackNode[BVH_TRAVERSAL_STACK];
     float stackNear[BVH_TRAVERSAL_STACK];
-    stackNode[0] = uBvhTopLevelRoot;
-    stackNear[0] = rootNear;
-    int size = 1;
+    int size = 0;
+    int node = uBvhTopLevelRoot; // the next node to visit, -1: take it from the stack
+    float nodeNear = rootNear;
     int instance = -1; // the mesh instance being walked; -1 at the top level
     int meshMark = 0;  // stack size below the mesh's entries
     vec3 rayOrigin = origin;
@@ -74,18 +78,24 @@ BvhHit bvhTraverse(vec3 origin, vec3 direction, float tMax, bool anyHit) {
     vec3 rayInverse = worldInverse;
     BvhWatertightRay triangleRay = bvhPrepareWatertight(origin, direction);
     int steps = 0;
-    while (size > 0) {
+    while (node >= 0 || size > 0) {
         if (++steps > BVH_MAX_STEPS) break;
-        if (instance >= 0 && size == meshMark) {
-            instance = -1;
-            rayOrigin = origin;
-            rayDirection = direction;
-            rayInverse = worldInverse;
+        if (node < 0) {
+            if (instance >= 0 && size == meshMark) {
+                instance = -1;
+                rayOrigin = origin;
+                rayDirection = direction;
+                rayInverse = worldInverse;
+            }
+            --size;
+            node = stackNode[size];
+            nodeNear = stackNear[size];
         }
-        --size;
-        if (stackNear[size] > hit.t) continue;
+        int current = node;
+        node = -1;
+        if (nodeNear > hit.t) continue;
         BVH_COUNT_NODE();
-        uvec4 link = bvhNodeLink(stackNode[size]);
+        uvec4 link = bvhNodeLink(current);
         if (link.y > 0u && instance >= 0) {
             for (int slot = int(link.x); slot < int(link.x + link.y); ++slot) {
                 vec3 tuv;
@@ -110,11 +120,10 @@ BvhHit bvhTraverse(vec3 origin, vec3 direction, float tMax, bool anyHit) {
             if (info.x == BVH_INSTANCE_MESH) {
                 vec3 localInverse = 1.0 / localDirection;
                 float meshNear = bvhBoxEntry(int(info.y), localOrigin, localInverse, hit.t);
-                if (meshNear >= 0.0 && size < BVH_TRAVERSAL_STACK) {
+                if (meshNear >= 0.0) {
                     meshMark = size;
-                    stackNode[size] = int(info.y);
-                    stackNear[size] = meshNear;
-                    ++size;
+                    node = int(info.y);
+                    nodeNear = meshNear;
                     instance = leafInstance;
                     rayOrigin = localOrigin;
                     rayDirection = localDirection;
@@ -138,13 +147,15 @@ BvhHit bvhTraverse(vec3 origin, vec3 direction, float tMax, bool anyHit) {
         float nearLeft = bvhBoxEntry(left, rayOrigin, rayInverse, hit.t);
         float nearRight = bvhBoxEntry(left + 1, rayOrigin, rayInverse, hit.t);
         bool leftFirst = nearLeft <= nearRight || nearRight < 0.0;
-        // Push the farther child first so the nearer one is popped next.
+        // The farther child waits on the stack; the nearer one is visited next.
         int farNode = leftFirst ? left + 1 : left;
         float farNear = leftFirst ? nearRight : nearLeft;
-        int nearNode = leftFirst ? left : left + 1;
-        float nearNear = leftFirst ? nearLeft : nearRight;
         if (farNear >= 0.0 && size < BVH_TRAVERSAL_STACK) { stackNode[size] = farNode; stackNear[size] = farNear; ++size; }
-        if (nearNear >= 0.0 && size < BVH_TRAVERSAL_STACK) { stackNode[size] = nearNode; stackNear[size] = nearNear; ++size; }
+        float nearNear = leftFirst ? nearLeft : nearRight;
+        if (nearNear >= 0.0) {
+            node = leftFirst ? left : left + 1;
+            nodeNear = nearNear;
+        }
     }
     return hit;
 }
