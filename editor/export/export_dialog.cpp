@@ -1,6 +1,7 @@
 #include "editor/export/export_dialog.h"
 
 #include "editor/document/document.h"
+#include "editor/preferences/retranslate.h"
 #include "editor/viewport/viewport.h"
 #include "renderer/configuration.h"
 
@@ -12,6 +13,7 @@
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QHBoxLayout>
+#include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QProgressDialog>
@@ -43,11 +45,19 @@ int defaultLastFrame(const Scene& scene) {
     return std::max(0, int(std::floor((end - t.start) * fps + 1e-6)));
 }
 
+// A form row's label whose text follows the language (retranslate.h): the dialog may be open
+// while the language changes.
+QLabel* rowLabel(QWidget* parent, const char* text) {
+    auto* label = new QLabel(parent);
+    keepTranslated(label, TextRole::Text, ExportDialog::staticMetaObject.className(), text);
+    return label;
+}
+
 } // namespace
 
 ExportDialog::ExportDialog(Document& document, Kind kind, Viewport* viewport, QWidget* parent)
     : QDialog(parent), document_(document), viewport_(viewport) {
-    setWindowTitle(kind == Kind::Still ? tr("Export image") : tr("Export animation"));
+    keepTranslated(this, TextRole::Title, staticMetaObject.className(), kind == Kind::Still ? QT_TR_NOOP("Export image") : QT_TR_NOOP("Export animation"));
     buildForm(kind);
     connect(&controller_, &ExportController::finished, this, &ExportDialog::onFinished);
     if (viewport_) connect(&controller_, &ExportController::running, viewport_, &Viewport::setPaused);
@@ -60,8 +70,9 @@ void ExportDialog::buildForm(Kind kind) {
     const QString base = document_.filePath().isEmpty() ? QStringLiteral("render") : QFileInfo(document_.filePath()).completeBaseName();
     const QString folder = document_.filePath().isEmpty() ? QString() : QFileInfo(document_.filePath()).absolutePath() + "/";
     out_ = new QLineEdit(folder + base + (kind == Kind::Still ? ".exr" : "_####.exr"), this);
-    out_->setAccessibleName(tr("Output file"));
-    auto* browse = new QPushButton(tr("Browse..."), this);
+    keepTranslated(out_, TextRole::AccessibleName, staticMetaObject.className(), QT_TR_NOOP("Output file"));
+    auto* browse = new QPushButton(this);
+    keepTranslated(browse, TextRole::Text, staticMetaObject.className(), QT_TR_NOOP("Browse..."));
     connect(browse, &QPushButton::clicked, this, [this] {
         const QString file = QFileDialog::getSaveFileName(this, tr("Output file"), out_->text(), tr("Images (*.exr *.png *.jpg *.tif)"));
         if (!file.isEmpty()) out_->setText(file);
@@ -69,28 +80,28 @@ void ExportDialog::buildForm(Kind kind) {
     auto* outRow = new QHBoxLayout;
     outRow->addWidget(out_);
     outRow->addWidget(browse);
-    form->addRow(tr("Output"), outRow);
+    form->addRow(rowLabel(this, QT_TR_NOOP("Output")), outRow);
     width_ = spin(this, 1, 16384, r.width, tr("Width"));
     height_ = spin(this, 1, 16384, r.height, tr("Height"));
     auto* sizeRow = new QHBoxLayout;
     sizeRow->addWidget(width_);
     sizeRow->addWidget(height_);
-    form->addRow(tr("Size"), sizeRow);
+    form->addRow(rowLabel(this, QT_TR_NOOP("Size")), sizeRow);
     configuration_ = new QComboBox(this);
-    configuration_->setAccessibleName(tr("Configuration"));
+    keepTranslated(configuration_, TextRole::AccessibleName, staticMetaObject.className(), QT_TR_NOOP("Configuration"));
     for (const auto c : {renderer::Configuration::Accumulate, renderer::Configuration::Reference, renderer::Configuration::Baseline,
                          renderer::Configuration::Realistic, renderer::Configuration::Full, renderer::Configuration::Heavy})
         configuration_->addItem(QString::fromUtf8(renderer::configurationName(c).data(), qsizetype(renderer::configurationName(c).size())));
     configuration_->setCurrentText(QString::fromStdString(r.configuration));
-    form->addRow(tr("Configuration"), configuration_);
+    form->addRow(rowLabel(this, QT_TR_NOOP("Configuration")), configuration_);
     spp_ = spin(this, 1, 1 << 20, r.spp, tr("Samples per pixel"));
-    form->addRow(tr("Samples per pixel"), spp_);
+    form->addRow(rowLabel(this, QT_TR_NOOP("Samples per pixel")), spp_);
     seed_ = spin(this, 0, 1 << 30, int(r.seed), tr("Seed"));
-    form->addRow(tr("Seed"), seed_);
+    form->addRow(rowLabel(this, QT_TR_NOOP("Seed")), seed_);
     aovs_ = new QLineEdit(QStringLiteral("all"), this);
-    aovs_->setAccessibleName(tr("EXR layers"));
-    aovs_->setToolTip(tr("all, none, or a list of albedo, normal, depth, id, variance"));
-    form->addRow(tr("EXR layers"), aovs_);
+    keepTranslated(aovs_, TextRole::AccessibleName, staticMetaObject.className(), QT_TR_NOOP("EXR layers"));
+    keepTranslated(aovs_, TextRole::ToolTip, staticMetaObject.className(), QT_TR_NOOP("all, none, or a list of albedo, normal, depth, id, variance"));
+    form->addRow(rowLabel(this, QT_TR_NOOP("EXR layers")), aovs_);
     animation_ = new QCheckBox(tr("Animation"), this);
     animation_->setChecked(kind == Kind::Animation);
     animation_->setVisible(false);
@@ -100,17 +111,17 @@ void ExportDialog::buildForm(Kind kind) {
         auto* range = new QHBoxLayout;
         range->addWidget(first_);
         range->addWidget(last_);
-        form->addRow(tr("Frames"), range);
+        form->addRow(rowLabel(this, QT_TR_NOOP("Frames")), range);
         video_ = new QLineEdit(this);
-        video_->setAccessibleName(tr("Video file"));
-        video_->setPlaceholderText(tr("optional: .mp4 (H.264), .mov (ProRes), .mkv (FFV1)"));
-        form->addRow(tr("Video"), video_);
+        keepTranslated(video_, TextRole::AccessibleName, staticMetaObject.className(), QT_TR_NOOP("Video file"));
+        keepTranslated(video_, TextRole::Placeholder, staticMetaObject.className(), QT_TR_NOOP("optional: .mp4 (H.264), .mov (ProRes), .mkv (FFV1)"));
+        form->addRow(rowLabel(this, QT_TR_NOOP("Video")), video_);
     } else {
         first_->hide();
         last_->hide();
     }
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Cancel, this);
-    buttons->addButton(tr("Export"), QDialogButtonBox::AcceptRole);
+    keepTranslated(buttons->addButton(QString(), QDialogButtonBox::AcceptRole), TextRole::Text, staticMetaObject.className(), QT_TR_NOOP("Export"));
     connect(buttons, &QDialogButtonBox::accepted, this, &ExportDialog::startExport);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     auto* layout = new QVBoxLayout(this);

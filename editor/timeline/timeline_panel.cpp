@@ -1,6 +1,7 @@
 #include "editor/timeline/timeline_panel.h"
 
 #include "editor/document/document.h"
+#include "editor/preferences/retranslate.h"
 #include "editor/timeline/time_ruler.h"
 #include "scene/history/camera_path_commands.h"
 
@@ -24,13 +25,13 @@ constexpr double kDegrees = 180.0 / std::numbers::pi;
 } // namespace
 
 TimelinePanel::TimelinePanel(Document& document, QWidget* parent) : QWidget(parent), document_(document) {
-    setAccessibleName(tr("Timeline"));
+    keepTranslated(this, TextRole::AccessibleName, staticMetaObject.className(), QT_TR_NOOP("Timeline"));
     createActions();
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(2, 2, 2, 2);
     auto* bar = new QToolBar(this);
     cameras_ = new QComboBox(bar);
-    cameras_->setAccessibleName(tr("Path camera"));
+    keepTranslated(cameras_, TextRole::AccessibleName, staticMetaObject.className(), QT_TR_NOOP("Path camera"));
     bar->addWidget(cameras_);
     bar->addActions({addKey_, deleteKey_});
     bar->addSeparator();
@@ -63,21 +64,27 @@ TimelinePanel::TimelinePanel(Document& document, QWidget* parent) : QWidget(pare
 }
 
 void TimelinePanel::createActions() {
-    addKey_ = new QAction(tr("Add key"), this);
-    addKey_->setToolTip(tr("Add a camera-path key from the current view at the current time"));
+    addKey_ = new QAction(this);
+    keepTranslated(addKey_, TextRole::Text, staticMetaObject.className(), QT_TR_NOOP("Add key"));
+    keepTranslated(addKey_, TextRole::ToolTip, staticMetaObject.className(),
+                   QT_TR_NOOP("Add a camera-path key from the current view at the current time"));
     connect(addKey_, &QAction::triggered, this, &TimelinePanel::addKey);
-    deleteKey_ = new QAction(tr("Delete key"), this);
+    deleteKey_ = new QAction(this);
+    keepTranslated(deleteKey_, TextRole::Text, staticMetaObject.className(), QT_TR_NOOP("Delete key"));
     connect(deleteKey_, &QAction::triggered, this, &TimelinePanel::deleteKey);
-    play_ = new QAction(tr("Play"), this);
+    play_ = new QAction(this);
+    keepTranslated(play_, TextRole::Text, staticMetaObject.className(), QT_TR_NOOP("Play"));
     play_->setCheckable(true);
     play_->setShortcut(Qt::Key_Space);
     play_->setShortcutContext(Qt::WidgetWithChildrenShortcut);
     addAction(play_);
     connect(play_, &QAction::toggled, this, &TimelinePanel::setPlaying);
-    loop_ = new QAction(tr("Loop"), this);
+    loop_ = new QAction(this);
+    keepTranslated(loop_, TextRole::Text, staticMetaObject.className(), QT_TR_NOOP("Loop"));
     loop_->setCheckable(true);
     loop_->setChecked(true);
-    constantSpeed_ = new QAction(tr("Constant speed"), this);
+    constantSpeed_ = new QAction(this);
+    keepTranslated(constantSpeed_, TextRole::Text, staticMetaObject.className(), QT_TR_NOOP("Constant speed"));
     constantSpeed_->setCheckable(true);
     connect(constantSpeed_, &QAction::triggered, this, [this](bool on) {
         const CameraPath* p = path();
@@ -90,14 +97,17 @@ QWidget* TimelinePanel::createKeyEditor() {
     auto* editor = new QWidget(this);
     auto* row = new QHBoxLayout(editor);
     row->setContentsMargins(0, 0, 0, 0);
-    const QString names[7] = {tr("X"), tr("Y"), tr("Z"), tr("FOV"), tr("Focus"), tr("Lens"), tr("Time")};
+    const char* const sources[7] = {QT_TR_NOOP("X"), QT_TR_NOOP("Y"), QT_TR_NOOP("Z"), QT_TR_NOOP("FOV"),
+                                    QT_TR_NOOP("Focus"), QT_TR_NOOP("Lens"), QT_TR_NOOP("Time")};
     for (int i = 0; i < 7; ++i) {
         auto* field = new QDoubleSpinBox(editor);
-        field->setAccessibleName(tr("Key %1").arg(names[i]));
+        field->setAccessibleName(tr("Key %1").arg(tr(sources[i])));
         field->setDecimals(i == 3 ? 2 : 4);
         field->setRange(i == 3 ? 0.1 : (i >= 4 ? 0.0 : -1e6), i == 3 ? 179.0 : 1e6);
         field->setKeyboardTracking(false);
-        row->addWidget(new QLabel(names[i], editor));
+        auto* label = new QLabel(editor);
+        keepTranslated(label, TextRole::Text, staticMetaObject.className(), sources[i]);
+        row->addWidget(label);
         row->addWidget(field);
         keyFields_[i] = field;
         if (i == 6) field->setReadOnly(true); // times change by dragging the key (MoveCameraKey)

@@ -1,6 +1,7 @@
 #include "editor/viewport/viewport.h"
 
 #include "editor/document/document.h"
+#include "editor/preferences/retranslate.h"
 #include "editor/viewport/focus_pick.h"
 #include "editor/viewport/render_view.h"
 #include "scene/history/node_commands.h"
@@ -15,25 +16,33 @@ namespace glint::editor {
 
 namespace {
 
-QString modeName(ViewMode mode) {
+// The view modes' names, untranslated (they follow language changes: retranslate.h).
+const char* modeName(ViewMode mode) {
     switch (mode) {
-    case ViewMode::PathTraced: return Viewport::tr("Path traced");
-    case ViewMode::Solid: return Viewport::tr("Solid");
-    case ViewMode::Wireframe: return Viewport::tr("Wireframe");
-    case ViewMode::Normals: return Viewport::tr("Normals");
-    case ViewMode::Albedo: return Viewport::tr("Albedo");
-    case ViewMode::AmbientOcclusion: return Viewport::tr("Ambient occlusion");
-    case ViewMode::Motion: return Viewport::tr("Motion vectors");
-    case ViewMode::Variance: return Viewport::tr("Variance");
-    case ViewMode::Depth: return Viewport::tr("Depth");
-    case ViewMode::BvhBoxes: return Viewport::tr("BVH instance boxes");
-    case ViewMode::BvhCost: return Viewport::tr("BVH traversal cost (heat map)");
+    case ViewMode::PathTraced: return QT_TRANSLATE_NOOP("glint::editor::Viewport", "Path traced");
+    case ViewMode::Solid: return QT_TRANSLATE_NOOP("glint::editor::Viewport", "Solid");
+    case ViewMode::Wireframe: return QT_TRANSLATE_NOOP("glint::editor::Viewport", "Wireframe");
+    case ViewMode::Normals: return QT_TRANSLATE_NOOP("glint::editor::Viewport", "Normals");
+    case ViewMode::Albedo: return QT_TRANSLATE_NOOP("glint::editor::Viewport", "Albedo");
+    case ViewMode::AmbientOcclusion: return QT_TRANSLATE_NOOP("glint::editor::Viewport", "Ambient occlusion");
+    case ViewMode::Motion: return QT_TRANSLATE_NOOP("glint::editor::Viewport", "Motion vectors");
+    case ViewMode::Variance: return QT_TRANSLATE_NOOP("glint::editor::Viewport", "Variance");
+    case ViewMode::Depth: return QT_TRANSLATE_NOOP("glint::editor::Viewport", "Depth");
+    case ViewMode::BvhBoxes: return QT_TRANSLATE_NOOP("glint::editor::Viewport", "BVH instance boxes");
+    case ViewMode::BvhCost: return QT_TRANSLATE_NOOP("glint::editor::Viewport", "BVH traversal cost (heat map)");
     }
-    return {};
+    return "";
 }
 
-QAction* checkable(QObject* parent, const QString& text, const QKeySequence& key) {
-    auto* action = new QAction(text, parent);
+// An action whose text follows the language; `text` is its source in the Viewport context.
+QAction* translatedAction(QObject* parent, const char* text) {
+    auto* action = new QAction(parent);
+    keepTranslated(action, TextRole::Text, Viewport::staticMetaObject.className(), text);
+    return action;
+}
+
+QAction* checkable(QObject* parent, const char* text, const QKeySequence& key) {
+    auto* action = translatedAction(parent, text);
     action->setCheckable(true);
     action->setShortcut(key);
     action->setShortcutContext(Qt::WidgetWithChildrenShortcut);
@@ -43,7 +52,7 @@ QAction* checkable(QObject* parent, const QString& text, const QKeySequence& key
 } // namespace
 
 Viewport::Viewport(Document& document, QWidget* parent) : QWidget(parent), document_(document) {
-    setAccessibleName(tr("Viewport"));
+    keepTranslated(this, TextRole::AccessibleName, staticMetaObject.className(), QT_TR_NOOP("Viewport"));
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     view_ = new RenderView(document, this);
@@ -68,8 +77,9 @@ void Viewport::createActions() {
     }
 
     gizmos_ = new QActionGroup(this);
-    const std::pair<GizmoMode, QString> gizmoModes[] = {
-        {GizmoMode::Translate, tr("Move")}, {GizmoMode::Rotate, tr("Rotate")}, {GizmoMode::Scale, tr("Scale")}};
+    const std::pair<GizmoMode, const char*> gizmoModes[] = {{GizmoMode::Translate, QT_TR_NOOP("Move")},
+                                                            {GizmoMode::Rotate, QT_TR_NOOP("Rotate")},
+                                                            {GizmoMode::Scale, QT_TR_NOOP("Scale")}};
     const Qt::Key gizmoKeys[] = {Qt::Key_W, Qt::Key_E, Qt::Key_R};
     for (int i = 0; i < 3; ++i) {
         const GizmoMode mode = gizmoModes[i].first;
@@ -80,52 +90,52 @@ void Viewport::createActions() {
         connect(action, &QAction::triggered, this, [this, mode] { view_->setGizmoMode(mode); });
     }
 
-    frameSelection_ = new QAction(tr("Frame selection"), this);
+    frameSelection_ = translatedAction(this, QT_TR_NOOP("Frame selection"));
     frameSelection_->setShortcut(Qt::Key_F);
     frameSelection_->setShortcutContext(Qt::WidgetWithChildrenShortcut);
     addAction(frameSelection_);
     connect(frameSelection_, &QAction::triggered, view_, &RenderView::frameSelection);
 
-    makeSceneCamera_ = new QAction(tr("Make scene camera from view"), this);
+    makeSceneCamera_ = translatedAction(this, QT_TR_NOOP("Make scene camera from view"));
     connect(makeSceneCamera_, &QAction::triggered, this, &Viewport::makeSceneCamera);
 
-    lookThrough_ = checkable(this, tr("Look through selected camera"), QKeySequence(Qt::Key_0));
+    lookThrough_ = checkable(this, QT_TR_NOOP("Look through selected camera"), QKeySequence(Qt::Key_0));
     addAction(lookThrough_);
     connect(lookThrough_, &QAction::triggered, this, &Viewport::toggleLookThrough);
 
-    snap_ = checkable(this, tr("Snap (Ctrl inverts while dragging)"), QKeySequence());
+    snap_ = checkable(this, QT_TR_NOOP("Snap (Ctrl inverts while dragging)"), QKeySequence());
     connect(snap_, &QAction::toggled, this, [this](bool on) { view_->snap().enabled = on; });
 
-    inspect_ = checkable(this, tr("Pixel inspector"), QKeySequence(Qt::Key_I));
+    inspect_ = checkable(this, QT_TR_NOOP("Pixel inspector"), QKeySequence(Qt::Key_I));
     addAction(inspect_);
     connect(inspect_, &QAction::toggled, view_, &RenderView::setInspecting);
 
-    snapshot_ = new QAction(tr("Take snapshot A"), this);
+    snapshot_ = translatedAction(this, QT_TR_NOOP("Take snapshot A"));
     connect(snapshot_, &QAction::triggered, this, [this] {
         view_->takeSnapshot();
         compare_->setEnabled(true);
     });
-    renderRegion_ = new QAction(tr("Set render region"), this);
-    renderRegion_->setToolTip(tr("Drag a rectangle: the path tracer renders only inside it"));
+    renderRegion_ = translatedAction(this, QT_TR_NOOP("Set render region"));
+    keepTranslated(renderRegion_, TextRole::ToolTip, staticMetaObject.className(), QT_TR_NOOP("Drag a rectangle: the path tracer renders only inside it"));
     renderRegion_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
     renderRegion_->setShortcutContext(Qt::WidgetWithChildrenShortcut);
     addAction(renderRegion_);
     connect(renderRegion_, &QAction::triggered, view_, &RenderView::armRenderRegion);
-    clearRenderRegion_ = new QAction(tr("Clear render region"), this);
+    clearRenderRegion_ = translatedAction(this, QT_TR_NOOP("Clear render region"));
     clearRenderRegion_->setShortcut(QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_B));
     clearRenderRegion_->setShortcutContext(Qt::WidgetWithChildrenShortcut);
     addAction(clearRenderRegion_);
     connect(clearRenderRegion_, &QAction::triggered, this, [this] { view_->setRenderRegion(std::nullopt); });
 
-    compare_ = checkable(this, tr("Compare A | B"), QKeySequence());
+    compare_ = checkable(this, QT_TR_NOOP("Compare A | B"), QKeySequence());
     compare_->setEnabled(false);
     connect(compare_, &QAction::toggled, view_, &RenderView::setComparing);
     createPickFocusAction();
 }
 
 void Viewport::createPickFocusAction() {
-    pickFocus_ = new QAction(tr("Pick focus distance"), this);
-    pickFocus_->setToolTip(tr("Click a surface: the camera looked through focuses at its depth"));
+    pickFocus_ = translatedAction(this, QT_TR_NOOP("Pick focus distance"));
+    keepTranslated(pickFocus_, TextRole::ToolTip, staticMetaObject.className(), QT_TR_NOOP("Click a surface: the camera looked through focuses at its depth"));
     pickFocus_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F));
     pickFocus_->setShortcutContext(Qt::WidgetWithChildrenShortcut);
     addAction(pickFocus_);
