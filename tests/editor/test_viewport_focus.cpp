@@ -1,6 +1,7 @@
 // Pick focus under Xvfb: through a scene camera, Ctrl+Shift+F and a click on a box set the camera's
 // focus distance to the box face's depth along the view axis (within 1 %), as one undo step; without
-// a scene camera the status bar explains and nothing changes. 128x96 px, llvmpipe.
+// a scene camera, or through one whose camera path sets the focus, the status bar explains and
+// nothing changes. 128x96 px, llvmpipe.
 #include "test_viewport_scene.h"
 
 #include "editor/viewport/focus_pick.h"
@@ -89,6 +90,35 @@ private slots:
         QCOMPARE(document_->history().index(), steps + 1); // one undo step
         document_->undo();
         QCOMPARE(focusOf(*document_, camera_), 10.0f);
+    }
+
+    void aCameraPathKeepsItsFocus() {
+        // The keys of a camera path set its focus over time: pick focus explains and changes nothing.
+        Node node;
+        node.name = "dolly";
+        node.local.translation = {0.0f, 0.0f, 5.0f};
+        Camera lens;
+        lens.focusDistance = 10.0f;
+        for (const double t : {0.0, 1.0}) {
+            CameraKey key;
+            key.time = t;
+            key.position = {0.0, 0.0, 5.0};
+            key.focusDistance = 10.0f;
+            lens.path.keys.push_back(key);
+        }
+        node.component = lens;
+        auto add = std::make_unique<AddNode>(std::move(node));
+        AddNode* command = add.get();
+        document_->push(std::move(add));
+        const NodeId dolly = command->nodeId();
+        const std::size_t steps = document_->history().index();
+        document_->setSelection({dolly});
+        viewport_->lookThroughAction()->trigger();
+        viewport_->pickFocusAction()->trigger();
+        click(viewport_->view(), {64, 48});
+        QVERIFY2(window_->statusBar()->currentMessage().contains("camera path"), qPrintable(window_->statusBar()->currentMessage()));
+        QCOMPARE(focusOf(*document_, dolly), 10.0f);
+        QCOMPARE(document_->history().index(), steps);
     }
 
     void depthIsMeasuredAlongTheAxis() {
