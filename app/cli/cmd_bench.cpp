@@ -13,6 +13,7 @@
 #include "scene_file.h"
 
 #include "image_metrics.h"
+#include "renderer_suite_cli.h"
 #include "speed_accuracy_chart.h"
 
 #include "renderer/frame_renderer.h"
@@ -317,7 +318,14 @@ void addBenchCommand(CLI::App& app, Action& action) {
     cmd->add_option("--reference-spp", o->referenceSpp, "Samples per pixel of the reference (default: 1024)")
         ->check(CLI::Range(1, 1 << 20));
     addPathBenchOptions(*cmd, o->path);
-    cmd->callback([&action, o] {
+    const auto suite = bench::addRendererSuiteOptions(*cmd); // --suite renderer: app/bench/renderer_suite.h
+    cmd->callback([&action, o, suite, cmd] {
+        if (suite->requested()) {
+            const bench::SuiteOptions s = bench::suiteOptions(*suite, *cmd, o->scene, o->out, o->size.width, o->size.height,
+                                                              o->spp, o->bounces, o->referenceSpp);
+            action = [s] { return bench::runRendererSuiteCommand(s); };
+            return;
+        }
         parseConfigs(o->configs); // usage errors before any work
         action = [o] {
             try {

@@ -1,0 +1,164 @@
+"""Render a Glint glTF scene with Blender Cycles (CPU) at increasing sample counts, timed.
+
+Usage (Blender 3.4, headless):
+  blender -b --factory-startup --python app/bench/cycles/cornell_cycles.py -- \
+      --scene resources/scenes/cornell_box/cornell_box.gltf --out OUT_DIR \
+      [--size 512x512] [--bounces 4] [--samples 1,2,4,8,16,32,64] [--reference-samples 1024] \
+      [--threads 2] [--seed 0] [--materials imported|diffuse]
+
+The scene comes in through Blender's own glTF importer with its default options (the light-unit
+convention Glint follows, docs/LIGHTS.md), so this also checks that Blender opens Glint's files.
+Settings match `glint render`: the same bounce limit for every kind of bounce, a 1-pixel box pixel
+filter, no denoiser, no adaptive sampling, no clamping, no light threshold, the 'Standard' view
+transform (the EXR holds linear scene radiance either way), black world (a glTF carries none).
+
+Writes OUT_DIR/cycles_<N>spp.exr per sample count, OUT_DIR/cycles_reference.exr, and
+OUT_DIR/cycles_convergence.csv with columns samples,seconds,relmse,cpu_seconds: seconds is the wall time of
+bpy.ops.render.render (scene sync included; with persistent data that is a few ms), relmse against
+the reference (rendered with seed + 1) as CONTRACTS.md defines it (mean over pixels and RGB of
+(x - r)^2 / (r^2 + 0.01)); cpu_seconds the process CPU time of all threads (the steadier figure on a
+shared machine); the last row is the reference itself.
+"""
+import numpy
+
+numpy.bool = numpy.bool_  # Blender 3.4's glTF importer still uses the alias numpy 1.24 removed
+
+import argparse
+import os
+import sys
+import time
+
+import bpy
+
+
+def parse_args():
+    argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+    p = argparse.ArgumentParser(prog="cornell_cycles.py")
+    p.add_argument("--scene", required=True)
+    p.add_argument("--out", required=True)
+    p.add_argument("--size", default="512x512")
+    p.add_argument("--bounces", type=int, default=4)
+    p.add_argument("--samples", default="1,2,4,8,16,32,64")
+    p.add_argument("--reference-samples", type=int, default=1024)
+    p.add_argument("--threads", type=int, default=2)
+    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--materials", choices=["imported", "diffuse"], default="imported",
+                   help="diffuse: replace each Principled BSDF by a Diffuse BSDF of its base colour "
+                        "(emission kept), to separate the material model from light units")
+    return p.parse_args(argv)
+
+
+def import_scene(path):
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    bpy.ops.import_scene.gltf(filepath=os.path.abspath(path))
+    scene = bpy.context.scene
+    cameras = [o for o in scene.objects if o.type == "CAMERA"]
+    if not cameras:
+        raise SystemExit("cornell_cycles.py: the scene has no camera")
+    scene.camera = cameras[0]
+    return scene
+
+
+def use_diffuse_materials():
+    for material in bpy.data.materials:
+        if not material.use_nodes:
+            continue
+        nodes, links = material.node_tree.nodes, material.node_tree.links
+        for principled in [n for n in nodes if n.type == "BSDF_PRINCIPLED"]:
+            diffuse = nodes.new("ShaderNodeBsdfDiffuse")
+            diffuse.inputs["Color"].default_value = principled.inputs["Base Color"].default_value
+            emission = nodes.new("ShaderNodeEmission")
+            emission.inputs["Color"].default_value = principled.inputs["Emission"].default_value
+            emission.inputs["Strength"].default_value = principled.inputs["Emission Strength"].default_value
+            add = nodes.new("ShaderNodeAddShader")
+            links.new(diffuse.outputs[0], add.inputs[0])
+            links.new(emission.outputs[0], add.inputs[1])
+            for link in list(principled.outputs[0].links):
+                links.new(add.outputs[0], link.to_socket)
+
+
+def configure(scene, args):
+    width, height = (int(v) for v in args.size.lower().split("x"))
+    r = scene.render
+    r.engine = "CYCLES"
+    r.resolution_x, r.resolution_y, r.resolution_percentage = width, height, 100
+    r.threads_mode, r.threads = "FIXED", args.threads
+    r.use_persistent_data = True  # later renders reuse the synced scene and BVH
+    r.film_transparent = False
+    c = scene.cycles
+    c.device = "CPU"
+    c.use_adaptive_sampling = False
+    c.use_denoising = False
+    c.pixel_filter_type = "BOX"
+    c.filter_width = 1.0
+    c.max_bounces = args.bounces
+    c.diffuse_bounces = args.bounces
+    c.glossy_bounces = args.bounces
+    c.transmission_bounces = args.bounces
+    c.volume_bounces = args.bounces
+    c.transparent_max_bounces = args.bounces
+    c.sample_clamp_direct = 0.0
+    c.sample_clamp_indirect = 0.0
+    c.light_sampling_threshold = 0.0
+    c.caustics_reflective = True
+    c.caustics_refractive = True
+    c.blur_glossy = 0.0
+    c.seed = args.seed
+    scene.view_settings.view_transform = "Standard"
+    scene.view_settings.look = "None"
+    scene.view_settings.exposure = 0.0
+    scene.view_settings.gamma = 1.0
+    settings = r.image_settings
+    settings.file_format = "OPEN_EXR"
+    settings.color_mode = "RGBA"
+    settings.color_depth = "32"
+    settings.exr_codec = "ZIP"
+
+
+def render(scene, samples, path):
+    scene.cycles.samples = samples
+    scene.render.filepath = path
+    start, cpu_start = time.perf_counter(), time.process_time()
+    bpy.ops.render.render(write_still=True)
+    return time.perf_counter() - start, time.process_time() - cpu_start
+
+
+def read_rgb(path):
+    image = bpy.data.images.load(path, check_existing=False)
+    image.colorspace_settings.name = "Non-Color"
+    pixels = numpy.empty(image.size[0] * image.size[1] * 4, dtype=numpy.float32)
+    image.pixels.foreach_get(pixels)
+    bpy.data.images.remove(image)
+    return pixels.reshape(-1, 4)[:, :3].astype(numpy.float64)
+
+
+def rel_mse(image, reference):
+    return float(numpy.mean((image - reference) ** 2 / (reference ** 2 + 0.01)))
+
+
+def main():
+    args = parse_args()
+    os.makedirs(args.out, exist_ok=True)
+    scene = import_scene(args.scene)
+    if args.materials == "diffuse":
+        use_diffuse_materials()
+    configure(scene, args)
+    out = os.path.abspath(args.out)
+    render(scene, 1, os.path.join(out, "cycles_warmup.exr"))  # first sync and BVH build: not timed
+    counts = [int(s) for s in args.samples.split(",")]
+    times = {n: render(scene, n, os.path.join(out, "cycles_%dspp.exr" % n)) for n in counts}
+    reference_path = os.path.join(out, "cycles_reference.exr")
+    scene.cycles.seed = args.seed + 1  # independent of the runs it judges
+    reference_seconds, reference_cpu = render(scene, args.reference_samples, reference_path)
+    reference = read_rgb(reference_path)
+    with open(os.path.join(out, "cycles_convergence.csv"), "w") as csv:
+        csv.write("samples,seconds,relmse,cpu_seconds\n")
+        for n in counts:
+            error = rel_mse(read_rgb(os.path.join(out, "cycles_%dspp.exr" % n)), reference)
+            csv.write("%d,%.6f,%.8g,%.6f\n" % (n, times[n][0], error, times[n][1]))
+            print("cycles: %5d spp  %9.3f s  (CPU %.3f s)  relMSE %.6g" % (n, times[n][0], times[n][1], error))
+        csv.write("%d,%.6f,0,%.6f\n" % (args.reference_samples, reference_seconds, reference_cpu))
+    print("cycles: reference %d spp  %.3f s  (CPU %.3f s)" % (args.reference_samples, reference_seconds, reference_cpu))
+
+
+main()

@@ -1,0 +1,52 @@
+#include "renderer_suite_cli.h"
+
+#include <cstdio>
+#include <exception>
+
+namespace glint::bench {
+
+std::shared_ptr<SuiteCli> addRendererSuiteOptions(CLI::App& bench) {
+    auto cli = std::make_shared<SuiteCli>();
+    SuiteOptions& o = cli->options;
+    bench.add_option("--suite", cli->suite,
+                     "renderer: SCENE is the Cornell box; time it, the bunny in its room and 16 bunnies (1.1M "
+                     "triangles) at --size (default 512x512) and measure its convergence (default: off, the "
+                     "configuration bench)")
+        ->check(CLI::IsMember({"renderer"}));
+    bench.add_option("--bunny", o.bunny, "Suite: the Stanford bunny OBJ (default: " + o.bunny + ")");
+    bench.add_option("--runs", o.runs, "Suite: timed renders per scene, median taken (default: 5)")->check(CLI::Range(1, 1000));
+    bench.add_option("--convergence-size", o.convergenceSize, "Suite: square image size of the convergence study (default: 128)")
+        ->check(CLI::Range(8, 4096));
+    bench.add_option("--curve-spp", o.curveSpp, "Suite: convergence renders of 1, 2, 4, ... samples up to this (default: 64)")
+        ->check(CLI::Range(1, 1 << 16));
+    bench.add_option("--cycles-csv", o.cyclesCsv, "Suite: cycles_convergence.csv to chart beside Glint's (default: none)");
+    bench.add_flag("--lambert", o.lambert,
+                   "Suite: convergence study with every material pure Lambert (specular 0), to compare with "
+                   "cornell_cycles.py --materials diffuse (default: off, the materials as stored)");
+    bench.add_flag("!--no-throughput", o.throughput, "Suite: skip the throughput scenes");
+    bench.add_flag("!--no-convergence", o.convergence, "Suite: skip the convergence study");
+    return cli;
+}
+
+SuiteOptions suiteOptions(const SuiteCli& cli, const CLI::App& bench, const std::string& scene, const std::string& out,
+                          int width, int height, std::optional<int> spp, std::optional<int> bounces, int referenceSpp) {
+    SuiteOptions o = cli.options;
+    o.cornellBox = scene;
+    o.out = out;
+    if (bench.count("--size") > 0) o.width = width, o.height = height;
+    if (spp) o.spp = *spp;
+    if (bounces) o.bounces = *bounces;
+    if (bench.count("--reference-spp") > 0) o.referenceSpp = referenceSpp;
+    return o;
+}
+
+int runRendererSuiteCommand(const SuiteOptions& options) {
+    try {
+        return runRendererSuite(options);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "glint: %s: %s\n", options.cornellBox.c_str(), e.what());
+        return 1;
+    }
+}
+
+} // namespace glint::bench
