@@ -1,296 +1,34 @@
-<?xml version='1.0' encoding='utf-8'?>
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
 <TS version="2.1" language="de" sourcelanguage="en">
 <context>
-    <name>ExportDialog</name>
+    <name>FocusPick</name>
     <message>
-        <source>Export image</source>
-        <translation>Bild exportieren</translation>
+        <source>Pick focus works through a scene camera: select one and look through it (0) first.</source>
+        <translation>Fokus per Klick wirkt durch eine Szenenkamera: zuerst eine auswählen und durch sie schauen (0).</translation>
     </message>
     <message>
-        <source>Export animation</source>
-        <translation>Animation exportieren</translation>
+        <source>Pick focus: %1 follows its camera path, whose keys set the focus; edit them in the timeline.</source>
+        <translation>Fokus per Klick: %1 folgt ihrem Kamerapfad, dessen Schlüssel den Fokus setzen; bearbeiten Sie diese in der Zeitleiste.</translation>
     </message>
     <message>
-        <source>Output file</source>
-        <translation>Ausgabedatei</translation>
+        <source>Pick focus: nothing under the cursor, the focus distance is unchanged.</source>
+        <translation>Fokus per Klick: nichts unter dem Mauszeiger, die Fokusdistanz bleibt unverändert.</translation>
     </message>
     <message>
-        <source>Browse...</source>
-        <translation>Durchsuchen...</translation>
+        <source>Pick focus: the surface is behind the camera, the focus distance is unchanged.</source>
+        <translation>Fokus per Klick: die Oberfläche liegt hinter der Kamera, die Fokusdistanz bleibt unverändert.</translation>
     </message>
     <message>
-        <source>Images (*.exr *.png *.jpg *.tif)</source>
-        <translation>Bilder (*.exr *.png *.jpg *.tif)</translation>
-    </message>
-    <message>
-        <source>Output</source>
-        <translation>Ausgabe</translation>
-    </message>
-    <message>
-        <source>Width</source>
-        <translation>Breite</translation>
-    </message>
-    <message>
-        <source>Height</source>
-        <translation>Höhe</translation>
-    </message>
-    <message>
-        <source>Size</source>
-        <translation>Größe</translation>
-    </message>
-    <message>
-        <source>Configuration</source>
-        <translation>Konfiguration</translation>
-    </message>
-    <message>
-        <source>Samples per pixel</source>
-        <translation>Samples pro Pixel</translation>
-    </message>
-    <message>
-        <source>Seed</source>
-        <translation>Startwert</translation>
-    </message>
-    <message>
-        <source>EXR layers</source>
-        <translation>EXR-Ebenen</translation>
-    </message>
-    <message>
-        <source>all, none, or a list of albedo, normal, depth, id, variance</source>
-        <translation>all, none oder eine Liste aus albedo, normal, depth, id, variance</translation>
-    </message>
-    <message>
-        <source>Animation</source>
-        <translation>Animation</translation>
-    </message>
-    <message>
-        <source>First frame</source>
-        <translation>Erstes Bild</translation>
-    </message>
-    <message>
-        <source>Last frame</source>
-        <translation>Letztes Bild</translation>
-    </message>
-    <message>
-        <source>Frames</source>
-        <translation>Bilder</translation>
-    </message>
-    <message>
-        <source>Export</source>
-        <translation>Exportieren</translation>
-    </message>
-    <message>
-        <source>Rendering...</source>
-        <translation>Rendern...</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>Abbrechen</translation>
-    </message>
-    <message>
-        <source>Video file</source>
-        <translation>Videodatei</translation>
-    </message>
-    <message>
-        <source>optional: .mp4 (H.264), .mov (ProRes), .mkv (FFV1)</source>
-        <translation>optional: .mp4 (H.264), .mov (ProRes), .mkv (FFV1)</translation>
-    </message>
-    <message>
-        <source>Video</source>
-        <translation>Video</translation>
+        <source>Focus distance of %1: %2 m (%3)</source>
+        <translation>Fokusdistanz von %1: %2 m (%3)</translation>
     </message>
 </context>
 <context>
-    <name>RenderView</name>
+    <name>OverlayPainter</name>
     <message>
-        <source>Viewport</source>
-        <translation>Ansicht</translation>
-    </message>
-    <message>
-        <source>A</source>
-        <translation>A</translation>
-    </message>
-    <message>
-        <source>B</source>
-        <translation>B</translation>
-    </message>
-    <message>
-        <source>Pixel %1, %2
-R %3  G %4  B %5 (linear)</source>
-        <translation>Pixel %1, %2
-R %3  G %4  B %5 (linear)</translation>
-    </message>
-</context>
-<context>
-    <name>TimeRuler</name>
-    <message>
-        <source>Time ruler</source>
-        <translation>Zeitlineal</translation>
-    </message>
-</context>
-<context>
-    <name>TimelinePanel</name>
-    <message>
-        <source>Timeline</source>
-        <translation>Zeitleiste</translation>
-    </message>
-    <message>
-        <source>Path camera</source>
-        <translation>Pfadkamera</translation>
-    </message>
-    <message>
-        <source>  %1 s  (frame %2)</source>
-        <translation>  %1 s  (Bild %2)</translation>
-    </message>
-    <message>
-        <source>Add key</source>
-        <translation>Schlüssel hinzufügen</translation>
-    </message>
-    <message>
-        <source>Add a camera-path key from the current view at the current time</source>
-        <translation>Fügt aus der aktuellen Ansicht einen Kamerapfad-Schlüssel zur aktuellen Zeit hinzu</translation>
-    </message>
-    <message>
-        <source>Delete key</source>
-        <translation>Schlüssel löschen</translation>
-    </message>
-    <message>
-        <source>Play</source>
-        <translation>Abspielen</translation>
-    </message>
-    <message>
-        <source>Loop</source>
-        <translation>Schleife</translation>
-    </message>
-    <message>
-        <source>Constant speed</source>
-        <translation>Konstante Geschwindigkeit</translation>
-    </message>
-    <message>
-        <source>X</source>
-        <translation>X</translation>
-    </message>
-    <message>
-        <source>Y</source>
-        <translation>Y</translation>
-    </message>
-    <message>
-        <source>Z</source>
-        <translation>Z</translation>
-    </message>
-    <message>
-        <source>FOV</source>
-        <translation>Sichtfeld</translation>
-    </message>
-    <message>
-        <source>Focus</source>
-        <translation>Fokus</translation>
-    </message>
-    <message>
-        <source>Lens</source>
-        <translation>Objektiv</translation>
-    </message>
-    <message>
-        <source>Time</source>
-        <translation>Zeit</translation>
-    </message>
-    <message>
-        <source>Key %1</source>
-        <translation>Schlüssel %1</translation>
-    </message>
-</context>
-<context>
-    <name>Viewport</name>
-    <message>
-        <source>Path traced</source>
-        <translation>Pathtracing</translation>
-    </message>
-    <message>
-        <source>Solid</source>
-        <translation>Volumen</translation>
-    </message>
-    <message>
-        <source>Wireframe</source>
-        <translation>Drahtgitter</translation>
-    </message>
-    <message>
-        <source>Normals</source>
-        <translation>Normalen</translation>
-    </message>
-    <message>
-        <source>Albedo</source>
-        <translation>Albedo</translation>
-    </message>
-    <message>
-        <source>Ambient occlusion</source>
-        <translation>Umgebungsverdeckung</translation>
-    </message>
-    <message>
-        <source>Motion vectors</source>
-        <translation>Bewegungsvektoren</translation>
-    </message>
-    <message>
-        <source>Variance</source>
-        <translation>Varianz</translation>
-    </message>
-    <message>
-        <source>Depth</source>
-        <translation>Tiefe</translation>
-    </message>
-    <message>
-        <source>Viewport</source>
-        <translation>Ansicht</translation>
-    </message>
-    <message>
-        <source>Move</source>
-        <translation>Verschieben</translation>
-    </message>
-    <message>
-        <source>Rotate</source>
-        <translation>Drehen</translation>
-    </message>
-    <message>
-        <source>Scale</source>
-        <translation>Skalieren</translation>
-    </message>
-    <message>
-        <source>Frame selection</source>
-        <translation>Auswahl einpassen</translation>
-    </message>
-    <message>
-        <source>Make scene camera from view</source>
-        <translation>Szenenkamera aus Ansicht erstellen</translation>
-    </message>
-    <message>
-        <source>Look through selected camera</source>
-        <translation>Durch ausgewählte Kamera sehen</translation>
-    </message>
-    <message>
-        <source>Snap (Ctrl inverts while dragging)</source>
-        <translation>Einrasten (Strg kehrt beim Ziehen um)</translation>
-    </message>
-    <message>
-        <source>Pixel inspector</source>
-        <translation>Pixel-Inspektor</translation>
-    </message>
-    <message>
-        <source>Take snapshot A</source>
-        <translation>Schnappschuss A aufnehmen</translation>
-    </message>
-    <message>
-        <source>Compare A | B</source>
-        <translation>A | B vergleichen</translation>
-    </message>
-    <message>
-        <source>%1 spp  |  %2 ms/frame  |  1/%3 resolution%4</source>
-        <translation>%1 spp  |  %2 ms/Bild  |  1/%3 Auflösung%4</translation>
-    </message>
-    <message>
-        <source>  |  paused</source>
-        <translation>  |  angehalten</translation>
-    </message>
-    <message>
-        <source>BVH instance boxes</source>
-        <translation>BVH-Instanzboxen</translation>
+        <source>BVH nodes + primitives</source>
+        <translation>BVH-Knoten + Primitive</translation>
     </message>
 </context>
 <context>
@@ -449,6 +187,105 @@ R %3  G %4  B %5 (linear)</translation>
     </message>
 </context>
 <context>
+    <name>glint::editor::ExportDialog</name>
+    <message>
+        <source>Export image</source>
+        <translation>Bild exportieren</translation>
+    </message>
+    <message>
+        <source>Export animation</source>
+        <translation>Animation exportieren</translation>
+    </message>
+    <message>
+        <source>Output file</source>
+        <translation>Ausgabedatei</translation>
+    </message>
+    <message>
+        <source>Browse...</source>
+        <translation>Durchsuchen...</translation>
+    </message>
+    <message>
+        <source>Images (*.exr *.png *.jpg *.tif)</source>
+        <translation>Bilder (*.exr *.png *.jpg *.tif)</translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation>Ausgabe</translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation>Breite</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Höhe</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>Größe</translation>
+    </message>
+    <message>
+        <source>Configuration</source>
+        <translation>Konfiguration</translation>
+    </message>
+    <message>
+        <source>Samples per pixel</source>
+        <translation>Samples pro Pixel</translation>
+    </message>
+    <message>
+        <source>Seed</source>
+        <translation>Startwert</translation>
+    </message>
+    <message>
+        <source>EXR layers</source>
+        <translation>EXR-Ebenen</translation>
+    </message>
+    <message>
+        <source>all, none, or a list of albedo, normal, depth, id, variance</source>
+        <translation>all, none oder eine Liste aus albedo, normal, depth, id, variance</translation>
+    </message>
+    <message>
+        <source>Animation</source>
+        <translation>Animation</translation>
+    </message>
+    <message>
+        <source>First frame</source>
+        <translation>Erstes Bild</translation>
+    </message>
+    <message>
+        <source>Last frame</source>
+        <translation>Letztes Bild</translation>
+    </message>
+    <message>
+        <source>Frames</source>
+        <translation>Bilder</translation>
+    </message>
+    <message>
+        <source>Video file</source>
+        <translation>Videodatei</translation>
+    </message>
+    <message>
+        <source>optional: .mp4 (H.264), .mov (ProRes), .mkv (FFV1)</source>
+        <translation>optional: .mp4 (H.264), .mov (ProRes), .mkv (FFV1)</translation>
+    </message>
+    <message>
+        <source>Video</source>
+        <translation>Video</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exportieren</translation>
+    </message>
+    <message>
+        <source>Rendering...</source>
+        <translation>Rendern...</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+</context>
+<context>
     <name>glint::editor::HistoryModel</name>
     <message>
         <source>&lt;empty&gt;</source>
@@ -545,7 +382,10 @@ R %3  G %4  B %5 (linear)</translation>
     </message>
     <message numerus="yes">
         <source>%n nodes selected</source>
-        <translation><numerusform>%n Knoten ausgewählt</numerusform><numerusform>%n Knoten ausgewählt</numerusform></translation>
+        <translation>
+            <numerusform>%n Knoten ausgewählt</numerusform>
+            <numerusform>%n Knoten ausgewählt</numerusform>
+        </translation>
     </message>
     <message>
         <source>%1 nodes, %2 triangles, configuration: %3</source>
@@ -568,8 +408,8 @@ R %3  G %4  B %5 (linear)</translation>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <source>"%1" has unsaved changes. Save them first?</source>
-        <translation>"%1" hat ungespeicherte Änderungen. Zuerst speichern?</translation>
+        <source>&quot;%1&quot; has unsaved changes. Save them first?</source>
+        <translation>&quot;%1&quot; hat ungespeicherte Änderungen. Zuerst speichern?</translation>
     </message>
     <message>
         <source>Cannot open %1: %2</source>
@@ -784,10 +624,6 @@ R %3  G %4  B %5 (linear)</translation>
         <translation>%1 &amp;wiederholen</translation>
     </message>
     <message>
-        <source>The new language applies after a restart.</source>
-        <translation>Die neue Sprache gilt nach einem Neustart.</translation>
-    </message>
-    <message>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
@@ -972,10 +808,6 @@ R %3  G %4  B %5 (linear)</translation>
         <translation>Sprache</translation>
     </message>
     <message>
-        <source>A new language applies to menus and panels after a restart.</source>
-        <translation>Eine neue Sprache gilt für Menüs und Bereiche nach einem Neustart.</translation>
-    </message>
-    <message>
         <source> min</source>
         <translation> min</translation>
     </message>
@@ -1008,8 +840,8 @@ R %3  G %4  B %5 (linear)</translation>
         <translation>Tastenkürzel-Konflikt</translation>
     </message>
     <message>
-        <source>%1 is used by both "%2" and "%3".</source>
-        <translation>%1 wird von "%2" und "%3" verwendet.</translation>
+        <source>%1 is used by both &quot;%2&quot; and &quot;%3&quot;.</source>
+        <translation>%1 wird von &quot;%2&quot; und &quot;%3&quot; verwendet.</translation>
     </message>
 </context>
 <context>
@@ -1428,6 +1260,328 @@ R %3  G %4  B %5 (linear)</translation>
     <message>
         <source>HDR images (*.hdr *.exr);;All files (*)</source>
         <translation>HDR-Bilder (*.hdr *.exr);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Camera and timeline</source>
+        <translation>Kamera und Zeitleiste</translation>
+    </message>
+    <message>
+        <source>(the first camera)</source>
+        <translation>(die erste Kamera)</translation>
+    </message>
+    <message>
+        <source>Timeline start (s)</source>
+        <translation>Beginn der Zeitleiste (s)</translation>
+    </message>
+    <message>
+        <source>Timeline end (s, 0 = the animation&apos;s)</source>
+        <translation>Ende der Zeitleiste (s, 0 = das der Animation)</translation>
+    </message>
+    <message>
+        <source>Frames per second</source>
+        <translation>Bilder pro Sekunde</translation>
+    </message>
+    <message>
+        <source>Frames per second must be a positive number or a ratio such as 24000/1001, not &quot;%1&quot;.</source>
+        <translation>Bilder pro Sekunde müssen eine positive Zahl oder ein Verhältnis wie 24000/1001 sein, nicht &quot;%1&quot;.</translation>
+    </message>
+    <message>
+        <source>Real-time reconstruction</source>
+        <translation>Echtzeit-Rekonstruktion</translation>
+    </message>
+    <message>
+        <source>TAA blend (current frame)</source>
+        <translation>TAA-Mischung (aktuelles Bild)</translation>
+    </message>
+    <message>
+        <source>TAA clip box (std. deviations)</source>
+        <translation>TAA-Clipping-Box (Standardabweichungen)</translation>
+    </message>
+    <message>
+        <source>TAA perceptual blend</source>
+        <translation>Wahrnehmungsbasierte TAA-Mischung</translation>
+    </message>
+    <message>
+        <source>SVGF a-trous iterations</source>
+        <translation>SVGF-À-trous-Iterationen</translation>
+    </message>
+    <message>
+        <source>SVGF temporal alpha</source>
+        <translation>SVGF zeitliches Alpha</translation>
+    </message>
+    <message>
+        <source>SVGF moments alpha</source>
+        <translation>SVGF-Momente-Alpha</translation>
+    </message>
+    <message>
+        <source>SVGF luminance sigma</source>
+        <translation>SVGF-Luminanz-Sigma</translation>
+    </message>
+    <message>
+        <source>SVGF normal sigma (exponent)</source>
+        <translation>SVGF-Normalen-Sigma (Exponent)</translation>
+    </message>
+    <message>
+        <source>SVGF depth sigma</source>
+        <translation>SVGF-Tiefen-Sigma</translation>
+    </message>
+    <message>
+        <source>SVGF firefly ratio</source>
+        <translation>SVGF-Firefly-Verhältnis</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::RenderView</name>
+    <message>
+        <source>Viewport</source>
+        <translation>Ansicht</translation>
+    </message>
+    <message>
+        <source>Preparing the scene</source>
+        <translation>Szene wird vorbereitet</translation>
+    </message>
+    <message>
+        <source>building mesh BVHs</source>
+        <translation>Mesh-BVHs werden gebaut</translation>
+    </message>
+    <message>
+        <source>decoding textures</source>
+        <translation>Texturen werden dekodiert</translation>
+    </message>
+    <message>
+        <source>loading the environment</source>
+        <translation>Umgebung wird geladen</translation>
+    </message>
+    <message>
+        <source>packing the scene</source>
+        <translation>Szene wird gepackt</translation>
+    </message>
+    <message>
+        <source>Preparing the scene: %1 %2/%3</source>
+        <translation>Szene wird vorbereitet: %1 %2/%3</translation>
+    </message>
+    <message>
+        <source>Preparing the scene: %1</source>
+        <translation>Szene wird vorbereitet: %1</translation>
+    </message>
+    <message>
+        <source>A</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <source>B</source>
+        <translation>B</translation>
+    </message>
+    <message>
+        <source>Pixel %1, %2
+R %3  G %4  B %5 (linear)</source>
+        <translation>Pixel %1, %2
+R %3  G %4  B %5 (linear)</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::TimeRuler</name>
+    <message>
+        <source>Time ruler</source>
+        <translation>Zeitlineal</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::TimelinePanel</name>
+    <message>
+        <source>Timeline</source>
+        <translation>Zeitleiste</translation>
+    </message>
+    <message>
+        <source>Path camera</source>
+        <translation>Pfadkamera</translation>
+    </message>
+    <message>
+        <source>  %1 s  (frame %2)</source>
+        <translation>  %1 s  (Bild %2)</translation>
+    </message>
+    <message>
+        <source>Add key</source>
+        <translation>Schlüssel hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add a camera-path key from the current view at the current time</source>
+        <translation>Fügt aus der aktuellen Ansicht einen Kamerapfad-Schlüssel zur aktuellen Zeit hinzu</translation>
+    </message>
+    <message>
+        <source>Delete key</source>
+        <translation>Schlüssel löschen</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Abspielen</translation>
+    </message>
+    <message>
+        <source>Loop</source>
+        <translation>Schleife</translation>
+    </message>
+    <message>
+        <source>Constant speed</source>
+        <translation>Konstante Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>X</source>
+        <translation>X</translation>
+    </message>
+    <message>
+        <source>Y</source>
+        <translation>Y</translation>
+    </message>
+    <message>
+        <source>Z</source>
+        <translation>Z</translation>
+    </message>
+    <message>
+        <source>FOV</source>
+        <translation>Sichtfeld</translation>
+    </message>
+    <message>
+        <source>Focus</source>
+        <translation>Fokus</translation>
+    </message>
+    <message>
+        <source>Lens</source>
+        <translation>Objektiv</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source>Key %1</source>
+        <translation>Schlüssel %1</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::Viewport</name>
+    <message>
+        <source>Path traced</source>
+        <translation>Pathtracing</translation>
+    </message>
+    <message>
+        <source>Solid</source>
+        <translation>Volumen</translation>
+    </message>
+    <message>
+        <source>Wireframe</source>
+        <translation>Drahtgitter</translation>
+    </message>
+    <message>
+        <source>Normals</source>
+        <translation>Normalen</translation>
+    </message>
+    <message>
+        <source>Albedo</source>
+        <translation>Albedo</translation>
+    </message>
+    <message>
+        <source>Ambient occlusion</source>
+        <translation>Umgebungsverdeckung</translation>
+    </message>
+    <message>
+        <source>Motion vectors</source>
+        <translation>Bewegungsvektoren</translation>
+    </message>
+    <message>
+        <source>Variance</source>
+        <translation>Varianz</translation>
+    </message>
+    <message>
+        <source>Depth</source>
+        <translation>Tiefe</translation>
+    </message>
+    <message>
+        <source>BVH instance boxes</source>
+        <translation>BVH-Instanzboxen</translation>
+    </message>
+    <message>
+        <source>BVH traversal cost (heat map)</source>
+        <translation>BVH-Traversierungskosten (Heatmap)</translation>
+    </message>
+    <message>
+        <source>Viewport</source>
+        <translation>Ansicht</translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation>Verschieben</translation>
+    </message>
+    <message>
+        <source>Rotate</source>
+        <translation>Drehen</translation>
+    </message>
+    <message>
+        <source>Scale</source>
+        <translation>Skalieren</translation>
+    </message>
+    <message>
+        <source>Frame selection</source>
+        <translation>Auswahl einpassen</translation>
+    </message>
+    <message>
+        <source>Make scene camera from view</source>
+        <translation>Szenenkamera aus Ansicht erstellen</translation>
+    </message>
+    <message>
+        <source>Look through selected camera</source>
+        <translation>Durch ausgewählte Kamera sehen</translation>
+    </message>
+    <message>
+        <source>Snap (Ctrl inverts while dragging)</source>
+        <translation>Einrasten (Strg kehrt beim Ziehen um)</translation>
+    </message>
+    <message>
+        <source>Pixel inspector</source>
+        <translation>Pixel-Inspektor</translation>
+    </message>
+    <message>
+        <source>Take snapshot A</source>
+        <translation>Schnappschuss A aufnehmen</translation>
+    </message>
+    <message>
+        <source>Set render region</source>
+        <translation>Render-Bereich festlegen</translation>
+    </message>
+    <message>
+        <source>Drag a rectangle: the path tracer renders only inside it</source>
+        <translation>Ziehen Sie ein Rechteck: der Pathtracer rendert nur darin</translation>
+    </message>
+    <message>
+        <source>Clear render region</source>
+        <translation>Render-Bereich entfernen</translation>
+    </message>
+    <message>
+        <source>Compare A | B</source>
+        <translation>A | B vergleichen</translation>
+    </message>
+    <message>
+        <source>Pick focus distance</source>
+        <translation>Fokusdistanz wählen</translation>
+    </message>
+    <message>
+        <source>Click a surface: the camera looked through focuses at its depth</source>
+        <translation>Klicken Sie auf eine Oberfläche: die Kamera, durch die Sie schauen, fokussiert auf deren Tiefe</translation>
+    </message>
+    <message>
+        <source>Pick focus works through a scene camera: select one and look through it (0) first.</source>
+        <translation>Fokus per Klick wirkt durch eine Szenenkamera: zuerst eine auswählen und durch sie schauen (0).</translation>
+    </message>
+    <message>
+        <source>Click the surface to focus on (Esc cancels).</source>
+        <translation>Klicken Sie auf die Oberfläche, auf die fokussiert werden soll (Esc bricht ab).</translation>
+    </message>
+    <message>
+        <source>%1 spp  |  %2 ms/frame  |  1/%3 resolution%4</source>
+        <translation>%1 spp  |  %2 ms/Bild  |  1/%3 Auflösung%4</translation>
+    </message>
+    <message>
+        <source>  |  paused</source>
+        <translation>  |  angehalten</translation>
     </message>
 </context>
 </TS>

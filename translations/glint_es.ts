@@ -1,296 +1,34 @@
-<?xml version='1.0' encoding='utf-8'?>
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
 <TS version="2.1" language="es" sourcelanguage="en">
 <context>
-    <name>ExportDialog</name>
+    <name>FocusPick</name>
     <message>
-        <source>Export image</source>
-        <translation>Exportar imagen</translation>
+        <source>Pick focus works through a scene camera: select one and look through it (0) first.</source>
+        <translation>El enfoque por clic funciona a través de una cámara de la escena: selecciona una y mira a través de ella (0) primero.</translation>
     </message>
     <message>
-        <source>Export animation</source>
-        <translation>Exportar animación</translation>
+        <source>Pick focus: %1 follows its camera path, whose keys set the focus; edit them in the timeline.</source>
+        <translation>Enfoque por clic: %1 sigue su trayectoria de cámara, cuyas claves fijan el enfoque; edítalas en la línea de tiempo.</translation>
     </message>
     <message>
-        <source>Output file</source>
-        <translation>Archivo de salida</translation>
+        <source>Pick focus: nothing under the cursor, the focus distance is unchanged.</source>
+        <translation>Enfoque por clic: nada bajo el cursor, la distancia de enfoque no cambia.</translation>
     </message>
     <message>
-        <source>Browse...</source>
-        <translation>Examinar...</translation>
+        <source>Pick focus: the surface is behind the camera, the focus distance is unchanged.</source>
+        <translation>Enfoque por clic: la superficie está detrás de la cámara, la distancia de enfoque no cambia.</translation>
     </message>
     <message>
-        <source>Images (*.exr *.png *.jpg *.tif)</source>
-        <translation>Imágenes (*.exr *.png *.jpg *.tif)</translation>
-    </message>
-    <message>
-        <source>Output</source>
-        <translation>Salida</translation>
-    </message>
-    <message>
-        <source>Width</source>
-        <translation>Ancho</translation>
-    </message>
-    <message>
-        <source>Height</source>
-        <translation>Alto</translation>
-    </message>
-    <message>
-        <source>Size</source>
-        <translation>Tamaño</translation>
-    </message>
-    <message>
-        <source>Configuration</source>
-        <translation>Configuración</translation>
-    </message>
-    <message>
-        <source>Samples per pixel</source>
-        <translation>Muestras por píxel</translation>
-    </message>
-    <message>
-        <source>Seed</source>
-        <translation>Semilla</translation>
-    </message>
-    <message>
-        <source>EXR layers</source>
-        <translation>Capas EXR</translation>
-    </message>
-    <message>
-        <source>all, none, or a list of albedo, normal, depth, id, variance</source>
-        <translation>all, none, o una lista de albedo, normal, depth, id, variance</translation>
-    </message>
-    <message>
-        <source>Animation</source>
-        <translation>Animación</translation>
-    </message>
-    <message>
-        <source>First frame</source>
-        <translation>Primer fotograma</translation>
-    </message>
-    <message>
-        <source>Last frame</source>
-        <translation>Último fotograma</translation>
-    </message>
-    <message>
-        <source>Frames</source>
-        <translation>Fotogramas</translation>
-    </message>
-    <message>
-        <source>Export</source>
-        <translation>Exportar</translation>
-    </message>
-    <message>
-        <source>Rendering...</source>
-        <translation>Renderizando...</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>Cancelar</translation>
-    </message>
-    <message>
-        <source>Video file</source>
-        <translation>Archivo de vídeo</translation>
-    </message>
-    <message>
-        <source>optional: .mp4 (H.264), .mov (ProRes), .mkv (FFV1)</source>
-        <translation>opcional: .mp4 (H.264), .mov (ProRes), .mkv (FFV1)</translation>
-    </message>
-    <message>
-        <source>Video</source>
-        <translation>Vídeo</translation>
+        <source>Focus distance of %1: %2 m (%3)</source>
+        <translation>Distancia de enfoque de %1: %2 m (%3)</translation>
     </message>
 </context>
 <context>
-    <name>RenderView</name>
+    <name>OverlayPainter</name>
     <message>
-        <source>Viewport</source>
-        <translation>Vista</translation>
-    </message>
-    <message>
-        <source>A</source>
-        <translation>A</translation>
-    </message>
-    <message>
-        <source>B</source>
-        <translation>B</translation>
-    </message>
-    <message>
-        <source>Pixel %1, %2
-R %3  G %4  B %5 (linear)</source>
-        <translation>Píxel %1, %2
-R %3  G %4  B %5 (lineal)</translation>
-    </message>
-</context>
-<context>
-    <name>TimeRuler</name>
-    <message>
-        <source>Time ruler</source>
-        <translation>Regla de tiempo</translation>
-    </message>
-</context>
-<context>
-    <name>TimelinePanel</name>
-    <message>
-        <source>Timeline</source>
-        <translation>Línea de tiempo</translation>
-    </message>
-    <message>
-        <source>Path camera</source>
-        <translation>Cámara de trayectoria</translation>
-    </message>
-    <message>
-        <source>  %1 s  (frame %2)</source>
-        <translation>  %1 s  (fotograma %2)</translation>
-    </message>
-    <message>
-        <source>Add key</source>
-        <translation>Añadir clave</translation>
-    </message>
-    <message>
-        <source>Add a camera-path key from the current view at the current time</source>
-        <translation>Añade una clave de trayectoria de cámara desde la vista actual en el instante actual</translation>
-    </message>
-    <message>
-        <source>Delete key</source>
-        <translation>Eliminar clave</translation>
-    </message>
-    <message>
-        <source>Play</source>
-        <translation>Reproducir</translation>
-    </message>
-    <message>
-        <source>Loop</source>
-        <translation>Bucle</translation>
-    </message>
-    <message>
-        <source>Constant speed</source>
-        <translation>Velocidad constante</translation>
-    </message>
-    <message>
-        <source>X</source>
-        <translation>X</translation>
-    </message>
-    <message>
-        <source>Y</source>
-        <translation>Y</translation>
-    </message>
-    <message>
-        <source>Z</source>
-        <translation>Z</translation>
-    </message>
-    <message>
-        <source>FOV</source>
-        <translation>Campo de visión</translation>
-    </message>
-    <message>
-        <source>Focus</source>
-        <translation>Enfoque</translation>
-    </message>
-    <message>
-        <source>Lens</source>
-        <translation>Lente</translation>
-    </message>
-    <message>
-        <source>Time</source>
-        <translation>Tiempo</translation>
-    </message>
-    <message>
-        <source>Key %1</source>
-        <translation>Clave %1</translation>
-    </message>
-</context>
-<context>
-    <name>Viewport</name>
-    <message>
-        <source>Path traced</source>
-        <translation>Trazado de caminos</translation>
-    </message>
-    <message>
-        <source>Solid</source>
-        <translation>Sólido</translation>
-    </message>
-    <message>
-        <source>Wireframe</source>
-        <translation>Alambre</translation>
-    </message>
-    <message>
-        <source>Normals</source>
-        <translation>Normales</translation>
-    </message>
-    <message>
-        <source>Albedo</source>
-        <translation>Albedo</translation>
-    </message>
-    <message>
-        <source>Ambient occlusion</source>
-        <translation>Oclusión ambiental</translation>
-    </message>
-    <message>
-        <source>Motion vectors</source>
-        <translation>Vectores de movimiento</translation>
-    </message>
-    <message>
-        <source>Variance</source>
-        <translation>Varianza</translation>
-    </message>
-    <message>
-        <source>Depth</source>
-        <translation>Profundidad</translation>
-    </message>
-    <message>
-        <source>Viewport</source>
-        <translation>Vista</translation>
-    </message>
-    <message>
-        <source>Move</source>
-        <translation>Mover</translation>
-    </message>
-    <message>
-        <source>Rotate</source>
-        <translation>Rotar</translation>
-    </message>
-    <message>
-        <source>Scale</source>
-        <translation>Escalar</translation>
-    </message>
-    <message>
-        <source>Frame selection</source>
-        <translation>Encuadrar selección</translation>
-    </message>
-    <message>
-        <source>Make scene camera from view</source>
-        <translation>Crear cámara de escena desde la vista</translation>
-    </message>
-    <message>
-        <source>Look through selected camera</source>
-        <translation>Ver a través de la cámara seleccionada</translation>
-    </message>
-    <message>
-        <source>Snap (Ctrl inverts while dragging)</source>
-        <translation>Ajuste (Ctrl invierte al arrastrar)</translation>
-    </message>
-    <message>
-        <source>Pixel inspector</source>
-        <translation>Inspector de píxeles</translation>
-    </message>
-    <message>
-        <source>Take snapshot A</source>
-        <translation>Tomar instantánea A</translation>
-    </message>
-    <message>
-        <source>Compare A | B</source>
-        <translation>Comparar A | B</translation>
-    </message>
-    <message>
-        <source>%1 spp  |  %2 ms/frame  |  1/%3 resolution%4</source>
-        <translation>%1 spp  |  %2 ms/fotograma  |  resolución 1/%3%4</translation>
-    </message>
-    <message>
-        <source>  |  paused</source>
-        <translation>  |  en pausa</translation>
-    </message>
-    <message>
-        <source>BVH instance boxes</source>
-        <translation>Cajas BVH de instancias</translation>
+        <source>BVH nodes + primitives</source>
+        <translation>Nodos BVH + primitivas</translation>
     </message>
 </context>
 <context>
@@ -449,6 +187,105 @@ R %3  G %4  B %5 (lineal)</translation>
     </message>
 </context>
 <context>
+    <name>glint::editor::ExportDialog</name>
+    <message>
+        <source>Export image</source>
+        <translation>Exportar imagen</translation>
+    </message>
+    <message>
+        <source>Export animation</source>
+        <translation>Exportar animación</translation>
+    </message>
+    <message>
+        <source>Output file</source>
+        <translation>Archivo de salida</translation>
+    </message>
+    <message>
+        <source>Browse...</source>
+        <translation>Examinar...</translation>
+    </message>
+    <message>
+        <source>Images (*.exr *.png *.jpg *.tif)</source>
+        <translation>Imágenes (*.exr *.png *.jpg *.tif)</translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation>Salida</translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation>Ancho</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Alto</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>Tamaño</translation>
+    </message>
+    <message>
+        <source>Configuration</source>
+        <translation>Configuración</translation>
+    </message>
+    <message>
+        <source>Samples per pixel</source>
+        <translation>Muestras por píxel</translation>
+    </message>
+    <message>
+        <source>Seed</source>
+        <translation>Semilla</translation>
+    </message>
+    <message>
+        <source>EXR layers</source>
+        <translation>Capas EXR</translation>
+    </message>
+    <message>
+        <source>all, none, or a list of albedo, normal, depth, id, variance</source>
+        <translation>all, none, o una lista de albedo, normal, depth, id, variance</translation>
+    </message>
+    <message>
+        <source>Animation</source>
+        <translation>Animación</translation>
+    </message>
+    <message>
+        <source>First frame</source>
+        <translation>Primer fotograma</translation>
+    </message>
+    <message>
+        <source>Last frame</source>
+        <translation>Último fotograma</translation>
+    </message>
+    <message>
+        <source>Frames</source>
+        <translation>Fotogramas</translation>
+    </message>
+    <message>
+        <source>Video file</source>
+        <translation>Archivo de vídeo</translation>
+    </message>
+    <message>
+        <source>optional: .mp4 (H.264), .mov (ProRes), .mkv (FFV1)</source>
+        <translation>opcional: .mp4 (H.264), .mov (ProRes), .mkv (FFV1)</translation>
+    </message>
+    <message>
+        <source>Video</source>
+        <translation>Vídeo</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exportar</translation>
+    </message>
+    <message>
+        <source>Rendering...</source>
+        <translation>Renderizando...</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+</context>
+<context>
     <name>glint::editor::HistoryModel</name>
     <message>
         <source>&lt;empty&gt;</source>
@@ -545,7 +382,10 @@ R %3  G %4  B %5 (lineal)</translation>
     </message>
     <message numerus="yes">
         <source>%n nodes selected</source>
-        <translation><numerusform>%n nodo seleccionado</numerusform><numerusform>%n nodos seleccionados</numerusform></translation>
+        <translation>
+            <numerusform>%n nodo seleccionado</numerusform>
+            <numerusform>%n nodos seleccionados</numerusform>
+        </translation>
     </message>
     <message>
         <source>%1 nodes, %2 triangles, configuration: %3</source>
@@ -568,8 +408,8 @@ R %3  G %4  B %5 (lineal)</translation>
         <translation>Cambios sin guardar</translation>
     </message>
     <message>
-        <source>"%1" has unsaved changes. Save them first?</source>
-        <translation>"%1" tiene cambios sin guardar. ¿Guardarlos primero?</translation>
+        <source>&quot;%1&quot; has unsaved changes. Save them first?</source>
+        <translation>&quot;%1&quot; tiene cambios sin guardar. ¿Guardarlos primero?</translation>
     </message>
     <message>
         <source>Cannot open %1: %2</source>
@@ -784,10 +624,6 @@ R %3  G %4  B %5 (lineal)</translation>
         <translation>&amp;Rehacer %1</translation>
     </message>
     <message>
-        <source>The new language applies after a restart.</source>
-        <translation>El nuevo idioma se aplica tras reiniciar.</translation>
-    </message>
-    <message>
         <source>Timeline</source>
         <translation>Línea de tiempo</translation>
     </message>
@@ -972,10 +808,6 @@ R %3  G %4  B %5 (lineal)</translation>
         <translation>Idioma</translation>
     </message>
     <message>
-        <source>A new language applies to menus and panels after a restart.</source>
-        <translation>Un nuevo idioma se aplica a menús y paneles tras reiniciar.</translation>
-    </message>
-    <message>
         <source> min</source>
         <translation> min</translation>
     </message>
@@ -1008,8 +840,8 @@ R %3  G %4  B %5 (lineal)</translation>
         <translation>Conflicto de atajos</translation>
     </message>
     <message>
-        <source>%1 is used by both "%2" and "%3".</source>
-        <translation>%1 lo usan tanto "%2" como "%3".</translation>
+        <source>%1 is used by both &quot;%2&quot; and &quot;%3&quot;.</source>
+        <translation>%1 lo usan tanto &quot;%2&quot; como &quot;%3&quot;.</translation>
     </message>
 </context>
 <context>
@@ -1428,6 +1260,328 @@ R %3  G %4  B %5 (lineal)</translation>
     <message>
         <source>HDR images (*.hdr *.exr);;All files (*)</source>
         <translation>Imágenes HDR (*.hdr *.exr);;Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <source>Camera and timeline</source>
+        <translation>Cámara y línea de tiempo</translation>
+    </message>
+    <message>
+        <source>(the first camera)</source>
+        <translation>(la primera cámara)</translation>
+    </message>
+    <message>
+        <source>Timeline start (s)</source>
+        <translation>Inicio de la línea de tiempo (s)</translation>
+    </message>
+    <message>
+        <source>Timeline end (s, 0 = the animation&apos;s)</source>
+        <translation>Fin de la línea de tiempo (s, 0 = el de la animación)</translation>
+    </message>
+    <message>
+        <source>Frames per second</source>
+        <translation>Fotogramas por segundo</translation>
+    </message>
+    <message>
+        <source>Frames per second must be a positive number or a ratio such as 24000/1001, not &quot;%1&quot;.</source>
+        <translation>Los fotogramas por segundo deben ser un número positivo o una proporción como 24000/1001, no &quot;%1&quot;.</translation>
+    </message>
+    <message>
+        <source>Real-time reconstruction</source>
+        <translation>Reconstrucción en tiempo real</translation>
+    </message>
+    <message>
+        <source>TAA blend (current frame)</source>
+        <translation>Mezcla TAA (fotograma actual)</translation>
+    </message>
+    <message>
+        <source>TAA clip box (std. deviations)</source>
+        <translation>Caja de recorte TAA (desv. estándar)</translation>
+    </message>
+    <message>
+        <source>TAA perceptual blend</source>
+        <translation>Mezcla perceptual TAA</translation>
+    </message>
+    <message>
+        <source>SVGF a-trous iterations</source>
+        <translation>Iteraciones à-trous de SVGF</translation>
+    </message>
+    <message>
+        <source>SVGF temporal alpha</source>
+        <translation>Alfa temporal de SVGF</translation>
+    </message>
+    <message>
+        <source>SVGF moments alpha</source>
+        <translation>Alfa de momentos de SVGF</translation>
+    </message>
+    <message>
+        <source>SVGF luminance sigma</source>
+        <translation>Sigma de luminancia de SVGF</translation>
+    </message>
+    <message>
+        <source>SVGF normal sigma (exponent)</source>
+        <translation>Sigma de normales de SVGF (exponente)</translation>
+    </message>
+    <message>
+        <source>SVGF depth sigma</source>
+        <translation>Sigma de profundidad de SVGF</translation>
+    </message>
+    <message>
+        <source>SVGF firefly ratio</source>
+        <translation>Proporción de luciérnagas de SVGF</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::RenderView</name>
+    <message>
+        <source>Viewport</source>
+        <translation>Vista</translation>
+    </message>
+    <message>
+        <source>Preparing the scene</source>
+        <translation>Preparando la escena</translation>
+    </message>
+    <message>
+        <source>building mesh BVHs</source>
+        <translation>construyendo los BVH de las mallas</translation>
+    </message>
+    <message>
+        <source>decoding textures</source>
+        <translation>decodificando las texturas</translation>
+    </message>
+    <message>
+        <source>loading the environment</source>
+        <translation>cargando el entorno</translation>
+    </message>
+    <message>
+        <source>packing the scene</source>
+        <translation>empaquetando la escena</translation>
+    </message>
+    <message>
+        <source>Preparing the scene: %1 %2/%3</source>
+        <translation>Preparando la escena: %1 %2/%3</translation>
+    </message>
+    <message>
+        <source>Preparing the scene: %1</source>
+        <translation>Preparando la escena: %1</translation>
+    </message>
+    <message>
+        <source>A</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <source>B</source>
+        <translation>B</translation>
+    </message>
+    <message>
+        <source>Pixel %1, %2
+R %3  G %4  B %5 (linear)</source>
+        <translation>Píxel %1, %2
+R %3  G %4  B %5 (lineal)</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::TimeRuler</name>
+    <message>
+        <source>Time ruler</source>
+        <translation>Regla de tiempo</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::TimelinePanel</name>
+    <message>
+        <source>Timeline</source>
+        <translation>Línea de tiempo</translation>
+    </message>
+    <message>
+        <source>Path camera</source>
+        <translation>Cámara de trayectoria</translation>
+    </message>
+    <message>
+        <source>  %1 s  (frame %2)</source>
+        <translation>  %1 s  (fotograma %2)</translation>
+    </message>
+    <message>
+        <source>Add key</source>
+        <translation>Añadir clave</translation>
+    </message>
+    <message>
+        <source>Add a camera-path key from the current view at the current time</source>
+        <translation>Añade una clave de trayectoria de cámara desde la vista actual en el instante actual</translation>
+    </message>
+    <message>
+        <source>Delete key</source>
+        <translation>Eliminar clave</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Reproducir</translation>
+    </message>
+    <message>
+        <source>Loop</source>
+        <translation>Bucle</translation>
+    </message>
+    <message>
+        <source>Constant speed</source>
+        <translation>Velocidad constante</translation>
+    </message>
+    <message>
+        <source>X</source>
+        <translation>X</translation>
+    </message>
+    <message>
+        <source>Y</source>
+        <translation>Y</translation>
+    </message>
+    <message>
+        <source>Z</source>
+        <translation>Z</translation>
+    </message>
+    <message>
+        <source>FOV</source>
+        <translation>Campo de visión</translation>
+    </message>
+    <message>
+        <source>Focus</source>
+        <translation>Enfoque</translation>
+    </message>
+    <message>
+        <source>Lens</source>
+        <translation>Lente</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Tiempo</translation>
+    </message>
+    <message>
+        <source>Key %1</source>
+        <translation>Clave %1</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::Viewport</name>
+    <message>
+        <source>Path traced</source>
+        <translation>Trazado de caminos</translation>
+    </message>
+    <message>
+        <source>Solid</source>
+        <translation>Sólido</translation>
+    </message>
+    <message>
+        <source>Wireframe</source>
+        <translation>Alambre</translation>
+    </message>
+    <message>
+        <source>Normals</source>
+        <translation>Normales</translation>
+    </message>
+    <message>
+        <source>Albedo</source>
+        <translation>Albedo</translation>
+    </message>
+    <message>
+        <source>Ambient occlusion</source>
+        <translation>Oclusión ambiental</translation>
+    </message>
+    <message>
+        <source>Motion vectors</source>
+        <translation>Vectores de movimiento</translation>
+    </message>
+    <message>
+        <source>Variance</source>
+        <translation>Varianza</translation>
+    </message>
+    <message>
+        <source>Depth</source>
+        <translation>Profundidad</translation>
+    </message>
+    <message>
+        <source>BVH instance boxes</source>
+        <translation>Cajas BVH de instancias</translation>
+    </message>
+    <message>
+        <source>BVH traversal cost (heat map)</source>
+        <translation>Coste de recorrido del BVH (mapa de calor)</translation>
+    </message>
+    <message>
+        <source>Viewport</source>
+        <translation>Vista</translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation>Mover</translation>
+    </message>
+    <message>
+        <source>Rotate</source>
+        <translation>Rotar</translation>
+    </message>
+    <message>
+        <source>Scale</source>
+        <translation>Escalar</translation>
+    </message>
+    <message>
+        <source>Frame selection</source>
+        <translation>Encuadrar selección</translation>
+    </message>
+    <message>
+        <source>Make scene camera from view</source>
+        <translation>Crear cámara de escena desde la vista</translation>
+    </message>
+    <message>
+        <source>Look through selected camera</source>
+        <translation>Ver a través de la cámara seleccionada</translation>
+    </message>
+    <message>
+        <source>Snap (Ctrl inverts while dragging)</source>
+        <translation>Ajuste (Ctrl invierte al arrastrar)</translation>
+    </message>
+    <message>
+        <source>Pixel inspector</source>
+        <translation>Inspector de píxeles</translation>
+    </message>
+    <message>
+        <source>Take snapshot A</source>
+        <translation>Tomar instantánea A</translation>
+    </message>
+    <message>
+        <source>Set render region</source>
+        <translation>Definir región de render</translation>
+    </message>
+    <message>
+        <source>Drag a rectangle: the path tracer renders only inside it</source>
+        <translation>Arrastra un rectángulo: el path tracer solo renderiza dentro de él</translation>
+    </message>
+    <message>
+        <source>Clear render region</source>
+        <translation>Quitar la región de render</translation>
+    </message>
+    <message>
+        <source>Compare A | B</source>
+        <translation>Comparar A | B</translation>
+    </message>
+    <message>
+        <source>Pick focus distance</source>
+        <translation>Elegir la distancia de enfoque</translation>
+    </message>
+    <message>
+        <source>Click a surface: the camera looked through focuses at its depth</source>
+        <translation>Haz clic en una superficie: la cámara a través de la que miras enfoca a su profundidad</translation>
+    </message>
+    <message>
+        <source>Pick focus works through a scene camera: select one and look through it (0) first.</source>
+        <translation>El enfoque por clic funciona a través de una cámara de la escena: selecciona una y mira a través de ella (0) primero.</translation>
+    </message>
+    <message>
+        <source>Click the surface to focus on (Esc cancels).</source>
+        <translation>Haz clic en la superficie que quieres enfocar (Esc cancela).</translation>
+    </message>
+    <message>
+        <source>%1 spp  |  %2 ms/frame  |  1/%3 resolution%4</source>
+        <translation>%1 spp  |  %2 ms/fotograma  |  resolución 1/%3%4</translation>
+    </message>
+    <message>
+        <source>  |  paused</source>
+        <translation>  |  en pausa</translation>
     </message>
 </context>
 </TS>

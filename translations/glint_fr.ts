@@ -1,296 +1,34 @@
-<?xml version='1.0' encoding='utf-8'?>
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
 <TS version="2.1" language="fr" sourcelanguage="en">
 <context>
-    <name>ExportDialog</name>
+    <name>FocusPick</name>
     <message>
-        <source>Export image</source>
-        <translation>Exporter une image</translation>
+        <source>Pick focus works through a scene camera: select one and look through it (0) first.</source>
+        <translation>La mise au point par clic passe par une caméra de la scène : sélectionnez-en une et regardez à travers (0) d&apos;abord.</translation>
     </message>
     <message>
-        <source>Export animation</source>
-        <translation>Exporter une animation</translation>
+        <source>Pick focus: %1 follows its camera path, whose keys set the focus; edit them in the timeline.</source>
+        <translation>Mise au point par clic : %1 suit son trajet de caméra, dont les clés fixent la mise au point ; modifiez-les dans la timeline.</translation>
     </message>
     <message>
-        <source>Output file</source>
-        <translation>Fichier de sortie</translation>
+        <source>Pick focus: nothing under the cursor, the focus distance is unchanged.</source>
+        <translation>Mise au point par clic : rien sous le curseur, la distance de mise au point reste inchangée.</translation>
     </message>
     <message>
-        <source>Browse...</source>
-        <translation>Parcourir...</translation>
+        <source>Pick focus: the surface is behind the camera, the focus distance is unchanged.</source>
+        <translation>Mise au point par clic : la surface est derrière la caméra, la distance de mise au point reste inchangée.</translation>
     </message>
     <message>
-        <source>Images (*.exr *.png *.jpg *.tif)</source>
-        <translation>Images (*.exr *.png *.jpg *.tif)</translation>
-    </message>
-    <message>
-        <source>Output</source>
-        <translation>Sortie</translation>
-    </message>
-    <message>
-        <source>Width</source>
-        <translation>Largeur</translation>
-    </message>
-    <message>
-        <source>Height</source>
-        <translation>Hauteur</translation>
-    </message>
-    <message>
-        <source>Size</source>
-        <translation>Taille</translation>
-    </message>
-    <message>
-        <source>Configuration</source>
-        <translation>Configuration</translation>
-    </message>
-    <message>
-        <source>Samples per pixel</source>
-        <translation>Échantillons par pixel</translation>
-    </message>
-    <message>
-        <source>Seed</source>
-        <translation>Graine</translation>
-    </message>
-    <message>
-        <source>EXR layers</source>
-        <translation>Calques EXR</translation>
-    </message>
-    <message>
-        <source>all, none, or a list of albedo, normal, depth, id, variance</source>
-        <translation>all, none, ou une liste parmi albedo, normal, depth, id, variance</translation>
-    </message>
-    <message>
-        <source>Animation</source>
-        <translation>Animation</translation>
-    </message>
-    <message>
-        <source>First frame</source>
-        <translation>Première image</translation>
-    </message>
-    <message>
-        <source>Last frame</source>
-        <translation>Dernière image</translation>
-    </message>
-    <message>
-        <source>Frames</source>
-        <translation>Images</translation>
-    </message>
-    <message>
-        <source>Export</source>
-        <translation>Exporter</translation>
-    </message>
-    <message>
-        <source>Rendering...</source>
-        <translation>Rendu en cours...</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>Annuler</translation>
-    </message>
-    <message>
-        <source>Video file</source>
-        <translation>Fichier vidéo</translation>
-    </message>
-    <message>
-        <source>optional: .mp4 (H.264), .mov (ProRes), .mkv (FFV1)</source>
-        <translation>facultatif : .mp4 (H.264), .mov (ProRes), .mkv (FFV1)</translation>
-    </message>
-    <message>
-        <source>Video</source>
-        <translation>Vidéo</translation>
+        <source>Focus distance of %1: %2 m (%3)</source>
+        <translation>Distance de mise au point de %1 : %2 m (%3)</translation>
     </message>
 </context>
 <context>
-    <name>RenderView</name>
+    <name>OverlayPainter</name>
     <message>
-        <source>Viewport</source>
-        <translation>Vue</translation>
-    </message>
-    <message>
-        <source>A</source>
-        <translation>A</translation>
-    </message>
-    <message>
-        <source>B</source>
-        <translation>B</translation>
-    </message>
-    <message>
-        <source>Pixel %1, %2
-R %3  G %4  B %5 (linear)</source>
-        <translation>Pixel %1, %2
-R %3  V %4  B %5 (linéaire)</translation>
-    </message>
-</context>
-<context>
-    <name>TimeRuler</name>
-    <message>
-        <source>Time ruler</source>
-        <translation>Règle temporelle</translation>
-    </message>
-</context>
-<context>
-    <name>TimelinePanel</name>
-    <message>
-        <source>Timeline</source>
-        <translation>Chronologie</translation>
-    </message>
-    <message>
-        <source>Path camera</source>
-        <translation>Caméra du trajet</translation>
-    </message>
-    <message>
-        <source>  %1 s  (frame %2)</source>
-        <translation>  %1 s  (image %2)</translation>
-    </message>
-    <message>
-        <source>Add key</source>
-        <translation>Ajouter une clé</translation>
-    </message>
-    <message>
-        <source>Add a camera-path key from the current view at the current time</source>
-        <translation>Ajoute une clé de trajet de caméra depuis la vue actuelle à l'instant actuel</translation>
-    </message>
-    <message>
-        <source>Delete key</source>
-        <translation>Supprimer la clé</translation>
-    </message>
-    <message>
-        <source>Play</source>
-        <translation>Lecture</translation>
-    </message>
-    <message>
-        <source>Loop</source>
-        <translation>Boucle</translation>
-    </message>
-    <message>
-        <source>Constant speed</source>
-        <translation>Vitesse constante</translation>
-    </message>
-    <message>
-        <source>X</source>
-        <translation>X</translation>
-    </message>
-    <message>
-        <source>Y</source>
-        <translation>Y</translation>
-    </message>
-    <message>
-        <source>Z</source>
-        <translation>Z</translation>
-    </message>
-    <message>
-        <source>FOV</source>
-        <translation>Champ de vision</translation>
-    </message>
-    <message>
-        <source>Focus</source>
-        <translation>Mise au point</translation>
-    </message>
-    <message>
-        <source>Lens</source>
-        <translation>Objectif</translation>
-    </message>
-    <message>
-        <source>Time</source>
-        <translation>Temps</translation>
-    </message>
-    <message>
-        <source>Key %1</source>
-        <translation>Clé %1</translation>
-    </message>
-</context>
-<context>
-    <name>Viewport</name>
-    <message>
-        <source>Path traced</source>
-        <translation>Path tracing</translation>
-    </message>
-    <message>
-        <source>Solid</source>
-        <translation>Solide</translation>
-    </message>
-    <message>
-        <source>Wireframe</source>
-        <translation>Fil de fer</translation>
-    </message>
-    <message>
-        <source>Normals</source>
-        <translation>Normales</translation>
-    </message>
-    <message>
-        <source>Albedo</source>
-        <translation>Albédo</translation>
-    </message>
-    <message>
-        <source>Ambient occlusion</source>
-        <translation>Occlusion ambiante</translation>
-    </message>
-    <message>
-        <source>Motion vectors</source>
-        <translation>Vecteurs de mouvement</translation>
-    </message>
-    <message>
-        <source>Variance</source>
-        <translation>Variance</translation>
-    </message>
-    <message>
-        <source>Depth</source>
-        <translation>Profondeur</translation>
-    </message>
-    <message>
-        <source>Viewport</source>
-        <translation>Vue</translation>
-    </message>
-    <message>
-        <source>Move</source>
-        <translation>Déplacer</translation>
-    </message>
-    <message>
-        <source>Rotate</source>
-        <translation>Pivoter</translation>
-    </message>
-    <message>
-        <source>Scale</source>
-        <translation>Mettre à l'échelle</translation>
-    </message>
-    <message>
-        <source>Frame selection</source>
-        <translation>Cadrer la sélection</translation>
-    </message>
-    <message>
-        <source>Make scene camera from view</source>
-        <translation>Créer une caméra de scène depuis la vue</translation>
-    </message>
-    <message>
-        <source>Look through selected camera</source>
-        <translation>Voir par la caméra sélectionnée</translation>
-    </message>
-    <message>
-        <source>Snap (Ctrl inverts while dragging)</source>
-        <translation>Magnétisme (Ctrl inverse pendant le glisser)</translation>
-    </message>
-    <message>
-        <source>Pixel inspector</source>
-        <translation>Inspecteur de pixels</translation>
-    </message>
-    <message>
-        <source>Take snapshot A</source>
-        <translation>Prendre l'instantané A</translation>
-    </message>
-    <message>
-        <source>Compare A | B</source>
-        <translation>Comparer A | B</translation>
-    </message>
-    <message>
-        <source>%1 spp  |  %2 ms/frame  |  1/%3 resolution%4</source>
-        <translation>%1 spp  |  %2 ms/image  |  résolution 1/%3%4</translation>
-    </message>
-    <message>
-        <source>  |  paused</source>
-        <translation>  |  en pause</translation>
-    </message>
-    <message>
-        <source>BVH instance boxes</source>
-        <translation>Boîtes BVH des instances</translation>
+        <source>BVH nodes + primitives</source>
+        <translation>Nœuds BVH + primitives</translation>
     </message>
 </context>
 <context>
@@ -410,7 +148,7 @@ R %3  V %4  B %5 (linéaire)</translation>
     <name>glint::editor::Document</name>
     <message>
         <source>The scene has no file name yet: use Save As.</source>
-        <translation>La scène n'a pas encore de nom de fichier : utilisez Enregistrer sous.</translation>
+        <translation>La scène n&apos;a pas encore de nom de fichier : utilisez Enregistrer sous.</translation>
     </message>
     <message>
         <source>Import %1</source>
@@ -425,7 +163,7 @@ R %3  V %4  B %5 (linéaire)</translation>
     <name>glint::editor::EditOperations</name>
     <message>
         <source>Nothing is selected.</source>
-        <translation>Rien n'est sélectionné.</translation>
+        <translation>Rien n&apos;est sélectionné.</translation>
     </message>
     <message>
         <source>Delete</source>
@@ -437,7 +175,7 @@ R %3  V %4  B %5 (linéaire)</translation>
     </message>
     <message>
         <source>The node no longer exists.</source>
-        <translation>Le nœud n'existe plus.</translation>
+        <translation>Le nœud n&apos;existe plus.</translation>
     </message>
     <message>
         <source>A node cannot be moved into itself or its own children.</source>
@@ -446,6 +184,105 @@ R %3  V %4  B %5 (linéaire)</translation>
     <message>
         <source>Reparent</source>
         <translation>Changer de parent</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::ExportDialog</name>
+    <message>
+        <source>Export image</source>
+        <translation>Exporter une image</translation>
+    </message>
+    <message>
+        <source>Export animation</source>
+        <translation>Exporter une animation</translation>
+    </message>
+    <message>
+        <source>Output file</source>
+        <translation>Fichier de sortie</translation>
+    </message>
+    <message>
+        <source>Browse...</source>
+        <translation>Parcourir...</translation>
+    </message>
+    <message>
+        <source>Images (*.exr *.png *.jpg *.tif)</source>
+        <translation>Images (*.exr *.png *.jpg *.tif)</translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation>Sortie</translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation>Largeur</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Hauteur</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>Taille</translation>
+    </message>
+    <message>
+        <source>Configuration</source>
+        <translation>Configuration</translation>
+    </message>
+    <message>
+        <source>Samples per pixel</source>
+        <translation>Échantillons par pixel</translation>
+    </message>
+    <message>
+        <source>Seed</source>
+        <translation>Graine</translation>
+    </message>
+    <message>
+        <source>EXR layers</source>
+        <translation>Calques EXR</translation>
+    </message>
+    <message>
+        <source>all, none, or a list of albedo, normal, depth, id, variance</source>
+        <translation>all, none, ou une liste parmi albedo, normal, depth, id, variance</translation>
+    </message>
+    <message>
+        <source>Animation</source>
+        <translation>Animation</translation>
+    </message>
+    <message>
+        <source>First frame</source>
+        <translation>Première image</translation>
+    </message>
+    <message>
+        <source>Last frame</source>
+        <translation>Dernière image</translation>
+    </message>
+    <message>
+        <source>Frames</source>
+        <translation>Images</translation>
+    </message>
+    <message>
+        <source>Video file</source>
+        <translation>Fichier vidéo</translation>
+    </message>
+    <message>
+        <source>optional: .mp4 (H.264), .mov (ProRes), .mkv (FFV1)</source>
+        <translation>facultatif : .mp4 (H.264), .mov (ProRes), .mkv (FFV1)</translation>
+    </message>
+    <message>
+        <source>Video</source>
+        <translation>Vidéo</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exporter</translation>
+    </message>
+    <message>
+        <source>Rendering...</source>
+        <translation>Rendu en cours...</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Annuler</translation>
     </message>
 </context>
 <context>
@@ -463,7 +300,7 @@ R %3  V %4  B %5 (linéaire)</translation>
     <name>glint::editor::HistoryPanel</name>
     <message>
         <source>Undo history</source>
-        <translation>Historique d'annulation</translation>
+        <translation>Historique d&apos;annulation</translation>
     </message>
 </context>
 <context>
@@ -509,7 +346,7 @@ R %3  V %4  B %5 (linéaire)</translation>
     </message>
     <message>
         <source>The viewport is not available in this build.</source>
-        <translation>La vue n'est pas disponible dans cette version.</translation>
+        <translation>La vue n&apos;est pas disponible dans cette version.</translation>
     </message>
     <message>
         <source>Viewport</source>
@@ -521,7 +358,7 @@ R %3  V %4  B %5 (linéaire)</translation>
     </message>
     <message>
         <source>Undo history</source>
-        <translation>Historique d'annulation</translation>
+        <translation>Historique d&apos;annulation</translation>
     </message>
     <message>
         <source>Properties</source>
@@ -545,7 +382,10 @@ R %3  V %4  B %5 (linéaire)</translation>
     </message>
     <message numerus="yes">
         <source>%n nodes selected</source>
-        <translation><numerusform>%n nœud sélectionné</numerusform><numerusform>%n nœuds sélectionnés</numerusform></translation>
+        <translation>
+            <numerusform>%n nœud sélectionné</numerusform>
+            <numerusform>%n nœuds sélectionnés</numerusform>
+        </translation>
     </message>
     <message>
         <source>%1 nodes, %2 triangles, configuration: %3</source>
@@ -568,12 +408,12 @@ R %3  V %4  B %5 (linéaire)</translation>
         <translation>Modifications non enregistrées</translation>
     </message>
     <message>
-        <source>"%1" has unsaved changes. Save them first?</source>
-        <translation>« %1 » a des modifications non enregistrées. Les enregistrer d'abord ?</translation>
+        <source>&quot;%1&quot; has unsaved changes. Save them first?</source>
+        <translation>« %1 » a des modifications non enregistrées. Les enregistrer d&apos;abord ?</translation>
     </message>
     <message>
         <source>Cannot open %1: %2</source>
-        <translation>Impossible d'ouvrir %1 : %2</translation>
+        <translation>Impossible d&apos;ouvrir %1 : %2</translation>
     </message>
     <message>
         <source>Open</source>
@@ -585,7 +425,7 @@ R %3  V %4  B %5 (linéaire)</translation>
     </message>
     <message>
         <source>Cannot import %1: %2</source>
-        <translation>Impossible d'importer %1 : %2</translation>
+        <translation>Impossible d&apos;importer %1 : %2</translation>
     </message>
     <message>
         <source>Imported %1</source>
@@ -593,7 +433,7 @@ R %3  V %4  B %5 (linéaire)</translation>
     </message>
     <message>
         <source>Cannot save: %1</source>
-        <translation>Impossible d'enregistrer : %1</translation>
+        <translation>Impossible d&apos;enregistrer : %1</translation>
     </message>
     <message>
         <source>Saved %1</source>
@@ -609,7 +449,7 @@ R %3  V %4  B %5 (linéaire)</translation>
     </message>
     <message>
         <source>Cannot save %1: %2</source>
-        <translation>Impossible d'enregistrer %1 : %2</translation>
+        <translation>Impossible d&apos;enregistrer %1 : %2</translation>
     </message>
     <message>
         <source>an untitled scene</source>
@@ -621,7 +461,7 @@ R %3  V %4  B %5 (linéaire)</translation>
     </message>
     <message>
         <source>Glint did not close normally last time. Recover the autosaved copy of %1?</source>
-        <translation>Glint ne s'est pas fermé normalement la dernière fois. Récupérer la copie enregistrée automatiquement de %1 ?</translation>
+        <translation>Glint ne s&apos;est pas fermé normalement la dernière fois. Récupérer la copie enregistrée automatiquement de %1 ?</translation>
     </message>
     <message>
         <source>Cannot recover the autosaved copy: %1</source>
@@ -761,7 +601,7 @@ R %3  V %4  B %5 (linéaire)</translation>
     </message>
     <message>
         <source>Main toolbar</source>
-        <translation>Barre d'outils principale</translation>
+        <translation>Barre d&apos;outils principale</translation>
     </message>
     <message>
         <source>View</source>
@@ -769,7 +609,7 @@ R %3  V %4  B %5 (linéaire)</translation>
     </message>
     <message>
         <source>View toolbar</source>
-        <translation>Barre d'outils de la vue</translation>
+        <translation>Barre d&apos;outils de la vue</translation>
     </message>
     <message>
         <source>Clear the list</source>
@@ -782,10 +622,6 @@ R %3  V %4  B %5 (linéaire)</translation>
     <message>
         <source>&amp;Redo %1</source>
         <translation>&amp;Rétablir %1</translation>
-    </message>
-    <message>
-        <source>The new language applies after a restart.</source>
-        <translation>La nouvelle langue s'applique après un redémarrage.</translation>
     </message>
     <message>
         <source>Timeline</source>
@@ -851,7 +687,7 @@ R %3  V %4  B %5 (linéaire)</translation>
     </message>
     <message>
         <source>Outliner filter</source>
-        <translation>Filtre de l'arborescence</translation>
+        <translation>Filtre de l&apos;arborescence</translation>
     </message>
     <message>
         <source>Add</source>
@@ -972,10 +808,6 @@ R %3  V %4  B %5 (linéaire)</translation>
         <translation>Langue</translation>
     </message>
     <message>
-        <source>A new language applies to menus and panels after a restart.</source>
-        <translation>Une nouvelle langue s'applique aux menus et panneaux après un redémarrage.</translation>
-    </message>
-    <message>
         <source> min</source>
         <translation> min</translation>
     </message>
@@ -1008,7 +840,7 @@ R %3  V %4  B %5 (linéaire)</translation>
         <translation>Conflit de raccourcis</translation>
     </message>
     <message>
-        <source>%1 is used by both "%2" and "%3".</source>
+        <source>%1 is used by both &quot;%2&quot; and &quot;%3&quot;.</source>
         <translation>%1 est utilisé par « %2 » et « %3 ».</translation>
     </message>
 </context>
@@ -1024,7 +856,7 @@ R %3  V %4  B %5 (linéaire)</translation>
     </message>
     <message>
         <source>Select a node in the outliner or the viewport to edit it.</source>
-        <translation>Sélectionnez un nœud dans l'arborescence ou la vue pour le modifier.</translation>
+        <translation>Sélectionnez un nœud dans l&apos;arborescence ou la vue pour le modifier.</translation>
     </message>
 </context>
 <context>
@@ -1079,7 +911,7 @@ R %3  V %4  B %5 (linéaire)</translation>
     </message>
     <message>
         <source>Occlusion texture</source>
-        <translation>Texture d'occlusion</translation>
+        <translation>Texture d&apos;occlusion</translation>
     </message>
     <message>
         <source>Emission</source>
@@ -1087,11 +919,11 @@ R %3  V %4  B %5 (linéaire)</translation>
     </message>
     <message>
         <source>Emission strength</source>
-        <translation>Intensité d'émission</translation>
+        <translation>Intensité d&apos;émission</translation>
     </message>
     <message>
         <source>Emission texture</source>
-        <translation>Texture d'émission</translation>
+        <translation>Texture d&apos;émission</translation>
     </message>
     <message>
         <source>Specular</source>
@@ -1127,15 +959,15 @@ R %3  V %4  B %5 (linéaire)</translation>
     </message>
     <message>
         <source>Thickness texture</source>
-        <translation>Texture d'épaisseur</translation>
+        <translation>Texture d&apos;épaisseur</translation>
     </message>
     <message>
         <source>Attenuation distance (m)</source>
-        <translation>Distance d'atténuation (m)</translation>
+        <translation>Distance d&apos;atténuation (m)</translation>
     </message>
     <message>
         <source>Attenuation colour</source>
-        <translation>Couleur d'atténuation</translation>
+        <translation>Couleur d&apos;atténuation</translation>
     </message>
     <message>
         <source>Alpha mode</source>
@@ -1315,7 +1147,7 @@ R %3  V %4  B %5 (linéaire)</translation>
     </message>
     <message>
         <source>Lens radius (m)</source>
-        <translation>Rayon de l'objectif (m)</translation>
+        <translation>Rayon de l&apos;objectif (m)</translation>
     </message>
     <message>
         <source>Focus distance (m)</source>
@@ -1419,15 +1251,337 @@ R %3  V %4  B %5 (linéaire)</translation>
     </message>
     <message>
         <source>Choose an HDR environment file</source>
-        <translation>Choisir un fichier d'environnement HDR</translation>
+        <translation>Choisir un fichier d&apos;environnement HDR</translation>
     </message>
     <message>
         <source>Environment map</source>
-        <translation>Carte d'environnement</translation>
+        <translation>Carte d&apos;environnement</translation>
     </message>
     <message>
         <source>HDR images (*.hdr *.exr);;All files (*)</source>
         <translation>Images HDR (*.hdr *.exr);;Tous les fichiers (*)</translation>
+    </message>
+    <message>
+        <source>Camera and timeline</source>
+        <translation>Caméra et timeline</translation>
+    </message>
+    <message>
+        <source>(the first camera)</source>
+        <translation>(la première caméra)</translation>
+    </message>
+    <message>
+        <source>Timeline start (s)</source>
+        <translation>Début de la timeline (s)</translation>
+    </message>
+    <message>
+        <source>Timeline end (s, 0 = the animation&apos;s)</source>
+        <translation>Fin de la timeline (s, 0 = celle de l&apos;animation)</translation>
+    </message>
+    <message>
+        <source>Frames per second</source>
+        <translation>Images par seconde</translation>
+    </message>
+    <message>
+        <source>Frames per second must be a positive number or a ratio such as 24000/1001, not &quot;%1&quot;.</source>
+        <translation>Les images par seconde doivent être un nombre positif ou un rapport comme 24000/1001, pas &quot;%1&quot;.</translation>
+    </message>
+    <message>
+        <source>Real-time reconstruction</source>
+        <translation>Reconstruction en temps réel</translation>
+    </message>
+    <message>
+        <source>TAA blend (current frame)</source>
+        <translation>Mélange TAA (image courante)</translation>
+    </message>
+    <message>
+        <source>TAA clip box (std. deviations)</source>
+        <translation>Boîte d&apos;écrêtage TAA (écarts-types)</translation>
+    </message>
+    <message>
+        <source>TAA perceptual blend</source>
+        <translation>Mélange perceptuel TAA</translation>
+    </message>
+    <message>
+        <source>SVGF a-trous iterations</source>
+        <translation>Itérations à trous SVGF</translation>
+    </message>
+    <message>
+        <source>SVGF temporal alpha</source>
+        <translation>Alpha temporel SVGF</translation>
+    </message>
+    <message>
+        <source>SVGF moments alpha</source>
+        <translation>Alpha des moments SVGF</translation>
+    </message>
+    <message>
+        <source>SVGF luminance sigma</source>
+        <translation>Sigma de luminance SVGF</translation>
+    </message>
+    <message>
+        <source>SVGF normal sigma (exponent)</source>
+        <translation>Sigma des normales SVGF (exposant)</translation>
+    </message>
+    <message>
+        <source>SVGF depth sigma</source>
+        <translation>Sigma de profondeur SVGF</translation>
+    </message>
+    <message>
+        <source>SVGF firefly ratio</source>
+        <translation>Rapport de lucioles SVGF</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::RenderView</name>
+    <message>
+        <source>Viewport</source>
+        <translation>Vue</translation>
+    </message>
+    <message>
+        <source>Preparing the scene</source>
+        <translation>Préparation de la scène</translation>
+    </message>
+    <message>
+        <source>building mesh BVHs</source>
+        <translation>construction des BVH des maillages</translation>
+    </message>
+    <message>
+        <source>decoding textures</source>
+        <translation>décodage des textures</translation>
+    </message>
+    <message>
+        <source>loading the environment</source>
+        <translation>chargement de l&apos;environnement</translation>
+    </message>
+    <message>
+        <source>packing the scene</source>
+        <translation>empaquetage de la scène</translation>
+    </message>
+    <message>
+        <source>Preparing the scene: %1 %2/%3</source>
+        <translation>Préparation de la scène : %1 %2/%3</translation>
+    </message>
+    <message>
+        <source>Preparing the scene: %1</source>
+        <translation>Préparation de la scène : %1</translation>
+    </message>
+    <message>
+        <source>A</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <source>B</source>
+        <translation>B</translation>
+    </message>
+    <message>
+        <source>Pixel %1, %2
+R %3  G %4  B %5 (linear)</source>
+        <translation>Pixel %1, %2
+R %3  V %4  B %5 (linéaire)</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::TimeRuler</name>
+    <message>
+        <source>Time ruler</source>
+        <translation>Règle temporelle</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::TimelinePanel</name>
+    <message>
+        <source>Timeline</source>
+        <translation>Chronologie</translation>
+    </message>
+    <message>
+        <source>Path camera</source>
+        <translation>Caméra du trajet</translation>
+    </message>
+    <message>
+        <source>  %1 s  (frame %2)</source>
+        <translation>  %1 s  (image %2)</translation>
+    </message>
+    <message>
+        <source>Add key</source>
+        <translation>Ajouter une clé</translation>
+    </message>
+    <message>
+        <source>Add a camera-path key from the current view at the current time</source>
+        <translation>Ajoute une clé de trajet de caméra depuis la vue actuelle à l&apos;instant actuel</translation>
+    </message>
+    <message>
+        <source>Delete key</source>
+        <translation>Supprimer la clé</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Lecture</translation>
+    </message>
+    <message>
+        <source>Loop</source>
+        <translation>Boucle</translation>
+    </message>
+    <message>
+        <source>Constant speed</source>
+        <translation>Vitesse constante</translation>
+    </message>
+    <message>
+        <source>X</source>
+        <translation>X</translation>
+    </message>
+    <message>
+        <source>Y</source>
+        <translation>Y</translation>
+    </message>
+    <message>
+        <source>Z</source>
+        <translation>Z</translation>
+    </message>
+    <message>
+        <source>FOV</source>
+        <translation>Champ de vision</translation>
+    </message>
+    <message>
+        <source>Focus</source>
+        <translation>Mise au point</translation>
+    </message>
+    <message>
+        <source>Lens</source>
+        <translation>Objectif</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Temps</translation>
+    </message>
+    <message>
+        <source>Key %1</source>
+        <translation>Clé %1</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::Viewport</name>
+    <message>
+        <source>Path traced</source>
+        <translation>Path tracing</translation>
+    </message>
+    <message>
+        <source>Solid</source>
+        <translation>Solide</translation>
+    </message>
+    <message>
+        <source>Wireframe</source>
+        <translation>Fil de fer</translation>
+    </message>
+    <message>
+        <source>Normals</source>
+        <translation>Normales</translation>
+    </message>
+    <message>
+        <source>Albedo</source>
+        <translation>Albédo</translation>
+    </message>
+    <message>
+        <source>Ambient occlusion</source>
+        <translation>Occlusion ambiante</translation>
+    </message>
+    <message>
+        <source>Motion vectors</source>
+        <translation>Vecteurs de mouvement</translation>
+    </message>
+    <message>
+        <source>Variance</source>
+        <translation>Variance</translation>
+    </message>
+    <message>
+        <source>Depth</source>
+        <translation>Profondeur</translation>
+    </message>
+    <message>
+        <source>BVH instance boxes</source>
+        <translation>Boîtes BVH des instances</translation>
+    </message>
+    <message>
+        <source>BVH traversal cost (heat map)</source>
+        <translation>Coût de parcours du BVH (carte de chaleur)</translation>
+    </message>
+    <message>
+        <source>Viewport</source>
+        <translation>Vue</translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation>Déplacer</translation>
+    </message>
+    <message>
+        <source>Rotate</source>
+        <translation>Pivoter</translation>
+    </message>
+    <message>
+        <source>Scale</source>
+        <translation>Mettre à l&apos;échelle</translation>
+    </message>
+    <message>
+        <source>Frame selection</source>
+        <translation>Cadrer la sélection</translation>
+    </message>
+    <message>
+        <source>Make scene camera from view</source>
+        <translation>Créer une caméra de scène depuis la vue</translation>
+    </message>
+    <message>
+        <source>Look through selected camera</source>
+        <translation>Voir par la caméra sélectionnée</translation>
+    </message>
+    <message>
+        <source>Snap (Ctrl inverts while dragging)</source>
+        <translation>Magnétisme (Ctrl inverse pendant le glisser)</translation>
+    </message>
+    <message>
+        <source>Pixel inspector</source>
+        <translation>Inspecteur de pixels</translation>
+    </message>
+    <message>
+        <source>Take snapshot A</source>
+        <translation>Prendre l&apos;instantané A</translation>
+    </message>
+    <message>
+        <source>Set render region</source>
+        <translation>Définir la région de rendu</translation>
+    </message>
+    <message>
+        <source>Drag a rectangle: the path tracer renders only inside it</source>
+        <translation>Tracez un rectangle : le path tracer ne rend qu&apos;à l&apos;intérieur</translation>
+    </message>
+    <message>
+        <source>Clear render region</source>
+        <translation>Effacer la région de rendu</translation>
+    </message>
+    <message>
+        <source>Compare A | B</source>
+        <translation>Comparer A | B</translation>
+    </message>
+    <message>
+        <source>Pick focus distance</source>
+        <translation>Choisir la distance de mise au point</translation>
+    </message>
+    <message>
+        <source>Click a surface: the camera looked through focuses at its depth</source>
+        <translation>Cliquez sur une surface : la caméra à travers laquelle vous regardez fait la mise au point à sa profondeur</translation>
+    </message>
+    <message>
+        <source>Pick focus works through a scene camera: select one and look through it (0) first.</source>
+        <translation>La mise au point par clic passe par une caméra de la scène : sélectionnez-en une et regardez à travers (0) d&apos;abord.</translation>
+    </message>
+    <message>
+        <source>Click the surface to focus on (Esc cancels).</source>
+        <translation>Cliquez sur la surface à mettre au point (Échap annule).</translation>
+    </message>
+    <message>
+        <source>%1 spp  |  %2 ms/frame  |  1/%3 resolution%4</source>
+        <translation>%1 spp  |  %2 ms/image  |  résolution 1/%3%4</translation>
+    </message>
+    <message>
+        <source>  |  paused</source>
+        <translation>  |  en pause</translation>
     </message>
 </context>
 </TS>

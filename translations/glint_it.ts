@@ -1,296 +1,34 @@
-<?xml version='1.0' encoding='utf-8'?>
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
 <TS version="2.1" language="it" sourcelanguage="en">
 <context>
-    <name>ExportDialog</name>
+    <name>FocusPick</name>
     <message>
-        <source>Export image</source>
-        <translation>Esporta immagine</translation>
+        <source>Pick focus works through a scene camera: select one and look through it (0) first.</source>
+        <translation>La messa a fuoco col clic funziona attraverso una camera della scena: selezionane una e guarda attraverso di essa (0).</translation>
     </message>
     <message>
-        <source>Export animation</source>
-        <translation>Esporta animazione</translation>
+        <source>Pick focus: %1 follows its camera path, whose keys set the focus; edit them in the timeline.</source>
+        <translation>Messa a fuoco col clic: %1 segue il suo percorso di camera, le cui chiavi impostano la messa a fuoco; modificale nella timeline.</translation>
     </message>
     <message>
-        <source>Output file</source>
-        <translation>File di uscita</translation>
+        <source>Pick focus: nothing under the cursor, the focus distance is unchanged.</source>
+        <translation>Messa a fuoco col clic: niente sotto il cursore, la distanza di messa a fuoco resta invariata.</translation>
     </message>
     <message>
-        <source>Browse...</source>
-        <translation>Sfoglia...</translation>
+        <source>Pick focus: the surface is behind the camera, the focus distance is unchanged.</source>
+        <translation>Messa a fuoco col clic: la superficie è dietro la camera, la distanza di messa a fuoco resta invariata.</translation>
     </message>
     <message>
-        <source>Images (*.exr *.png *.jpg *.tif)</source>
-        <translation>Immagini (*.exr *.png *.jpg *.tif)</translation>
-    </message>
-    <message>
-        <source>Output</source>
-        <translation>Uscita</translation>
-    </message>
-    <message>
-        <source>Width</source>
-        <translation>Larghezza</translation>
-    </message>
-    <message>
-        <source>Height</source>
-        <translation>Altezza</translation>
-    </message>
-    <message>
-        <source>Size</source>
-        <translation>Dimensione</translation>
-    </message>
-    <message>
-        <source>Configuration</source>
-        <translation>Configurazione</translation>
-    </message>
-    <message>
-        <source>Samples per pixel</source>
-        <translation>Campioni per pixel</translation>
-    </message>
-    <message>
-        <source>Seed</source>
-        <translation>Seme</translation>
-    </message>
-    <message>
-        <source>EXR layers</source>
-        <translation>Livelli EXR</translation>
-    </message>
-    <message>
-        <source>all, none, or a list of albedo, normal, depth, id, variance</source>
-        <translation>all, none, oppure un elenco tra albedo, normal, depth, id, variance</translation>
-    </message>
-    <message>
-        <source>Animation</source>
-        <translation>Animazione</translation>
-    </message>
-    <message>
-        <source>First frame</source>
-        <translation>Primo fotogramma</translation>
-    </message>
-    <message>
-        <source>Last frame</source>
-        <translation>Ultimo fotogramma</translation>
-    </message>
-    <message>
-        <source>Frames</source>
-        <translation>Fotogrammi</translation>
-    </message>
-    <message>
-        <source>Export</source>
-        <translation>Esporta</translation>
-    </message>
-    <message>
-        <source>Rendering...</source>
-        <translation>Rendering in corso...</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>Annulla</translation>
-    </message>
-    <message>
-        <source>Video file</source>
-        <translation>File video</translation>
-    </message>
-    <message>
-        <source>optional: .mp4 (H.264), .mov (ProRes), .mkv (FFV1)</source>
-        <translation>facoltativo: .mp4 (H.264), .mov (ProRes), .mkv (FFV1)</translation>
-    </message>
-    <message>
-        <source>Video</source>
-        <translation>Video</translation>
+        <source>Focus distance of %1: %2 m (%3)</source>
+        <translation>Distanza di messa a fuoco di %1: %2 m (%3)</translation>
     </message>
 </context>
 <context>
-    <name>RenderView</name>
+    <name>OverlayPainter</name>
     <message>
-        <source>Viewport</source>
-        <translation>Vista</translation>
-    </message>
-    <message>
-        <source>A</source>
-        <translation>A</translation>
-    </message>
-    <message>
-        <source>B</source>
-        <translation>B</translation>
-    </message>
-    <message>
-        <source>Pixel %1, %2
-R %3  G %4  B %5 (linear)</source>
-        <translation>Pixel %1, %2
-R %3  G %4  B %5 (lineare)</translation>
-    </message>
-</context>
-<context>
-    <name>TimeRuler</name>
-    <message>
-        <source>Time ruler</source>
-        <translation>Righello temporale</translation>
-    </message>
-</context>
-<context>
-    <name>TimelinePanel</name>
-    <message>
-        <source>Timeline</source>
-        <translation>Timeline</translation>
-    </message>
-    <message>
-        <source>Path camera</source>
-        <translation>Camera del percorso</translation>
-    </message>
-    <message>
-        <source>  %1 s  (frame %2)</source>
-        <translation>  %1 s  (fotogramma %2)</translation>
-    </message>
-    <message>
-        <source>Add key</source>
-        <translation>Aggiungi chiave</translation>
-    </message>
-    <message>
-        <source>Add a camera-path key from the current view at the current time</source>
-        <translation>Aggiunge una chiave del percorso della camera dalla vista attuale all'istante attuale</translation>
-    </message>
-    <message>
-        <source>Delete key</source>
-        <translation>Elimina chiave</translation>
-    </message>
-    <message>
-        <source>Play</source>
-        <translation>Riproduci</translation>
-    </message>
-    <message>
-        <source>Loop</source>
-        <translation>Ciclo</translation>
-    </message>
-    <message>
-        <source>Constant speed</source>
-        <translation>Velocità costante</translation>
-    </message>
-    <message>
-        <source>X</source>
-        <translation>X</translation>
-    </message>
-    <message>
-        <source>Y</source>
-        <translation>Y</translation>
-    </message>
-    <message>
-        <source>Z</source>
-        <translation>Z</translation>
-    </message>
-    <message>
-        <source>FOV</source>
-        <translation>Campo visivo</translation>
-    </message>
-    <message>
-        <source>Focus</source>
-        <translation>Fuoco</translation>
-    </message>
-    <message>
-        <source>Lens</source>
-        <translation>Obiettivo</translation>
-    </message>
-    <message>
-        <source>Time</source>
-        <translation>Tempo</translation>
-    </message>
-    <message>
-        <source>Key %1</source>
-        <translation>Chiave %1</translation>
-    </message>
-</context>
-<context>
-    <name>Viewport</name>
-    <message>
-        <source>Path traced</source>
-        <translation>Path tracing</translation>
-    </message>
-    <message>
-        <source>Solid</source>
-        <translation>Solido</translation>
-    </message>
-    <message>
-        <source>Wireframe</source>
-        <translation>Wireframe</translation>
-    </message>
-    <message>
-        <source>Normals</source>
-        <translation>Normali</translation>
-    </message>
-    <message>
-        <source>Albedo</source>
-        <translation>Albedo</translation>
-    </message>
-    <message>
-        <source>Ambient occlusion</source>
-        <translation>Occlusione ambientale</translation>
-    </message>
-    <message>
-        <source>Motion vectors</source>
-        <translation>Vettori di movimento</translation>
-    </message>
-    <message>
-        <source>Variance</source>
-        <translation>Varianza</translation>
-    </message>
-    <message>
-        <source>Depth</source>
-        <translation>Profondità</translation>
-    </message>
-    <message>
-        <source>Viewport</source>
-        <translation>Vista</translation>
-    </message>
-    <message>
-        <source>Move</source>
-        <translation>Sposta</translation>
-    </message>
-    <message>
-        <source>Rotate</source>
-        <translation>Ruota</translation>
-    </message>
-    <message>
-        <source>Scale</source>
-        <translation>Scala</translation>
-    </message>
-    <message>
-        <source>Frame selection</source>
-        <translation>Inquadra selezione</translation>
-    </message>
-    <message>
-        <source>Make scene camera from view</source>
-        <translation>Crea camera della scena dalla vista</translation>
-    </message>
-    <message>
-        <source>Look through selected camera</source>
-        <translation>Guarda dalla camera selezionata</translation>
-    </message>
-    <message>
-        <source>Snap (Ctrl inverts while dragging)</source>
-        <translation>Aggancio (Ctrl inverte durante il trascinamento)</translation>
-    </message>
-    <message>
-        <source>Pixel inspector</source>
-        <translation>Ispettore pixel</translation>
-    </message>
-    <message>
-        <source>Take snapshot A</source>
-        <translation>Cattura istantanea A</translation>
-    </message>
-    <message>
-        <source>Compare A | B</source>
-        <translation>Confronta A | B</translation>
-    </message>
-    <message>
-        <source>%1 spp  |  %2 ms/frame  |  1/%3 resolution%4</source>
-        <translation>%1 spp  |  %2 ms/fotogramma  |  risoluzione 1/%3%4</translation>
-    </message>
-    <message>
-        <source>  |  paused</source>
-        <translation>  |  in pausa</translation>
-    </message>
-    <message>
-        <source>BVH instance boxes</source>
-        <translation>Riquadri BVH delle istanze</translation>
+        <source>BVH nodes + primitives</source>
+        <translation>Nodi BVH + primitive</translation>
     </message>
 </context>
 <context>
@@ -449,6 +187,105 @@ R %3  G %4  B %5 (lineare)</translation>
     </message>
 </context>
 <context>
+    <name>glint::editor::ExportDialog</name>
+    <message>
+        <source>Export image</source>
+        <translation>Esporta immagine</translation>
+    </message>
+    <message>
+        <source>Export animation</source>
+        <translation>Esporta animazione</translation>
+    </message>
+    <message>
+        <source>Output file</source>
+        <translation>File di uscita</translation>
+    </message>
+    <message>
+        <source>Browse...</source>
+        <translation>Sfoglia...</translation>
+    </message>
+    <message>
+        <source>Images (*.exr *.png *.jpg *.tif)</source>
+        <translation>Immagini (*.exr *.png *.jpg *.tif)</translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation>Uscita</translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation>Larghezza</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Altezza</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>Dimensione</translation>
+    </message>
+    <message>
+        <source>Configuration</source>
+        <translation>Configurazione</translation>
+    </message>
+    <message>
+        <source>Samples per pixel</source>
+        <translation>Campioni per pixel</translation>
+    </message>
+    <message>
+        <source>Seed</source>
+        <translation>Seme</translation>
+    </message>
+    <message>
+        <source>EXR layers</source>
+        <translation>Livelli EXR</translation>
+    </message>
+    <message>
+        <source>all, none, or a list of albedo, normal, depth, id, variance</source>
+        <translation>all, none, oppure un elenco tra albedo, normal, depth, id, variance</translation>
+    </message>
+    <message>
+        <source>Animation</source>
+        <translation>Animazione</translation>
+    </message>
+    <message>
+        <source>First frame</source>
+        <translation>Primo fotogramma</translation>
+    </message>
+    <message>
+        <source>Last frame</source>
+        <translation>Ultimo fotogramma</translation>
+    </message>
+    <message>
+        <source>Frames</source>
+        <translation>Fotogrammi</translation>
+    </message>
+    <message>
+        <source>Video file</source>
+        <translation>File video</translation>
+    </message>
+    <message>
+        <source>optional: .mp4 (H.264), .mov (ProRes), .mkv (FFV1)</source>
+        <translation>facoltativo: .mp4 (H.264), .mov (ProRes), .mkv (FFV1)</translation>
+    </message>
+    <message>
+        <source>Video</source>
+        <translation>Video</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Esporta</translation>
+    </message>
+    <message>
+        <source>Rendering...</source>
+        <translation>Rendering in corso...</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Annulla</translation>
+    </message>
+</context>
+<context>
     <name>glint::editor::HistoryModel</name>
     <message>
         <source>&lt;empty&gt;</source>
@@ -545,7 +382,10 @@ R %3  G %4  B %5 (lineare)</translation>
     </message>
     <message numerus="yes">
         <source>%n nodes selected</source>
-        <translation><numerusform>%n nodo selezionato</numerusform><numerusform>%n nodi selezionati</numerusform></translation>
+        <translation>
+            <numerusform>%n nodo selezionato</numerusform>
+            <numerusform>%n nodi selezionati</numerusform>
+        </translation>
     </message>
     <message>
         <source>%1 nodes, %2 triangles, configuration: %3</source>
@@ -568,8 +408,8 @@ R %3  G %4  B %5 (lineare)</translation>
         <translation>Modifiche non salvate</translation>
     </message>
     <message>
-        <source>"%1" has unsaved changes. Save them first?</source>
-        <translation>"%1" ha modifiche non salvate. Salvarle prima?</translation>
+        <source>&quot;%1&quot; has unsaved changes. Save them first?</source>
+        <translation>&quot;%1&quot; ha modifiche non salvate. Salvarle prima?</translation>
     </message>
     <message>
         <source>Cannot open %1: %2</source>
@@ -621,7 +461,7 @@ R %3  G %4  B %5 (lineare)</translation>
     </message>
     <message>
         <source>Glint did not close normally last time. Recover the autosaved copy of %1?</source>
-        <translation>L'ultima volta Glint non si è chiuso normalmente. Recuperare la copia salvata automaticamente di %1?</translation>
+        <translation>L&apos;ultima volta Glint non si è chiuso normalmente. Recuperare la copia salvata automaticamente di %1?</translation>
     </message>
     <message>
         <source>Cannot recover the autosaved copy: %1</source>
@@ -773,7 +613,7 @@ R %3  G %4  B %5 (lineare)</translation>
     </message>
     <message>
         <source>Clear the list</source>
-        <translation>Svuota l'elenco</translation>
+        <translation>Svuota l&apos;elenco</translation>
     </message>
     <message>
         <source>&amp;Undo %1</source>
@@ -782,10 +622,6 @@ R %3  G %4  B %5 (lineare)</translation>
     <message>
         <source>&amp;Redo %1</source>
         <translation>&amp;Ripeti %1</translation>
-    </message>
-    <message>
-        <source>The new language applies after a restart.</source>
-        <translation>La nuova lingua si applica dopo un riavvio.</translation>
     </message>
     <message>
         <source>Timeline</source>
@@ -972,10 +808,6 @@ R %3  G %4  B %5 (lineare)</translation>
         <translation>Lingua</translation>
     </message>
     <message>
-        <source>A new language applies to menus and panels after a restart.</source>
-        <translation>Una nuova lingua si applica a menu e pannelli dopo un riavvio.</translation>
-    </message>
-    <message>
         <source> min</source>
         <translation> min</translation>
     </message>
@@ -1008,8 +840,8 @@ R %3  G %4  B %5 (lineare)</translation>
         <translation>Conflitto di scorciatoie</translation>
     </message>
     <message>
-        <source>%1 is used by both "%2" and "%3".</source>
-        <translation>%1 è usata sia da "%2" sia da "%3".</translation>
+        <source>%1 is used by both &quot;%2&quot; and &quot;%3&quot;.</source>
+        <translation>%1 è usata sia da &quot;%2&quot; sia da &quot;%3&quot;.</translation>
     </message>
 </context>
 <context>
@@ -1315,7 +1147,7 @@ R %3  G %4  B %5 (lineare)</translation>
     </message>
     <message>
         <source>Lens radius (m)</source>
-        <translation>Raggio dell'obiettivo (m)</translation>
+        <translation>Raggio dell&apos;obiettivo (m)</translation>
     </message>
     <message>
         <source>Focus distance (m)</source>
@@ -1419,15 +1251,337 @@ R %3  G %4  B %5 (lineare)</translation>
     </message>
     <message>
         <source>Choose an HDR environment file</source>
-        <translation>Scegli un file d'ambiente HDR</translation>
+        <translation>Scegli un file d&apos;ambiente HDR</translation>
     </message>
     <message>
         <source>Environment map</source>
-        <translation>Mappa d'ambiente</translation>
+        <translation>Mappa d&apos;ambiente</translation>
     </message>
     <message>
         <source>HDR images (*.hdr *.exr);;All files (*)</source>
         <translation>Immagini HDR (*.hdr *.exr);;Tutti i file (*)</translation>
+    </message>
+    <message>
+        <source>Camera and timeline</source>
+        <translation>Camera e timeline</translation>
+    </message>
+    <message>
+        <source>(the first camera)</source>
+        <translation>(la prima camera)</translation>
+    </message>
+    <message>
+        <source>Timeline start (s)</source>
+        <translation>Inizio timeline (s)</translation>
+    </message>
+    <message>
+        <source>Timeline end (s, 0 = the animation&apos;s)</source>
+        <translation>Fine timeline (s, 0 = quella dell&apos;animazione)</translation>
+    </message>
+    <message>
+        <source>Frames per second</source>
+        <translation>Fotogrammi al secondo</translation>
+    </message>
+    <message>
+        <source>Frames per second must be a positive number or a ratio such as 24000/1001, not &quot;%1&quot;.</source>
+        <translation>I fotogrammi al secondo devono essere un numero positivo o un rapporto come 24000/1001, non &quot;%1&quot;.</translation>
+    </message>
+    <message>
+        <source>Real-time reconstruction</source>
+        <translation>Ricostruzione in tempo reale</translation>
+    </message>
+    <message>
+        <source>TAA blend (current frame)</source>
+        <translation>Fusione TAA (fotogramma corrente)</translation>
+    </message>
+    <message>
+        <source>TAA clip box (std. deviations)</source>
+        <translation>Riquadro di clipping TAA (dev. standard)</translation>
+    </message>
+    <message>
+        <source>TAA perceptual blend</source>
+        <translation>Fusione percettiva TAA</translation>
+    </message>
+    <message>
+        <source>SVGF a-trous iterations</source>
+        <translation>Iterazioni à-trous SVGF</translation>
+    </message>
+    <message>
+        <source>SVGF temporal alpha</source>
+        <translation>Alfa temporale SVGF</translation>
+    </message>
+    <message>
+        <source>SVGF moments alpha</source>
+        <translation>Alfa dei momenti SVGF</translation>
+    </message>
+    <message>
+        <source>SVGF luminance sigma</source>
+        <translation>Sigma di luminanza SVGF</translation>
+    </message>
+    <message>
+        <source>SVGF normal sigma (exponent)</source>
+        <translation>Sigma delle normali SVGF (esponente)</translation>
+    </message>
+    <message>
+        <source>SVGF depth sigma</source>
+        <translation>Sigma di profondità SVGF</translation>
+    </message>
+    <message>
+        <source>SVGF firefly ratio</source>
+        <translation>Rapporto firefly SVGF</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::RenderView</name>
+    <message>
+        <source>Viewport</source>
+        <translation>Vista</translation>
+    </message>
+    <message>
+        <source>Preparing the scene</source>
+        <translation>Preparazione della scena</translation>
+    </message>
+    <message>
+        <source>building mesh BVHs</source>
+        <translation>costruzione dei BVH delle mesh</translation>
+    </message>
+    <message>
+        <source>decoding textures</source>
+        <translation>decodifica delle texture</translation>
+    </message>
+    <message>
+        <source>loading the environment</source>
+        <translation>caricamento dell&apos;ambiente</translation>
+    </message>
+    <message>
+        <source>packing the scene</source>
+        <translation>impacchettamento della scena</translation>
+    </message>
+    <message>
+        <source>Preparing the scene: %1 %2/%3</source>
+        <translation>Preparazione della scena: %1 %2/%3</translation>
+    </message>
+    <message>
+        <source>Preparing the scene: %1</source>
+        <translation>Preparazione della scena: %1</translation>
+    </message>
+    <message>
+        <source>A</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <source>B</source>
+        <translation>B</translation>
+    </message>
+    <message>
+        <source>Pixel %1, %2
+R %3  G %4  B %5 (linear)</source>
+        <translation>Pixel %1, %2
+R %3  G %4  B %5 (lineare)</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::TimeRuler</name>
+    <message>
+        <source>Time ruler</source>
+        <translation>Righello temporale</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::TimelinePanel</name>
+    <message>
+        <source>Timeline</source>
+        <translation>Timeline</translation>
+    </message>
+    <message>
+        <source>Path camera</source>
+        <translation>Camera del percorso</translation>
+    </message>
+    <message>
+        <source>  %1 s  (frame %2)</source>
+        <translation>  %1 s  (fotogramma %2)</translation>
+    </message>
+    <message>
+        <source>Add key</source>
+        <translation>Aggiungi chiave</translation>
+    </message>
+    <message>
+        <source>Add a camera-path key from the current view at the current time</source>
+        <translation>Aggiunge una chiave del percorso della camera dalla vista attuale all&apos;istante attuale</translation>
+    </message>
+    <message>
+        <source>Delete key</source>
+        <translation>Elimina chiave</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Riproduci</translation>
+    </message>
+    <message>
+        <source>Loop</source>
+        <translation>Ciclo</translation>
+    </message>
+    <message>
+        <source>Constant speed</source>
+        <translation>Velocità costante</translation>
+    </message>
+    <message>
+        <source>X</source>
+        <translation>X</translation>
+    </message>
+    <message>
+        <source>Y</source>
+        <translation>Y</translation>
+    </message>
+    <message>
+        <source>Z</source>
+        <translation>Z</translation>
+    </message>
+    <message>
+        <source>FOV</source>
+        <translation>Campo visivo</translation>
+    </message>
+    <message>
+        <source>Focus</source>
+        <translation>Fuoco</translation>
+    </message>
+    <message>
+        <source>Lens</source>
+        <translation>Obiettivo</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Tempo</translation>
+    </message>
+    <message>
+        <source>Key %1</source>
+        <translation>Chiave %1</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::Viewport</name>
+    <message>
+        <source>Path traced</source>
+        <translation>Path tracing</translation>
+    </message>
+    <message>
+        <source>Solid</source>
+        <translation>Solido</translation>
+    </message>
+    <message>
+        <source>Wireframe</source>
+        <translation>Wireframe</translation>
+    </message>
+    <message>
+        <source>Normals</source>
+        <translation>Normali</translation>
+    </message>
+    <message>
+        <source>Albedo</source>
+        <translation>Albedo</translation>
+    </message>
+    <message>
+        <source>Ambient occlusion</source>
+        <translation>Occlusione ambientale</translation>
+    </message>
+    <message>
+        <source>Motion vectors</source>
+        <translation>Vettori di movimento</translation>
+    </message>
+    <message>
+        <source>Variance</source>
+        <translation>Varianza</translation>
+    </message>
+    <message>
+        <source>Depth</source>
+        <translation>Profondità</translation>
+    </message>
+    <message>
+        <source>BVH instance boxes</source>
+        <translation>Riquadri BVH delle istanze</translation>
+    </message>
+    <message>
+        <source>BVH traversal cost (heat map)</source>
+        <translation>Costo di attraversamento BVH (mappa di calore)</translation>
+    </message>
+    <message>
+        <source>Viewport</source>
+        <translation>Vista</translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation>Sposta</translation>
+    </message>
+    <message>
+        <source>Rotate</source>
+        <translation>Ruota</translation>
+    </message>
+    <message>
+        <source>Scale</source>
+        <translation>Scala</translation>
+    </message>
+    <message>
+        <source>Frame selection</source>
+        <translation>Inquadra selezione</translation>
+    </message>
+    <message>
+        <source>Make scene camera from view</source>
+        <translation>Crea camera della scena dalla vista</translation>
+    </message>
+    <message>
+        <source>Look through selected camera</source>
+        <translation>Guarda dalla camera selezionata</translation>
+    </message>
+    <message>
+        <source>Snap (Ctrl inverts while dragging)</source>
+        <translation>Aggancio (Ctrl inverte durante il trascinamento)</translation>
+    </message>
+    <message>
+        <source>Pixel inspector</source>
+        <translation>Ispettore pixel</translation>
+    </message>
+    <message>
+        <source>Take snapshot A</source>
+        <translation>Cattura istantanea A</translation>
+    </message>
+    <message>
+        <source>Set render region</source>
+        <translation>Imposta regione di rendering</translation>
+    </message>
+    <message>
+        <source>Drag a rectangle: the path tracer renders only inside it</source>
+        <translation>Trascina un rettangolo: il path tracer renderizza solo al suo interno</translation>
+    </message>
+    <message>
+        <source>Clear render region</source>
+        <translation>Rimuovi regione di rendering</translation>
+    </message>
+    <message>
+        <source>Compare A | B</source>
+        <translation>Confronta A | B</translation>
+    </message>
+    <message>
+        <source>Pick focus distance</source>
+        <translation>Scegli la distanza di messa a fuoco</translation>
+    </message>
+    <message>
+        <source>Click a surface: the camera looked through focuses at its depth</source>
+        <translation>Fai clic su una superficie: la camera attraverso cui guardi mette a fuoco alla sua profondità</translation>
+    </message>
+    <message>
+        <source>Pick focus works through a scene camera: select one and look through it (0) first.</source>
+        <translation>La messa a fuoco col clic funziona attraverso una camera della scena: selezionane una e guarda attraverso di essa (0).</translation>
+    </message>
+    <message>
+        <source>Click the surface to focus on (Esc cancels).</source>
+        <translation>Fai clic sulla superficie da mettere a fuoco (Esc annulla).</translation>
+    </message>
+    <message>
+        <source>%1 spp  |  %2 ms/frame  |  1/%3 resolution%4</source>
+        <translation>%1 spp  |  %2 ms/fotogramma  |  risoluzione 1/%3%4</translation>
+    </message>
+    <message>
+        <source>  |  paused</source>
+        <translation>  |  in pausa</translation>
     </message>
 </context>
 </TS>

@@ -1,16 +1,19 @@
-// Switching the language while the editor runs (offscreen, the main window without the viewport):
-// menus, actions, dock titles, panel texts and the scene settings' forms change at once to German
-// and back to English, with no restart.
+// Switching the language while the editor runs (the main window under Xvfb):
+// menus, actions, dock titles, panel texts, the scene settings' forms, viewport actions and an open
+// export dialog change at once to German and back to English, with no restart.
 #include "editor_fixtures.h"
+#include "test_viewport_scene.h"
 
 #include "editor/log/log_panel.h"
 #include "editor/main_window/main_window.h"
 #include "editor/outliner/outliner_panel.h"
 #include "editor/preferences/language.h"
 #include "editor/properties/properties_panel.h"
+#include "editor/viewport/viewport.h"
 
 #include <QAction>
 #include <QApplication>
+#include <QDialog>
 #include <QDockWidget>
 #include <QGroupBox>
 #include <QLineEdit>
@@ -65,12 +68,17 @@ private slots:
         MainWindow::Options options;
         options.autosaveFolder = temp.filePath("autosave");
         options.askBeforeRecovery = false;
-        options.createViewport = false;
         MainWindow window(options);
         window.show();
         QVERIFY(window.openFile(test::cornellBox()));
         auto* save = window.findChild<QAction*>("file.save");
         QVERIFY(save);
+        // A dialog open at the time, and the viewport's actions.
+        window.findChild<QAction*>("file.export_still")->trigger();
+        auto* exportDialog = window.findChild<QDialog*>();
+        QVERIFY(exportDialog);
+        QVERIFY(window.viewport());
+        QAction* frameSelection = window.viewport()->frameSelectionAction();
         auto english = [&] {
             QVERIFY2(menuTitles(window).mid(0, 2) == QStringList({"&File", "&Edit"}), qPrintable(menuTitles(window).join(',')));
             QCOMPARE(save->text(), QString("&Save"));
@@ -79,6 +87,9 @@ private slots:
             QVERIFY2(groupTitles(window.sceneSettings()).contains("Render settings"), qPrintable(groupTitles(window.sceneSettings()).join(',')));
             QVERIFY(buttonTexts(window.log()).contains("Clear"));
             QVERIFY(buttonTexts(window.outliner()).contains("Add"));
+            QCOMPARE(exportDialog->windowTitle(), QString("Export image"));
+            QVERIFY(buttonTexts(*exportDialog).contains("Export"));
+            QCOMPARE(frameSelection->text(), QString("Frame selection"));
         };
         english();
 
@@ -92,6 +103,9 @@ private slots:
         QVERIFY2(groupTitles(window.sceneSettings()).contains(QString("Render-Einstellungen")),
                  qPrintable(groupTitles(window.sceneSettings()).join(',')));
         QVERIFY(buttonTexts(window.log()).contains("Leeren"));
+        QCOMPARE(exportDialog->windowTitle(), QString("Bild exportieren"));
+        QVERIFY2(buttonTexts(*exportDialog).contains("Exportieren"), qPrintable(buttonTexts(*exportDialog).join(',')));
+        QCOMPARE(frameSelection->text(), QString("Auswahl einpassen"));
         // The document is untouched by a language change.
         QVERIFY(!window.document().isModified());
 
@@ -101,6 +115,7 @@ private slots:
 };
 
 int main(int argc, char** argv) {
+    glint::test::prepareGlApplication(); // the viewport's QOpenGLWidget
     QApplication app(argc, argv);
     TestLanguageSwitch test;
     return QTest::qExec(&test, argc, argv);
