@@ -2,10 +2,11 @@
 // specular apart) and of their first two luminance moments, with a history length per pixel
 // (Schied et al. 2017). Disoccluded pixels restart at 1.
 // Smooth specular lobes (mirrors, glass, a polished layer) see reflections whose motion the primary
-// motion vectors do not describe: their history is kept short (current-frame weight up to 0.5 at
-// roughness 0); the diffuse lobe on the same pixel keeps its long history.
-// Guard: NaN/Inf become 0, and a lobe far brighter than the same lobe of all its neighbours (a
-// firefly) is clamped to them before it can enter history.
+// motion vectors do not describe: while the pixel moves, their history is kept short (current-frame
+// weight up to 0.5 at roughness 0 from 1/4 px/frame); the diffuse lobe on the same pixel keeps its long
+// history, and a still view keeps both long (there the reflection does not move).
+// Guard: NaN/Inf become 0, and a pixel far brighter than all its neighbours (a firefly) is clamped
+// to them before it can enter history.
 #include "reconstruction/common.glsl"
 #include "reconstruction/svgf_demodulate.glsl"
 
@@ -41,28 +42,34 @@ void illuminationAt(ivec2 p, out vec3 diffuse, out vec3 specular) {
     specular = demodulate(s, texelFetch(uSpecularAlbedo, p, 0).rgb);
 }
 
-vec3 clampedTo(vec3 c, float brightest) {
-    float limit = uFireflyRatio * max(brightest, 1.0e-2);
-    float l = luminance(c);
-    return l > limit ? c * (limit / l) : c;
+// The whole radiance demodulated by both albedos: what the firefly test compares. (Each lobe alone
+// is too sparse for it: a rough specular layer's indirect light comes from the few pixels whose
+// first bounce chose that lobe, and clamping those to their neighbours would lose its energy.)
+float combinedLuminance(ivec2 p) {
+    vec3 radiance = finiteRadiance(texelFetch(uRadiance, p, 0).rgb);
+    return luminance(demodulate(radiance, lobeAlbedo(uDiffuseAlbedo, uSpecularAlbedo, p)));
 }
 
+// A pixel far brighter than its brightest neighbour is scaled down to the limit, both lobes alike.
 void withoutFireflies(ivec2 pixel, inout vec3 diffuse, inout vec3 specular) {
     ivec2 size = textureSize(uRadiance, 0);
-    vec2 brightest = vec2(0.0);
+    float brightest = 0.0;
     for (int y = -1; y <= 1; ++y)
-        for (int x = -1; x <= 1; ++x) {
-            if (x == 0 && y == 0) continue;
-            vec3 d, s;
-            illuminationAt(clamp(pixel + ivec2(x, y), ivec2(0), size - 1), d, s);
-            brightest = max(brightest, vec2(luminance(d), luminance(s)));
-        }
-    diffuse = clampedTo(diffuse, brightest.x);
-    specular = clampedTo(specular, brightest.y);
+        for (int x = -1; x <= 1; ++x)
+            if (x != 0 || y != 0) brightest = max(brightest, combinedLuminance(clamp(pixel + ivec2(x, y), ivec2(0), size - 1)));
+    float limit = uFireflyRatio * max(brightest, 1.0e-2);
+    float l = combinedLuminance(pixel);
+    float scale = l > limit ? limit / l : 1.0;
+    diffuse *= scale;
+    specular *= scale;
 }
 
-// 1 for a mirror, 0 from roughness 0.3 up: how much shorter the specular lobe's history is.
-float smoothness(ivec2 p) { return 1.0 - clamp(texelFetch(uSpecularAlbedo, p, 0).a / 0.3, 0.0, 1.0); }
+// 1 for a mirror moving a quarter pixel a frame or more, 0 from roughness 0.3 up or when still: how much shorter
+// the specular lobe's history is.
+float reflectionMotion(ivec2 p, vec2 motion) {
+    float smoothness = 1.0 - clamp(texelFetch(uSpecularAlbedo, p, 0).a / 0.3, 0.0, 1.0);
+    return smoothness * clamp(length(motion) / 0.25, 0.0, 1.0);
+}
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -73,7 +80,8 @@ void main() {
     l.yw = l.xz * l.xz;
     vec4 normalDepth = texelFetch(uNormalDepth, pixel, 0);
     float id = texelFetch(uObjectId, pixel, 0).x;
-    vec2 previous = gl_FragCoord.xy + texelFetch(uMotion, pixel, 0).xy;
+    vec2 motion = texelFetch(uMotion, pixel, 0).xy;
+    vec2 previous = gl_FragCoord.xy + motion;
 
     // Bilinear reprojection over the taps that saw the same surface.
     vec3 historyDiffuse = vec3(0.0), historySpecular = vec3(0.0);
@@ -113,7 +121,7 @@ void main() {
     float historyLength = mix(pastLength, 0.0, stale) + 1.0;
     float alpha = max(max(uAlpha, 1.0 / historyLength), stale);
     float momentsAlpha = max(max(uMomentsAlpha, 1.0 / historyLength), stale);
-    float specularShort = mix(uAlpha, 0.5, smoothness(pixel));
+    float specularShort = mix(uAlpha, 0.5, reflectionMotion(pixel, motion));
     vec2 alphas = vec2(alpha, max(alpha, specularShort));
     vec4 m = mix(moments, l, vec4(momentsAlpha, momentsAlpha, max(momentsAlpha, specularShort), max(momentsAlpha, specularShort)));
     outDiffuse = vec4(mix(historyDiffuse, diffuse, alphas.x), max(m.y - m.x * m.x, 0.0));
