@@ -151,7 +151,6 @@ struct FrameTargets {
     AccumulatePass stillMean;    // every sample since the picture last changed
     gl::RenderTarget display;    // tonemapped RGBA8
     Reconstruction reconstruction;
-    RegionComposite region;      // with a render region: the image outside it stays
 };
 
 struct FrameRenderer::State {
@@ -184,6 +183,7 @@ struct FrameRenderer::State {
     std::uint32_t frameSampleIndex = 0; // real-time frames' sample counter: decorrelates frames
     const gl::RenderTarget* result = nullptr; // linear radiance of the last frame (attachment 0)
     bool regionChanged = false; // set, moved or cleared since the last frame
+    RegionComposite region;     // with a render region: the image outside it stays (across resizes)
 
     void upload() {
         gpu = std::make_unique<GpuScene>(posed, environmentFile, meshCache, &textureCache);
@@ -228,10 +228,11 @@ void FrameRenderer::State::beginRegion() {
         pictureChanged = true;
         historyValid = false;
         regionChanged = false;
-        if (settings.region.active) targets->region.freeze(result, settings.width, settings.height);
+        if (settings.region.active) region.freeze(result, settings.width, settings.height);
+        else region.clear();
     }
     if (!settings.region.active) return;
-    if (!targets->region.fits(settings.width, settings.height)) targets->region.freeze(result, settings.width, settings.height);
+    if (!region.fits(settings.width, settings.height)) region.freeze(result, settings.width, settings.height);
     const PixelRect r = regionPixels(settings.region, settings.width, settings.height);
     glEnable(GL_SCISSOR_TEST);
     glScissor(r.x, r.y, r.width, r.height);
@@ -240,8 +241,8 @@ void FrameRenderer::State::beginRegion() {
 void FrameRenderer::State::endRegion() {
     if (!settings.region.active) return;
     glDisable(GL_SCISSOR_TEST);
-    if (result) targets->region.update(*result, regionPixels(settings.region, settings.width, settings.height));
-    result = &targets->region.image();
+    if (result) region.update(*result, regionPixels(settings.region, settings.width, settings.height));
+    result = &region.image();
 }
 
 void FrameRenderer::State::renderAccumulated() {
@@ -367,6 +368,10 @@ void FrameRenderer::setSettings(const FrameSettings& settings) {
     if (!(settings.region == s.settings.region)) {
         s.regionChanged = true;
         if (s.targets) s.targets->stillMean.reset(); // the count restarts now (the mean's pixels stay)
+        if (settings.region.active && s.result) { // keep the last image before a new size drops it
+            CallerGlState guard;
+            s.region.freeze(s.result, s.result->width(), s.result->height());
+        }
     }
     s.settings = settings;
     if (image) s.resetAll();

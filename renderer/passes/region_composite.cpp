@@ -10,15 +10,17 @@ GLuint framebufferOf(const gl::RenderTarget& target) {
     return static_cast<GLuint>(fbo);
 }
 
-// Same-size copy of one rectangle of attachment 0 (no filtering: exact values).
-void copyRect(const gl::RenderTarget& from, const gl::RenderTarget& to, const PixelRect& r) {
-    const GLuint source = framebufferOf(from);
+// Copies attachment 0 of `from` (all of it, scaled) or one rectangle of it (same size: exact).
+void blit(const gl::RenderTarget& from, const gl::RenderTarget& to, const PixelRect& source, const PixelRect& target) {
+    const GLuint read = framebufferOf(from);
     framebufferOf(to); // binds `to` for drawing, attachment 0 as its only draw buffer
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, source);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, read);
     glReadBuffer(GL_COLOR_ATTACHMENT0);
-    glBlitFramebuffer(r.x, r.y, r.x + r.width, r.y + r.height, r.x, r.y, r.x + r.width, r.y + r.height,
-                      GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBlitFramebuffer(source.x, source.y, source.x + source.width, source.y + source.height, target.x, target.y,
+                      target.x + target.width, target.y + target.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
+
+PixelRect whole(const gl::RenderTarget& t) { return {0, 0, t.width(), t.height()}; }
 
 } // namespace
 
@@ -28,17 +30,18 @@ bool RegionComposite::fits(int width, int height) const {
 
 void RegionComposite::freeze(const gl::RenderTarget* last, int width, int height) {
     if (last == composite_.get() && fits(width, height)) return; // already the last image
+    const gl::RenderTarget* source = last ? last : composite_.get();
     auto next = std::make_unique<gl::RenderTarget>(width, height, std::vector<GLenum>{GL_RGBA32F});
     const bool scissor = glIsEnabled(GL_SCISSOR_TEST);
-    glDisable(GL_SCISSOR_TEST);
-    if (last && last->width() == width && last->height() == height) copyRect(*last, *next, {0, 0, width, height});
+    glDisable(GL_SCISSOR_TEST); // blits and clears obey the scissor
+    if (source) blit(*source, *next, whole(*source), whole(*next));
     else next->clear();
     if (scissor) glEnable(GL_SCISSOR_TEST);
     composite_ = std::move(next);
 }
 
 void RegionComposite::update(const gl::RenderTarget& result, const PixelRect& rect) {
-    if (composite_ && &result != composite_.get()) copyRect(result, *composite_, rect);
+    if (composite_ && &result != composite_.get()) blit(result, *composite_, rect, rect);
 }
 
 } // namespace glint::renderer
