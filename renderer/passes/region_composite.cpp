@@ -10,7 +10,7 @@ GLuint framebufferOf(const gl::RenderTarget& target) {
     return static_cast<GLuint>(fbo);
 }
 
-// Copies attachment 0 of `from` (all of it, scaled) or one rectangle of it (same size: exact).
+// Copies attachment 0 of `from` (all of it, scaled to nearest pixels) or one rectangle of it.
 void blit(const gl::RenderTarget& from, const gl::RenderTarget& to, const PixelRect& source, const PixelRect& target) {
     const GLuint read = framebufferOf(from);
     framebufferOf(to); // binds `to` for drawing, attachment 0 as its only draw buffer
