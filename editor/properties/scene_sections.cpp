@@ -181,6 +181,11 @@ PropertyForm* makeReconstructionForm(Document& document, const Report& report, Q
     form->addFloat(
         PropertyForm::tr("TAA blend (current frame)"), 0.01, 1.0, 3, [&taa] { return double(taa.blend); },
         [edit](double v, std::uint64_t i) { edit([&](ProjectSettings& s) { s.render.taa.blend = float(std::clamp(v, 0.01, 1.0)); }, i); });
+    form->addChoice(
+        PropertyForm::tr("TAA history clipping"),
+        {PropertyForm::tr("Variance clip (YCoCg)"), PropertyForm::tr("Min/max clamp"), PropertyForm::tr("None (ghosts)")},
+        [&taa] { return static_cast<int>(taa.clip); },
+        [edit](int i) { edit([&](ProjectSettings& s) { s.render.taa.clip = static_cast<TaaClip>(i); }, 0); });
     form->addFloat(
         PropertyForm::tr("TAA clip box (std. deviations)"), 0.25, 4.0, 2, [&taa] { return double(taa.clipGamma); },
         [edit](double v, std::uint64_t i) { edit([&](ProjectSettings& s) { s.render.taa.clipGamma = float(std::clamp(v, 0.05, 16.0)); }, i); });

@@ -50,7 +50,8 @@ void addReconstruction(ImageMetadata& metadata, const RenderSettings& project, C
     const auto number = [](float v) { return formatNumber(double(v)); };
     if (traits.taa && project.taa != TaaParameters{}) {
         const TaaParameters& t = project.taa;
-        metadata["taa"] = "blend=" + number(t.blend) + " clipGamma=" + number(t.clipGamma) +
+        metadata["taa"] = "blend=" + number(t.blend) + " clip=" + std::to_string(static_cast<int>(t.clip)) +
+                          " clipGamma=" + number(t.clipGamma) +
                           " perceptualBlend=" + (t.perceptualBlend ? "1" : "0");
     }
     if (traits.svgf && project.svgf != SvgfParameters{}) {

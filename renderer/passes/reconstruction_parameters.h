@@ -7,7 +7,14 @@
 
 namespace glint::renderer {
 
-inline TaaSettings taaSettingsOf(const TaaParameters& p) { return {p.blend, p.clipGamma, p.perceptualBlend}; }
+inline TaaSettings taaSettingsOf(const TaaParameters& p) {
+    TaaSettings s;
+    s.minBlend = p.blend;
+    s.clipMode = static_cast<int>(p.clip); // taa.frag.glsl's uClipMode: the enum's order
+    s.clipGamma = p.clipGamma;
+    s.perceptualBlend = p.perceptualBlend;
+    return s;
+}
 
 inline SvgfSettings svgfSettingsOf(const SvgfParameters& p) {
     SvgfSettings s;

@@ -24,6 +24,7 @@ const gl::RenderTarget& TaaPass::execute(const TaaInputs& in, const TaaSettings&
               [&](const gl::ShaderProgram& p) {
                   glUniform1i(p.uniform("uHistoryValid"), in.historyValid ? 1 : 0);
                   glUniform1f(p.uniform("uMinBlend"), settings.minBlend);
+                  glUniform1i(p.uniform("uClipMode"), settings.clipMode);
                   glUniform1f(p.uniform("uClipGamma"), settings.clipGamma);
                   glUniform1i(p.uniform("uPerceptualBlend"), settings.perceptualBlend ? 1 : 0);
               }},

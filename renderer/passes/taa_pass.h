@@ -8,6 +8,7 @@ namespace glint::renderer {
 
 struct TaaSettings {
     float minBlend = 0.1f;  // current frame's weight on a long still history (~10 frames)
+    int clipMode = 0;        // 0 variance clip, 1 min/max clamp, 2 none (TaaClip's order)
     float clipGamma = 1.25f; // variance-clipping box half-size in standard deviations
     bool perceptualBlend = false; // blend tonemapped colour (darkens noisy input; taa.frag.glsl)
 };

@@ -24,8 +24,13 @@ struct Environment {
 // Real-time reconstruction of the configurations with history (baseline, realistic, full, heavy;
 // docs/DENOISING.md). Part of the project because it changes the pixels: the editor and the command
 // line render a project with the same values. Written only where they differ from these defaults.
+// How TAA keeps reprojected history close to this frame: clip it towards the YCoCg variance box of
+// the 3x3 neighbourhood, clamp it to the neighbourhood's min/max box, or leave it (ghosts).
+enum class TaaClip { Variance, MinMax, None };
+
 struct TaaParameters {
     float blend = 0.1f;           // the current frame's weight on a long still history, (0, 1]
+    TaaClip clip = TaaClip::Variance;
     float clipGamma = 1.25f;      // variance-clipping box half-size in standard deviations, (0, 16]
     bool perceptualBlend = false; // blend tonemapped colour (bounds fireflies, darkens noisy input)
     friend bool operator==(const TaaParameters&, const TaaParameters&) = default;

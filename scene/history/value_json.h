@@ -72,7 +72,8 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Image, name, uri, mimeType, encoded, width, h
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Sampler, name, magFilter, minFilter, wrapS, wrapT, unknown)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Texture, name, image, sampler, unknown)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Environment, file, color, intensity, rotationDegrees)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(TaaParameters, blend, clipGamma, perceptualBlend)
+NLOHMANN_JSON_SERIALIZE_ENUM(TaaClip, {{TaaClip::Variance, "variance"}, {TaaClip::MinMax, "minmax"}, {TaaClip::None, "none"}})
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(TaaParameters, blend, clip, clipGamma, perceptualBlend)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(SvgfParameters, iterations, alpha, momentsAlpha, sigmaLuminance,
                                                 sigmaNormal, sigmaDepth, fireflyRatio)
 // With defaults: command logs written before the reconstruction parameters existed still replay.

@@ -161,6 +161,9 @@ constexpr std::array<std::pair<const char*, LightUnits>, 2> kLightUnitNames{{{"b
 constexpr std::array<std::pair<const char*, Tonemapper>, 3> kTonemapperNames{
     {{"none", Tonemapper::None}, {"aces", Tonemapper::AcesFitted}, {"pbrNeutral", Tonemapper::PbrNeutral}}};
 
+constexpr std::array<std::pair<const char*, TaaClip>, 3> kTaaClipNames{
+    {{"variance", TaaClip::Variance}, {"minmax", TaaClip::MinMax}, {"none", TaaClip::None}}};
+
 template <class Enum, std::size_t N>
 const char* enumName(Enum value, const std::array<std::pair<const char*, Enum>, N>& names)
 {
@@ -175,6 +178,7 @@ bool inUnitInterval(float v) { return v > 0.0f && v <= 1.0f; }
 void readTaa(ObjectReader& r, TaaParameters& t)
 {
     r.readChecked("blend", t.blend, inUnitInterval, "greater than 0 and at most 1");
+    r.readEnum("clip", t.clip, kTaaClipNames);
     r.readChecked("clipGamma", t.clipGamma, [](float v) { return v > 0.0f && v <= 16.0f; }, "greater than 0 and at most 16");
     r.read("perceptualBlend", t.perceptualBlend);
 }
@@ -285,6 +289,7 @@ json taaJson(const TaaParameters& t)
     const TaaParameters d;
     json j = json::object();
     if (t.blend != d.blend) j["blend"] = jsonFloat(t.blend);
+    if (t.clip != d.clip) j["clip"] = enumName(t.clip, kTaaClipNames);
     if (t.clipGamma != d.clipGamma) j["clipGamma"] = jsonFloat(t.clipGamma);
     if (t.perceptualBlend != d.perceptualBlend) j["perceptualBlend"] = t.perceptualBlend;
     return j;

@@ -16,6 +16,7 @@ uniform sampler2D uPreviousObjectId;
 uniform sampler2D uAntiLag;      // x: how stale history is, 0..1 (anti_lag_pass.h)
 uniform int uHistoryValid;
 uniform float uMinBlend;         // weight of the current frame on a still, long history
+uniform int uClipMode;           // 0: variance clip, 1: clamp to the 3x3 min/max box, 2: none (ghosts)
 uniform float uClipGamma;        // box half-size in standard deviations
 // 1: blend in the perceptual space too (Karis). It bounds a firefly's weight but darkens 1-spp
 // input (Jensen: mean of c/(1+l) < mean of c): -30% energy on the Cornell box, docs/DENOISING.md.
@@ -68,11 +69,14 @@ vec3 clipToBox(vec3 history, vec3 centre, vec3 extent) {
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec3 m1 = vec3(0.0), m2 = vec3(0.0);
+    vec3 lowest = vec3(1.0e30), highest = vec3(-1.0e30);
     for (int y = -1; y <= 1; ++y)
         for (int x = -1; x <= 1; ++x) {
             vec3 c = yCoCgFromRgb(currentPerceptual(pixel + ivec2(x, y)));
             m1 += c;
             m2 += c * c;
+            lowest = min(lowest, c);
+            highest = max(highest, c);
         }
     vec3 mean = m1 / 9.0;
     vec3 sigma = sqrt(max(m2 / 9.0 - mean * mean, vec3(0.0)));
@@ -88,7 +92,8 @@ void main() {
     }
     vec4 history = historyAt(previous);
     vec3 past = perceptualFromLinear(finiteRadiance(history.rgb));
-    past = rgbFromYCoCg(clipToBox(yCoCgFromRgb(past), mean, uClipGamma * sigma));
+    if (uClipMode == 0) past = rgbFromYCoCg(clipToBox(yCoCgFromRgb(past), mean, uClipGamma * sigma));
+    else if (uClipMode == 1) past = rgbFromYCoCg(clamp(yCoCgFromRgb(past), lowest, highest));
     // Where anti-lag finds the lighting changed, the history counts as that much shorter.
     float stale = texelFetch(uAntiLag, pixel, 0).x;
     float frames = min(mix(history.a, 0.0, stale) + 1.0, 1.0 / uMinBlend);

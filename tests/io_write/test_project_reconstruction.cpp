@@ -27,7 +27,7 @@ ProjectFile tuned()
 {
     ProjectFile p;
     p.sceneFile = "shot.gltf";
-    p.settings.render.taa = {.blend = 0.05f, .clipGamma = 2.5f, .perceptualBlend = true};
+    p.settings.render.taa = {.blend = 0.05f, .clip = TaaClip::MinMax, .clipGamma = 2.5f, .perceptualBlend = true};
     p.settings.render.svgf.iterations = 3;
     p.settings.render.svgf.sigmaNormal = 0.0f;
     p.settings.render.svgf.fireflyRatio = 16.5f;
@@ -57,7 +57,7 @@ private slots:
     {
         const std::string text = writeProjectFileText(tuned());
         const json render = json::parse(text).at("render");
-        QCOMPARE(render.at("taa").dump(), std::string(R"({"blend":0.05,"clipGamma":2.5,"perceptualBlend":true})"));
+        QCOMPARE(render.at("taa").dump(), std::string(R"({"blend":0.05,"clip":"minmax","clipGamma":2.5,"perceptualBlend":true})"));
         QCOMPARE(render.at("svgf").dump(), std::string(R"({"fireflyRatio":16.5,"iterations":3,"sigmaNormal":0})"));
         Warnings warnings;
         const ProjectFile back = parseProjectFile(text, "p.glint.json", warnings);
@@ -89,6 +89,8 @@ private slots:
                  std::string("bad-value: key 'render.taa.blend' must be greater than 0 and at most 1"));
         QCOMPARE(expectError(R"({"taa": {"clipGamma": -1}})"),
                  std::string("bad-value: key 'render.taa.clipGamma' must be greater than 0 and at most 16"));
+        QCOMPARE(expectError(R"({"taa": {"clip": "box"}})"),
+                 std::string("bad-value: key 'render.taa.clip' must be one of variance, minmax, none, not 'box'"));
         QCOMPARE(expectError(R"({"taa": {"perceptualBlend": 1}})"),
                  std::string("wrong-type: key 'render.taa.perceptualBlend' must be true or false"));
         QCOMPARE(expectError(R"({"svgf": {"sigmaDepth": 0}})"),
