@@ -297,10 +297,10 @@ void FrameRenderer::setScene(const Scene& scene, const std::filesystem::path& en
     state_->resetAll();
 }
 
-void FrameRenderer::setPreparedScene(const Scene& document, double seconds, PreparedScene prepared) {
+void FrameRenderer::setPreparedScene(Scene document, double seconds, PreparedScene prepared) {
     CallerGlState guard;
     State& s = *state_;
-    s.document = document;
+    s.document = std::move(document);
     s.time = seconds;
     s.environmentFile = prepared.environmentFile;
     s.pose();

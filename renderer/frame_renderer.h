@@ -78,7 +78,7 @@ public:
     void applyChanges(const Scene& scene, const ChangeSet& changes);
     // The GL stage of setScene alone, for a host that prepares on a worker thread: uploads what
     // prepareScene made of sceneForTime(document, seconds) (renderer/gpu_scene/prepared_scene.h).
-    void setPreparedScene(const Scene& document, double seconds, PreparedScene prepared);
+    void setPreparedScene(Scene document, double seconds, PreparedScene prepared);
     // Whether changes like these may be applied without a new GPU scene (transforms, lights,
     // material values; a material edit that needs other textures still returns false below).
     static bool mayApplyInPlace(const ChangeSet& changes);

@@ -69,8 +69,12 @@ RenderView::RenderView(Document& document, QWidget* parent)
     });
     connect(&document_, &Document::changed, this, [this](const ChangeSet& changes) {
         if (preview_ && (changes.has(Change::Geometry) || changes.has(Change::Structure))) previewStale_ = true;
-        // A change the GPU scene cannot take in place supersedes the preparation in flight.
-        if (preparer_->busy() && !renderer::FrameRenderer::mayApplyInPlace(changes)) fullUpload_ = true;
+        // A change the GPU scene cannot take in place supersedes the preparation in flight, and
+        // the image shown until the next upload is no longer the document's.
+        if (!renderer::FrameRenderer::mayApplyInPlace(changes)) {
+            if (preparer_->busy()) fullUpload_ = true;
+            stats_.samples = 0;
+        }
         pending_.merge(changes);
         picker_.reset();
         followLookThrough();
@@ -78,6 +82,7 @@ RenderView::RenderView(Document& document, QWidget* parent)
     });
     connect(&document_, &Document::fileChanged, this, [this] {
         preparer_->cancel(); // another document: the old preparation is of no use
+        stats_.samples = 0;
         fullUpload_ = true;
         showPrevious_ = false;
         reportedWarnings_.clear(); // warnings are de-duplicated per opened file
@@ -148,7 +153,7 @@ void RenderView::uploadPrepared(PreparedDocument prepared) {
     upload.start();
     stats_.preparing = false;
     showPrevious_ = false; // until the upload succeeds
-    renderer_->setPreparedScene(prepared.document, prepared.time, std::move(prepared.gpu));
+    renderer_->setPreparedScene(std::move(prepared.document), prepared.time, std::move(prepared.gpu));
     renderer::raster::finishGpuWork();
     stats_.uploadMs = double(upload.nsecsElapsed()) / 1e6;
     stats_.prepareMs = prepared.milliseconds;

@@ -21,8 +21,11 @@ gl::TextureBuffer upload(const char* what, GLenum format, const std::vector<T>& 
     return gl::TextureBuffer(what, format, texels.data(), texels.size(), sizeof(T));
 }
 
-void check(const bvh::FlatScene& flat) {
+void validate(const bvh::FlatScene& flat) {
     if (const auto problem = bvh::validateFlatScene(flat)) throw std::runtime_error("invalid BVH: " + *problem);
+}
+
+void checkSizes(const bvh::FlatScene& flat) {
     if (const auto tooBig = bvh::checkTextureBufferSizes(flat, static_cast<std::int64_t>(gl::maxTextureBufferTexels())))
         throw std::runtime_error(*tooBig);
 }
@@ -30,12 +33,12 @@ void check(const bvh::FlatScene& flat) {
 } // namespace
 
 GpuMeshes::GpuMeshes(const Scene& scene, const std::map<MaterialId, int>& materialIndex, bool texturing, MeshBvhCache& cache)
-    : GpuMeshes(buildMeshData(scene, materialIndex, texturing, cache)) {}
+    : GpuMeshes(validatedMeshData(scene, materialIndex, texturing, cache)) {}
 
 GpuMeshes::GpuMeshes(MeshData data) : data_(std::move(data)) {
     if (data_.instances.empty()) return;
     const bvh::FlatScene& flat = data_.flat;
-    check(flat);
+    checkSizes(flat); // validated on the CPU already (validatedMeshData), off the GL thread
     buffers_ = std::make_unique<Buffers>(Buffers{
         upload("uBvhNodeBounds", GL_RGBA32F, flat.nodeBounds), upload("uBvhNodeLinks", GL_RGBA32UI, flat.nodeLinks),
         upload("uBvhTrianglePositions", GL_RGBA32F, flat.trianglePositions),
@@ -50,7 +53,8 @@ GpuMeshes::~GpuMeshes() = default;
 void GpuMeshes::updateTransforms(const Scene& scene, const std::map<MaterialId, int>& materialIndex) {
     if (!buffers_) return;
     updateMeshTransforms(data_, scene, materialIndex);
-    check(data_.flat);
+    validate(data_.flat);
+    checkSizes(data_.flat);
     // The node buffers hold the mesh nodes too; re-sending them is a copy, not a BVH build.
     Buffers& b = *buffers_;
     b.nodeBounds = upload("uBvhNodeBounds", GL_RGBA32F, data_.flat.nodeBounds);

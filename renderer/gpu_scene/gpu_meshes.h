@@ -19,7 +19,7 @@ public:
     // or exceeds GL_MAX_TEXTURE_BUFFER_SIZE.
     // `cache`: mesh BVHs kept across uploads (only meshes whose content changed are rebuilt).
     GpuMeshes(const Scene& scene, const std::map<MaterialId, int>& materialIndex, bool texturing, MeshBvhCache& cache);
-    // The upload alone, of data buildMeshData made (on any thread).
+    // The upload alone, of data validatedMeshData made (on any thread).
     explicit GpuMeshes(MeshData data);
     ~GpuMeshes();
     // After a transform-only change: rebuilds the top level and the emissive triangles and uploads

@@ -2,9 +2,11 @@
 
 #include "renderer/bvh/bvh_layout.h"
 #include "renderer/bvh/mesh_bvh.h"
+#include "renderer/bvh/validate.h"
 #include "renderer/gpu_scene/visibility.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace glint::renderer {
 namespace {
@@ -118,6 +120,14 @@ MeshData buildMeshData(const Scene& scene, const std::map<MaterialId, int>& mate
     data.flat = bvh::flattenScene(data.bvhs, bvh::buildTopLevel(data.instances, data.bvhs));
     data.vertexTexels = vertexTexels(scene, data.ids, texturing);
     data.lights = emissiveTriangles(scene, data, materialIndex);
+    return data;
+}
+
+MeshData validatedMeshData(const Scene& scene, const std::map<MaterialId, int>& materialIndex, bool texturing, MeshBvhCache& cache,
+                           const std::function<void(std::size_t, std::size_t)>& beforeMesh) {
+    MeshData data = buildMeshData(scene, materialIndex, texturing, cache, beforeMesh);
+    if (data.instances.empty()) return data;
+    if (const auto problem = bvh::validateFlatScene(data.flat)) throw std::runtime_error("invalid BVH: " + *problem);
     return data;
 }
 

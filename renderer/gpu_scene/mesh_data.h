@@ -48,6 +48,11 @@ struct MeshData {
 MeshData buildMeshData(const Scene& scene, const std::map<MaterialId, int>& materialIndex, bool texturing,
                        MeshBvhCache& cache, const std::function<void(std::size_t, std::size_t)>& beforeMesh = {});
 
+// buildMeshData plus the BVH's validation (bvh/validate.h), CPU only: what GpuMeshes(MeshData)
+// uploads. Throws std::runtime_error when the BVH is invalid.
+MeshData validatedMeshData(const Scene& scene, const std::map<MaterialId, int>& materialIndex, bool texturing, MeshBvhCache& cache,
+                           const std::function<void(std::size_t, std::size_t)>& beforeMesh = {});
+
 // After transforms alone changed (same visible instances, same meshes and materials): new instance
 // matrices, top level and emissive triangles; mesh BVHs, triangles and vertex attributes are kept.
 // Gives the same bytes as buildMeshData of `scene`.

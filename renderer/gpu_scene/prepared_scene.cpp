@@ -101,7 +101,7 @@ PreparedScene prepareScene(const Scene& scene, const std::filesystem::path& envi
     report(control, "packing", 0, 1);
     out.packed = packScene(scene, &out.textures);
     const bool colors = meshesHaveColors(scene);
-    out.meshes = buildMeshData(scene, out.packed.materialIndex, !out.textures.empty() || colors, meshCache,
+    out.meshes = validatedMeshData(scene, out.packed.materialIndex, !out.textures.empty() || colors, meshCache,
                                [&](std::size_t done, std::size_t total) { report(control, "meshes", done, total); });
     out.features.meshes = !out.meshes.instances.empty() && !out.meshes.flat.trianglePositions.empty();
     addMeshMaterialFeatures(scene, out.features);
