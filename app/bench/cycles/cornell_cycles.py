@@ -1,6 +1,6 @@
 """Render a Glint glTF scene with Blender Cycles (CPU) at increasing sample counts, timed.
 
-Usage (Blender 3.4, headless):
+Usage (Blender 3.4 and python3-numpy from Debian, headless):
   blender -b --factory-startup --python app/bench/cycles/cornell_cycles.py -- \
       --scene resources/scenes/cornell_box/cornell_box.gltf --out OUT_DIR \
       [--size 512x512] [--bounces 4] [--samples 1,2,4,8,16,32,64] [--reference-samples 1024] \
