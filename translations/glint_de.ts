@@ -1329,6 +1329,22 @@
         <source>SVGF firefly ratio</source>
         <translation>SVGF-Firefly-Verhältnis</translation>
     </message>
+    <message>
+        <source>TAA history clipping</source>
+        <translation>TAA-Verlaufsbegrenzung</translation>
+    </message>
+    <message>
+        <source>Variance clip (YCoCg)</source>
+        <translation>Varianz-Clipping (YCoCg)</translation>
+    </message>
+    <message>
+        <source>Min/max clamp</source>
+        <translation>Min/Max-Begrenzung</translation>
+    </message>
+    <message>
+        <source>None (ghosts)</source>
+        <translation>Keine (Geisterbilder)</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::RenderView</name>

@@ -1329,6 +1329,22 @@
         <source>SVGF firefly ratio</source>
         <translation>Proporción de luciérnagas de SVGF</translation>
     </message>
+    <message>
+        <source>TAA history clipping</source>
+        <translation>Recorte del historial TAA</translation>
+    </message>
+    <message>
+        <source>Variance clip (YCoCg)</source>
+        <translation>Recorte por varianza (YCoCg)</translation>
+    </message>
+    <message>
+        <source>Min/max clamp</source>
+        <translation>Limitación mín./máx.</translation>
+    </message>
+    <message>
+        <source>None (ghosts)</source>
+        <translation>Ninguno (estelas)</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::RenderView</name>

@@ -1329,6 +1329,22 @@
         <source>SVGF firefly ratio</source>
         <translation>Rapport de lucioles SVGF</translation>
     </message>
+    <message>
+        <source>TAA history clipping</source>
+        <translation>Écrêtage de l&apos;historique TAA</translation>
+    </message>
+    <message>
+        <source>Variance clip (YCoCg)</source>
+        <translation>Écrêtage par variance (YCoCg)</translation>
+    </message>
+    <message>
+        <source>Min/max clamp</source>
+        <translation>Bornage min/max</translation>
+    </message>
+    <message>
+        <source>None (ghosts)</source>
+        <translation>Aucun (images fantômes)</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::RenderView</name>

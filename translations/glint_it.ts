@@ -1329,6 +1329,22 @@
         <source>SVGF firefly ratio</source>
         <translation>Rapporto firefly SVGF</translation>
     </message>
+    <message>
+        <source>TAA history clipping</source>
+        <translation>Clipping della cronologia TAA</translation>
+    </message>
+    <message>
+        <source>Variance clip (YCoCg)</source>
+        <translation>Clipping sulla varianza (YCoCg)</translation>
+    </message>
+    <message>
+        <source>Min/max clamp</source>
+        <translation>Limitazione min/max</translation>
+    </message>
+    <message>
+        <source>None (ghosts)</source>
+        <translation>Nessuno (scie)</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::RenderView</name>
