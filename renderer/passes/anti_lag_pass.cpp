@@ -45,6 +45,7 @@ void AntiLagPass::measureGradient(const AntiLagInputs& in, const AntiLagSettings
                   glUniform1f(p.uniform("uNoiseLow"), settings.noiseLow);
                   glUniform1f(p.uniform("uNoiseHigh"), settings.noiseHigh);
                   glUniform1f(p.uniform("uFullChange"), settings.fullChange);
+                  glUniform1f(p.uniform("uMinPixels"), static_cast<float>(settings.minPixels));
                   glUniform1f(p.uniform("uSpikeSigmas"), settings.spikeSigmas);
               }},
              gradient_);
@@ -69,6 +70,7 @@ void AntiLagPass::updateHistory(const AntiLagInputs& in, const AntiLagSettings& 
                   glUniform1i(p.uniform("uHistoryValid"), in.historyValid ? 1 : 0);
                   glUniform1i(p.uniform("uStratum"), antiLagStratum);
                   glUniform1f(p.uniform("uAlpha"), settings.momentsAlpha);
+                  glUniform1f(p.uniform("uSpikeSigmas"), settings.spikeSigmas);
               }},
              history_[current_]);
 }

@@ -27,10 +27,10 @@ float lambdaAt(ivec2 pixel) {
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
-    float l = currentLuminance(pixel);
     float lambda = lambdaAt(pixel);
     float weight;
     vec3 h = reprojectedMoments(pixel, weight);
+    float l = weight < 1.0e-3 ? currentLuminance(pixel) : withoutSpike(currentLuminance(pixel), h);
     outAntiLag = vec4(lambda, 0.0, 0.0, 0.0);
     if (weight < 1.0e-3) {
         outMoments = vec4(l, l * l, 1.0, 0.0);

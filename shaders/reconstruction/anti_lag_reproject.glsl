@@ -12,6 +12,7 @@ uniform sampler2D uPreviousNormalDepth;
 uniform sampler2D uPreviousObjectId;
 uniform sampler2D uHistory; // x = E[l], y = E[l^2], z = history length in frames
 uniform int uHistoryValid;
+uniform float uSpikeSigmas; // a sample beyond mean + this many sigmas is clamped (fireflies)
 
 float currentLuminance(ivec2 p) {
     return luminance(demodulate(finiteRadiance(texelFetch(uRadiance, p, 0).rgb), lobeAlbedo(uDiffuseAlbedo, uSpecularAlbedo, p)));
@@ -39,4 +40,13 @@ vec3 reprojectedMoments(ivec2 pixel, out float weight) {
             weight += w;
         }
     return weight >= 1.0e-3 ? sum / weight : vec3(0.0);
+}
+
+// A rare bright sample is what 1-spp noise is made of, not a change: once a history knows its
+// variance (4 frames), samples are clamped to mean + uSpikeSigmas sigma, in the gradient and in the
+// moments alike (clamping only one side would make the two means differ on a still image).
+float withoutSpike(float l, vec3 history) {
+    if (history.z < 4.0) return l;
+    float sigma = sqrt(max(history.y - history.x * history.x, 0.0));
+    return min(l, history.x + uSpikeSigmas * (sigma + 0.1 * history.x + 1.0e-3));
 }
