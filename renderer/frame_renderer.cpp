@@ -428,9 +428,9 @@ void FrameRenderer::renderFrame() {
     ++s.frames;
 }
 
-void FrameRenderer::drawTo(unsigned int framebuffer, int width, int height) {
+bool FrameRenderer::drawTo(unsigned int framebuffer, int width, int height) {
     State& s = *state_;
-    if (!s.result) return;
+    if (!s.result) return false;
     CallerGlState guard;
     const gl::RenderTarget& display = s.targets->display;
     s.tonemap.render(*s.result, s.camera.exposure + s.settings.exposure,
@@ -444,6 +444,7 @@ void FrameRenderer::drawTo(unsigned int framebuffer, int width, int height) {
     const bool sameSize = width == display.width() && height == display.height();
     glBlitFramebuffer(0, 0, display.width(), display.height(), 0, 0, width, height, GL_COLOR_BUFFER_BIT,
                       sameSize ? GL_NEAREST : GL_LINEAR);
+    return true;
 }
 
 FrameImages FrameRenderer::readImages() {

@@ -98,7 +98,8 @@ public:
 
     void renderFrame();
     // Tonemaps the last frame into `framebuffer` (any id, 0 included) scaled to width x height.
-    void drawTo(unsigned int framebuffer, int width, int height);
+    // False, drawing nothing, while no frame of the current scene has been rendered yet.
+    bool drawTo(unsigned int framebuffer, int width, int height);
     FrameImages readImages();
 
     int sampleCount() const;   // samples in the running mean behind the current frame

@@ -119,7 +119,8 @@ void RenderView::releaseGl() {
     // else a new one starts at the next paint.
     gpuCurrent_ = false;
     showPrevious_ = false;
-    fullUpload_ = !preparer_ || !preparer_->busy(); // no preparer: the view is being destroyed
+    // no preparer: the view is being destroyed
+    fullUpload_ = !preparer_ || (!preparer_->busy() && !preparer_->hasResult());
 }
 
 void RenderView::initializeGL() {
@@ -129,7 +130,7 @@ void RenderView::initializeGL() {
     textureLimits_ = renderer::queryTextureLimits();
     ++stats_.contexts;
     gpuCurrent_ = false;
-    fullUpload_ = !preparer_->busy();
+    fullUpload_ = !preparer_->busy() && !preparer_->hasResult(); // a finished result is uploaded as it is
     timeDirty_ = true;
 }
 
@@ -193,9 +194,10 @@ bool RenderView::syncGpuScene() {
 // Meanwhile: the last image while it is of this document, else the raster preview.
 void RenderView::paintWhilePreparing() {
     stats_.samples = 0; // none of the document as it is now
-    if (showPrevious_ && renderer_->hasScene()) {
-        const qreal dpr = devicePixelRatioF();
-        renderer_->drawTo(defaultFramebufferObject(), int(std::lround(width() * dpr)), int(std::lround(height() * dpr)));
+    const qreal dpr = devicePixelRatioF();
+    // A scene uploaded but not yet rendered has no image to show: the preview stands in.
+    if (showPrevious_ && renderer_->hasScene() &&
+        renderer_->drawTo(defaultFramebufferObject(), int(std::lround(width() * dpr)), int(std::lround(height() * dpr)))) {
         ++stats_.paints;
         drawOverlays();
         emit statsChanged();

@@ -30,7 +30,6 @@ ScenePreparer::~ScenePreparer() {
 
 void ScenePreparer::start(Scene document, double seconds, std::filesystem::path environmentFile, renderer::TextureLimits limits) {
     cancel();
-    ready_.reset(); // a finished result not yet uploaded is superseded too
     auto job = std::make_shared<Job>();
     job->document = std::move(document);
     job->time = seconds;
@@ -44,6 +43,7 @@ void ScenePreparer::start(Scene document, double seconds, std::filesystem::path 
 void ScenePreparer::cancel() {
     if (current_) current_->cancelled = true;
     current_.reset();
+    ready_.reset(); // a result not yet uploaded is superseded too: another file must never show it
 }
 
 std::unique_ptr<PreparedDocument> ScenePreparer::take() { return std::move(ready_); }

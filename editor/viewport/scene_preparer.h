@@ -37,9 +37,10 @@ public:
 
     // Prepares `document` posed at `seconds`, cancelling the preparation in flight.
     void start(Scene document, double seconds, std::filesystem::path environmentFile, renderer::TextureLimits limits);
-    // Cancels the preparation in flight (its result is dropped).
+    // Cancels the preparation in flight and drops a finished result not yet taken.
     void cancel();
     bool busy() const { return current_ != nullptr; }
+    bool hasResult() const { return ready_ != nullptr; } // finished, not yet taken
     std::uint64_t started() const { return generation_; } // preparations started so far
     // The result of the last finished(), handed over once.
     std::unique_ptr<PreparedDocument> take();
