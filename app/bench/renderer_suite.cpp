@@ -3,6 +3,7 @@
 #include "bench_scenes.h"
 #include "image_metrics.h"
 #include "ray_count.h"
+#include "percentile.h"
 #include "sample_timer.h"
 #include "speed_accuracy_chart.h"
 
@@ -18,6 +19,7 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace glint::bench {
@@ -35,11 +37,7 @@ struct ThroughputRow {
     double pathsPerSecond(int pixels) const { return pixels / (msMedian / 1000.0); }
 };
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
+double median(std::vector<double> v) { return percentile(std::move(v), 0.5); }
 
 ThroughputRow measureThroughput(SampleTimer& timer, const BenchScene& s, const SuiteOptions& o) {
     std::fprintf(stderr, "glint: %s (%zu triangles): warm-up and %d runs of %d spp at %dx%d\n", s.name.c_str(), s.triangles,
@@ -156,7 +154,8 @@ Curves glintConvergence(SampleTimer& timer, const Scene& scene, const SuiteOptio
                                                   });
     renderer::writeRenderImage(dir / "glint_reference.exr", reference, renderer::parseAovList("none"),
                                {{"spp", std::to_string(o.referenceSpp)}});
-    Curves curves{{"Glint (llvmpipe)", {}}, {"Glint (llvmpipe)", {}}};
+    const std::string label = "Glint (" + timer.glRenderer() + ")"; // the device it ran on
+    Curves curves{{label, {}}, {label, {}}};
     std::ofstream csv(dir / "glint_convergence.csv", std::ios::binary);
     csv << "samples,seconds,relmse,cpu_seconds\n";
     timer.render(o.curveSpp, 0, powerOfTwo, [&](int k, const SampleTime& t, const renderer::FrameImages& image) {

@@ -2,6 +2,7 @@
 
 #include "frame_timing.h"
 #include "image_metrics.h"
+#include "percentile.h"
 
 #include <epoxy/gl.h>
 
@@ -14,14 +15,6 @@ namespace glint::cli {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double percentile(std::vector<double> values, double q) {
-    std::sort(values.begin(), values.end());
-    const double index = q * static_cast<double>(values.size() - 1);
-    const auto low = static_cast<std::size_t>(index);
-    const std::size_t high = std::min(low + 1, values.size() - 1);
-    return values[low] + (values[high] - values[low]) * (index - static_cast<double>(low));
-}
 
 // Frames compared with a reference: 1, 2, 4, ... and the last (references cost far more than frames).
 bool sampled(int frame, int last) { return frame == last || (frame > 0 && (frame & (frame - 1)) == 0); }
@@ -93,9 +86,9 @@ PathBenchRow runConfiguration(renderer::FrameRenderer& frames, const std::vector
     }
     row.relmse /= std::max(compared, 1);
     row.ssim /= std::max(compared, 1);
-    row.msMedian = percentile(ms, 0.5);
-    row.msP10 = percentile(ms, 0.1);
-    row.msP90 = percentile(ms, 0.9);
+    row.msMedian = bench::percentile(ms, 0.5);
+    row.msP10 = bench::percentile(ms, 0.1);
+    row.msP90 = bench::percentile(ms, 0.9);
     return row;
 }
 

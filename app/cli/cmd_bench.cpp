@@ -13,6 +13,7 @@
 #include "scene_file.h"
 
 #include "image_metrics.h"
+#include "percentile.h"
 #include "renderer_suite_cli.h"
 #include "speed_accuracy_chart.h"
 
@@ -60,14 +61,6 @@ struct BenchRow {
 };
 
 using Clock = std::chrono::steady_clock;
-
-double percentile(std::vector<double> values, double q) {
-    std::sort(values.begin(), values.end());
-    const double index = q * static_cast<double>(values.size() - 1);
-    const auto low = static_cast<std::size_t>(index);
-    const std::size_t high = std::min(low + 1, values.size() - 1);
-    return values[low] + (values[high] - values[low]) * (index - static_cast<double>(low));
-}
 
 renderer::FrameSettings settingsFor(const BenchOptions& o, const Scene& scene, renderer::Configuration config) {
     renderer::FrameSettings s;
@@ -156,9 +149,9 @@ BenchRow runConfiguration(renderer::FrameRenderer& frames, const BenchOptions& o
         last = frames.readImages().radiance;
         row.curve.points.push_back({total, bench::relMse(last, reference)});
     }
-    row.msMedian = percentile(ms, 0.5);
-    row.msP10 = percentile(ms, 0.1);
-    row.msP90 = percentile(ms, 0.9);
+    row.msMedian = bench::percentile(ms, 0.5);
+    row.msP10 = bench::percentile(ms, 0.1);
+    row.msP90 = bench::percentile(ms, 0.9);
     row.relmse = bench::relMse(last, reference);
     row.ssim = bench::ssim(last, reference, o.size.width, o.size.height);
     return row;
@@ -272,6 +265,7 @@ int runBench(const BenchOptions& o) {
         environment.envFile = o.env;
         environment.sceneFolder = std::filesystem::path(o.scene).parent_path();
         frames.setScene(scene, renderer::environmentPath(scene, environment));
+        reportWarnings(withFile(frames.warnings(), o.scene), false);
         frames.setSettings(settingsFor(o, scene, renderer::Configuration::Reference));
         frames.useSceneCamera(o.camera);
         std::fprintf(stderr, "glint: reference: %d spp\n", o.referenceSpp);
