@@ -2,6 +2,7 @@
 // mirror, a sphere lamp seen by the camera, and a glossy plane lit by both, whose mean must equal a
 // CPU estimate of the same integral by light sampling alone (through the GLSL's C++ twin).
 #include "image_stats.h"
+#include "render_scene.h"
 #include "scene_builder.h"
 
 #include "renderer/cpu_twin/glsl_twin.h"
@@ -18,16 +19,6 @@ using namespace glint::test;
 namespace {
 
 constexpr double kPi = 3.14159265358979;
-
-renderer::RenderOutput render(renderer::OfflineRenderer& r, const Scene& scene, int size, int spp, std::uint32_t seed, int bounces) {
-    renderer::RenderRequest request;
-    request.width = size;
-    request.height = size;
-    request.spp = spp;
-    request.seed = seed;
-    request.bounces = bounces;
-    return r.render(scene, request);
-}
 
 NodeId addLamp(Scene& scene, LightType type, glm::vec3 position, glm::vec3 shineDirection, float candela, float radius) {
     Light light;
@@ -114,11 +105,11 @@ private slots:
     // A delta sun is seen in no mirror.
     void mirrorShowsSunDiskRadiance() {
         const double disk = diskRadiance(1.0, 0.1);
-        const ChannelStats seen = channelStats(render(*renderer_, mirrorUnderSun(0.1f, 0.02f), 8, 4, 30, 1).radiance, 1);
+        const ChannelStats seen = channelStats(renderScene(*renderer_, mirrorUnderSun(0.1f, 0.02f), 8, 4, 30, 1).radiance, 1);
         qInfo("mirrored disk %.4f .. %.4f, expected %.4f", seen.minimum, seen.maximum, disk);
         QVERIFY2(std::abs(seen.minimum - disk) < 1e-3 * disk && std::abs(seen.maximum - disk) < 1e-3 * disk,
                  qPrintable(QString("mirrored disk %1 .. %2 vs %3").arg(seen.minimum).arg(seen.maximum).arg(disk)));
-        QCOMPARE(channelStats(render(*renderer_, mirrorUnderSun(0.0f, 0.02f), 8, 4, 30, 1).radiance, 1).maximum, 0.0);
+        QCOMPARE(channelStats(renderScene(*renderer_, mirrorUnderSun(0.0f, 0.02f), 8, 4, 30, 1).radiance, 1).maximum, 0.0);
     }
 
     // 32x32, 64 spp, seed 31, 1 bounce. The whole mirrored disk (0.1 rad) inside a 0.3 rad view: the
@@ -126,7 +117,7 @@ private slots:
     // (within 1 %; the disk's edge pixels are estimated by the pixel jitter).
     void mirrorReflectsSunEnergy() {
         const float yfov = 0.3f;
-        const auto image = render(*renderer_, mirrorUnderSun(0.1f, yfov), 32, 64, 31, 1).radiance;
+        const auto image = renderScene(*renderer_, mirrorUnderSun(0.1f, yfov), 32, 64, 31, 1).radiance;
         const double energy = integrateImage(image, 32, yfov, false);
         qInfo("reflected L x Omega %.5f, expected 1", energy);
         QVERIFY2(std::abs(energy - 1.0) < 0.01, qPrintable(QString("reflected L x Omega %1 vs 1").arg(energy)));
@@ -160,7 +151,7 @@ private slots:
         }
         double expected = 1.0 / (kPi * 0.25 * 0.25);
         if (spot) expected *= std::pow((std::cos(0.45) - std::cos(0.6)) / (std::cos(0.3) - std::cos(0.6)), 2.0);
-        const ChannelStats seen = channelStats(render(*renderer_, scene, 8, 1, 32, mirrored ? 1 : 0).radiance, 1);
+        const ChannelStats seen = channelStats(renderScene(*renderer_, scene, 8, 1, 32, mirrored ? 1 : 0).radiance, 1);
         qInfo("lamp %.5f .. %.5f, expected %.5f", seen.minimum, seen.maximum, expected);
         QVERIFY2(std::abs(seen.minimum - expected) < 1e-3 * expected && std::abs(seen.maximum - expected) < 1e-3 * expected,
                  qPrintable(QString("lamp %1 .. %2 vs %3").arg(seen.minimum).arg(seen.maximum).arg(expected)));
@@ -173,7 +164,7 @@ private slots:
         Scene scene;
         addLamp(scene, LightType::Point, glm::vec3(0.0f), {0.0f, 0.0f, 1.0f}, 683.0f, 0.25f);
         addPerspectiveCamera(scene, {0.0f, 0.0f, 2.0f}, glm::vec3(0.0f), 0.4f);
-        const double irradiance = integrateImage(render(*renderer_, scene, 32, 64, 33, 0).radiance, 32, 0.4f, true);
+        const double irradiance = integrateImage(renderScene(*renderer_, scene, 32, 64, 33, 0).radiance, 32, 0.4f, true);
         qInfo("lamp image irradiance %.5f, expected 0.25", irradiance);
         QVERIFY2(std::abs(irradiance - 0.25) < 0.01 * 0.25, qPrintable(QString("%1 vs 0.25").arg(irradiance)));
     }
@@ -189,10 +180,10 @@ private slots:
         addSun(scene, {0.0f, -1.0f, 0.0f}, 683.0f);
         addLamp(scene, LightType::Point, {0.0f, 1.0f, 0.0f}, {0.0f, -1.0f, 0.0f}, 0.0f, 0.5f);
         addOrthographicCamera(scene, {0.0f, 0.1f, 0.0f}, {0.0f, -1.0f, 0.0f}, 0.3f);
-        const ChannelStats shadow = channelStats(render(*renderer_, scene, 16, 4, 35, 0).radiance, 1);
+        const ChannelStats shadow = channelStats(renderScene(*renderer_, scene, 16, 4, 35, 0).radiance, 1);
         QCOMPARE(shadow.maximum, 0.0);
         scene.settings.activeCamera = addOrthographicCamera(scene, {2.0f, 0.1f, 0.0f}, {0.0f, -1.0f, 0.0f}, 0.3f);
-        const ChannelStats open = channelStats(render(*renderer_, scene, 16, 4, 35, 0).radiance, 1);
+        const ChannelStats open = channelStats(renderScene(*renderer_, scene, 16, 4, 35, 0).radiance, 1);
         QVERIFY2(std::abs(open.minimum - 1.0 / kPi) < 1e-3 && std::abs(open.maximum - 1.0 / kPi) < 1e-3,
                  qPrintable(QString("beside the lamp %1 .. %2 vs 1/pi").arg(open.minimum).arg(open.maximum)));
     }
@@ -222,7 +213,7 @@ private slots:
         const glm::vec3 towardsSun(std::sin(0.3f), std::cos(0.3f), 0.0f); // clear of the lamp's 0.15 rad cone
         addSun(scene, -towardsSun, 683.0f, 0.1f);
         addOrthographicCamera(scene, {0.0f, 0.1f, 0.0f}, {0.0f, -1.0f, 0.0f}, 0.005f);
-        const ChannelStats image = channelStats(render(*renderer_, scene, 32, 32, 34, 0).radiance, 1);
+        const ChannelStats image = channelStats(renderScene(*renderer_, scene, 32, 32, 34, 0).radiance, 1);
 
         const twin::SurfaceMaterial m = twinMaterial(metallic, roughness, base);
         const float lampCone = twin::sphereConeOneMinusCos(0.3f, 4.0f);

@@ -2,6 +2,7 @@
 // Textured scenes built in code for the texture tests: PNG images encoded through OpenImageIO, a
 // square mesh with UVs and MikkTSpace-style tangents, and an orthographic camera looking straight
 // down at it so that image pixels map to UVs exactly (image right = +X = +u, image down = +Z = +v).
+#include "render_scene.h"
 #include "scene_builder.h"
 
 #include "renderer/offline_render.h"
@@ -92,17 +93,6 @@ inline NodeId addQuad(Scene& scene, const Mesh& mesh, glm::vec3 position = glm::
 // Looking down -Y from above, `halfSize` metres from the centre to each image edge.
 inline void addTopCamera(Scene& scene, float halfSize, float height = 1.0f) {
     addOrthographicCamera(scene, {0.0f, height, 0.0f}, {0.0f, -1.0f, 0.0f}, halfSize);
-}
-
-inline renderer::RenderOutput renderScene(renderer::OfflineRenderer& r, const Scene& scene, int size, int spp, std::uint32_t seed,
-                                          int bounces = 0) {
-    renderer::RenderRequest request;
-    request.width = size;
-    request.height = size;
-    request.spp = spp;
-    request.seed = seed;
-    request.bounces = bounces;
-    return r.render(scene, request);
 }
 
 // The value that nearest sampling must give over the whole of pixel (x, y), or nothing when the
