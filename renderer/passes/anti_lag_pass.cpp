@@ -7,6 +7,24 @@ namespace {
 
 int strata(int pixels) { return (pixels + antiLagStratum - 1) / antiLagStratum; }
 
+// What both stages read: this frame's luminance and surface, its motion, the previous frame's
+// surface and the anti-lag history (the same reprojection in both); the history update also reads
+// the gradient.
+std::vector<StageInput> historyInputs(const AntiLagInputs& in, const gl::RenderTarget& history,
+                                      const gl::RenderTarget* gradient = nullptr) {
+    std::vector<StageInput> inputs{{"uRadiance", in.gbuffer, radianceAttachment},
+                                   {"uDiffuseAlbedo", in.gbuffer, diffuseAlbedoAttachment},
+                                   {"uSpecularAlbedo", in.gbuffer, specularAlbedoAttachment},
+                                   {"uNormalDepth", in.gbuffer, normalDepthAttachment},
+                                   {"uObjectId", in.gbuffer, objectIdAttachment},
+                                   {"uMotion", in.motion, 0},
+                                   {"uPreviousNormalDepth", in.previousGBuffer, 0},
+                                   {"uPreviousObjectId", in.previousGBuffer, 1},
+                                   {"uHistory", history, 0}};
+    if (gradient) inputs.push_back({"uGradient", *gradient, 0});
+    return inputs;
+}
+
 } // namespace
 
 AntiLagPass::AntiLagPass(gl::ProgramCache& programs, int width, int height)
@@ -30,15 +48,7 @@ void AntiLagPass::measureGradient(const AntiLagInputs& in, const AntiLagSettings
     runStage(programs_, triangle_,
              {"reconstruction/anti_lag_gradient.frag.glsl",
               {"outGradient"},
-              {{"uRadiance", in.gbuffer, radianceAttachment},
-               {"uDiffuseAlbedo", in.gbuffer, diffuseAlbedoAttachment},
-               {"uSpecularAlbedo", in.gbuffer, specularAlbedoAttachment},
-               {"uNormalDepth", in.gbuffer, normalDepthAttachment},
-               {"uObjectId", in.gbuffer, objectIdAttachment},
-               {"uMotion", in.motion, 0},
-               {"uPreviousNormalDepth", in.previousGBuffer, 0},
-               {"uPreviousObjectId", in.previousGBuffer, 1},
-               {"uHistory", previous, 0}},
+              historyInputs(in, previous),
               [&](const gl::ShaderProgram& p) {
                   glUniform1i(p.uniform("uHistoryValid"), in.historyValid ? 1 : 0);
                   glUniform1i(p.uniform("uStratum"), antiLagStratum);
@@ -56,16 +66,7 @@ void AntiLagPass::updateHistory(const AntiLagInputs& in, const AntiLagSettings& 
     runStage(programs_, triangle_,
              {"reconstruction/anti_lag_history.frag.glsl",
               {"outMoments", "outAntiLag"},
-              {{"uRadiance", in.gbuffer, radianceAttachment},
-               {"uDiffuseAlbedo", in.gbuffer, diffuseAlbedoAttachment},
-               {"uSpecularAlbedo", in.gbuffer, specularAlbedoAttachment},
-               {"uNormalDepth", in.gbuffer, normalDepthAttachment},
-               {"uObjectId", in.gbuffer, objectIdAttachment},
-               {"uMotion", in.motion, 0},
-               {"uPreviousNormalDepth", in.previousGBuffer, 0},
-               {"uPreviousObjectId", in.previousGBuffer, 1},
-               {"uHistory", previous, 0},
-               {"uGradient", gradient_, 0}},
+              historyInputs(in, previous, &gradient_),
               [&](const gl::ShaderProgram& p) {
                   glUniform1i(p.uniform("uHistoryValid"), in.historyValid ? 1 : 0);
                   glUniform1i(p.uniform("uStratum"), antiLagStratum);

@@ -28,17 +28,14 @@ vec3 reprojectedMoments(ivec2 pixel, out float weight) {
     if (uHistoryValid == 0 || !insideImage(previous, vec2(size))) return sum;
     vec4 normalDepth = texelFetch(uNormalDepth, pixel, 0);
     float id = texelFetch(uObjectId, pixel, 0).x;
-    vec2 base = floor(previous - 0.5);
-    vec2 f = previous - 0.5 - base;
-    for (int j = 0; j <= 1; ++j)
-        for (int i = 0; i <= 1; ++i) {
-            ivec2 q = ivec2(base) + ivec2(i, j);
-            if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
-            if (!sameSurface(normalDepth, id, texelFetch(uPreviousNormalDepth, q, 0), texelFetch(uPreviousObjectId, q, 0).x)) continue;
-            float w = (i == 1 ? f.x : 1.0 - f.x) * (j == 1 ? f.y : 1.0 - f.y);
-            sum += w * texelFetch(uHistory, q, 0).xyz;
-            weight += w;
-        }
+    ivec2 taps[4];
+    float weights[4];
+    sameSurfaceTaps(previous, size, normalDepth, id, uPreviousNormalDepth, uPreviousObjectId, taps, weights);
+    for (int k = 0; k < 4; ++k) {
+        if (weights[k] == 0.0) continue;
+        sum += weights[k] * texelFetch(uHistory, taps[k], 0).xyz;
+        weight += weights[k];
+    }
     return weight >= 1.0e-3 ? sum / weight : vec3(0.0);
 }
 

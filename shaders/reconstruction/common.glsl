@@ -1,5 +1,6 @@
-// Helpers shared by the reconstruction stages: luminance, YCoCg, the history guard, and the
-// disocclusion test that compares this frame's surface with the previous frame's.
+// Helpers shared by the reconstruction stages: luminance, YCoCg, the history guard, the
+// disocclusion test that compares this frame's surface with the previous frame's, and the bilinear
+// taps of a reprojection that pass it.
 
 float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
 
@@ -31,4 +32,22 @@ bool sameSurface(vec4 normalDepth, float id, vec4 previousNormalDepth, float pre
 
 bool insideImage(vec2 position, vec2 size) {
     return all(greaterThanEqual(position, vec2(0.0))) && all(lessThan(position, size));
+}
+
+// The previous frame's four bilinear taps around `previous` (pixel coordinates) with their weights;
+// a tap outside the image or on another surface (sameSurface) has weight 0, so a disoccluded pixel
+// gets no history. SVGF's and anti-lag's reprojections both use it.
+void sameSurfaceTaps(vec2 previous, ivec2 size, vec4 normalDepth, float id, sampler2D previousNormalDepth,
+                     sampler2D previousObjectId, out ivec2 taps[4], out float weights[4]) {
+    vec2 base = floor(previous - 0.5);
+    vec2 f = previous - 0.5 - base;
+    for (int k = 0; k < 4; ++k) {
+        int i = k & 1, j = k >> 1;
+        ivec2 q = ivec2(base) + ivec2(i, j);
+        taps[k] = q;
+        weights[k] = 0.0;
+        if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
+        if (!sameSurface(normalDepth, id, texelFetch(previousNormalDepth, q, 0), texelFetch(previousObjectId, q, 0).x)) continue;
+        weights[k] = (i == 1 ? f.x : 1.0 - f.x) * (j == 1 ? f.y : 1.0 - f.y);
+    }
 }

@@ -89,21 +89,19 @@ void main() {
     float pastLength = 0.0;
     float weight = 0.0;
     if (uHistoryValid != 0 && insideImage(previous, vec2(textureSize(uRadiance, 0)))) {
-        vec2 base = floor(previous - 0.5);
-        vec2 f = previous - 0.5 - base;
-        ivec2 size = textureSize(uRadiance, 0);
-        for (int j = 0; j <= 1; ++j)
-            for (int i = 0; i <= 1; ++i) {
-                ivec2 q = ivec2(base) + ivec2(i, j);
-                if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
-                if (!sameSurface(normalDepth, id, texelFetch(uPreviousNormalDepth, q, 0), texelFetch(uPreviousObjectId, q, 0).x)) continue;
-                float w = (i == 1 ? f.x : 1.0 - f.x) * (j == 1 ? f.y : 1.0 - f.y);
-                historyDiffuse += w * finiteRadiance(texelFetch(uHistoryDiffuse, q, 0).rgb);
-                historySpecular += w * finiteRadiance(texelFetch(uHistorySpecular, q, 0).rgb);
-                moments += w * texelFetch(uHistoryMoments, q, 0);
-                pastLength += w * texelFetch(uHistoryLength, q, 0).x;
-                weight += w;
-            }
+        ivec2 taps[4];
+        float weights[4];
+        sameSurfaceTaps(previous, textureSize(uRadiance, 0), normalDepth, id, uPreviousNormalDepth, uPreviousObjectId, taps, weights);
+        for (int k = 0; k < 4; ++k) {
+            if (weights[k] == 0.0) continue;
+            float w = weights[k];
+            ivec2 q = taps[k];
+            historyDiffuse += w * finiteRadiance(texelFetch(uHistoryDiffuse, q, 0).rgb);
+            historySpecular += w * finiteRadiance(texelFetch(uHistorySpecular, q, 0).rgb);
+            moments += w * texelFetch(uHistoryMoments, q, 0);
+            pastLength += w * texelFetch(uHistoryLength, q, 0).x;
+            weight += w;
+        }
     }
     if (weight < 1.0e-3) {
         outDiffuse = vec4(diffuse, 0.0);
