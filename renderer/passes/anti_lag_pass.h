@@ -18,9 +18,8 @@ inline constexpr int antiLagStratum = 3; // pixels per side of a stratum: noise 
 
 struct AntiLagSettings {
     bool enabled = true;
-    float noiseLow = 2.0f;     // a stratum's change below this many standard errors is noise
-    float noiseHigh = 3.0f;    // above this many it is certain (the error is floored by the moments:
-                               // anti_lag_gradient.frag.glsl, so sparse-signal noise stays below)
+    float noiseLow = 3.0f;     // a stratum's change below this many standard errors is noise
+    float noiseHigh = 6.0f;    // above this many it is certain
     float fullChange = 0.4f;   // relative change of a stratum's mean that discards history entirely
     int minPixels = 6;         // of a stratum's 9 that must have history for a gradient
     float spikeSigmas = 4.0f;  // samples clamped to mean + this many sigmas before the test (fireflies)

@@ -17,21 +17,10 @@ uniform float uMinPixels;  // fewer pixels with history than this: no gradient
 
 out vec4 outGradient;
 
-// Var(sample) of one pixel if nothing changed: its current sample and its n history samples
-// (moments h) pooled, unbiased. It includes the rare bright samples a sparse signal is made of even
-// when none of this stratum's 9 differences happens to hold one.
-float pooledVariance(float l, vec3 h) {
-    float n = max(h.z, 1.0);
-    float w = 1.0 / (n + 1.0);
-    float mean = mix(h.x, l, w);
-    return max(mix(h.y, l * l, w) - mean * mean, 0.0) * (n + 1.0) / n * (1.0 + 1.0 / n);
-}
-
 void main() {
     ivec2 size = textureSize(uRadiance, 0);
     ivec2 origin = ivec2(gl_FragCoord.xy) * uStratum;
     float count = 0.0, sumD = 0.0, sumD2 = 0.0, sumL = 0.0, sumHistory = 0.0;
-    float predicted = 0.0; // sum of the pixels' Var(l - history mean) the moments predict
     for (int y = 0; y < uStratum; ++y)
         for (int x = 0; x < uStratum; ++x) {
             ivec2 p = origin + ivec2(x, y);
@@ -46,7 +35,6 @@ void main() {
             sumD2 += d * d;
             sumL += l;
             sumHistory += h.x;
-            predicted += pooledVariance(l, h);
         }
     if (count < uMinPixels) { // strata cut by silhouettes are too few samples to tell
         outGradient = vec4(0.0, 0.0, 0.0, count);
@@ -58,10 +46,7 @@ void main() {
     // does, however quiet the pixels were before.
     float meanD = sumD / count;
     float varianceD = max(sumD2 / count - meanD * meanD, 0.0) * count / (count - 1.0);
-    // Skewed 1-spp noise can also fool the spread: where the signal is sparse, a stratum's 9 samples
-    // are often all 0 this frame, each below its own history by about the same amount (no spread).
-    // The standard error is at least what the moments predict for these pixels.
-    float sigmas = abs(meanD) / sqrt(max(varianceD / count, predicted / (count * count)) + 1.0e-10);
+    float sigmas = abs(meanD) / sqrt(varianceD / count + 1.0e-10);
     float relative = abs(meanD) / max(max(sumL, sumHistory) / count, 1.0e-2);
     float lambda = smoothstep(uNoiseLow, uNoiseHigh, sigmas) * min(relative / uFullChange, 1.0);
     outGradient = vec4(lambda, sigmas, relative, count);
