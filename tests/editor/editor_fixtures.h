@@ -4,6 +4,7 @@
 
 #include <QString>
 #include <QTest>
+#include <QWidget>
 
 namespace glint::editor::test {
 
@@ -12,6 +13,14 @@ inline QString cornellBox() { return QStringLiteral(GLINT_RESOURCES_DIR "/scenes
 inline NodeId nodeNamed(const Document& document, const std::string& name) {
     auto found = document.scene().findByName(name);
     return found ? *found : NodeId{};
+}
+
+// The panel's field of type T by its accessible name (what screen readers announce), or null.
+template <class T>
+T* fieldNamed(QWidget& panel, const QString& name) {
+    for (T* field : panel.findChildren<T*>())
+        if (field->accessibleName() == name) return field;
+    return nullptr;
 }
 
 } // namespace glint::editor::test

@@ -25,13 +25,6 @@ using namespace glint::editor::test;
 
 namespace {
 
-template <class T>
-T* fieldNamed(QWidget& panel, const QString& name) {
-    for (T* field : panel.findChildren<T*>())
-        if (field->accessibleName() == name) return field;
-    return nullptr;
-}
-
 const Material& materialNamed(const Document& document, const std::string& name) {
     for (const auto& [id, material] : document.scene().materials)
         if (material.name == name) return material;

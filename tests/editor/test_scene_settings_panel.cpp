@@ -20,17 +20,6 @@ using namespace glint;
 using namespace glint::editor;
 using namespace glint::editor::test;
 
-namespace {
-
-template <class T>
-T* fieldNamed(QWidget& panel, const QString& name) {
-    for (T* field : panel.findChildren<T*>())
-        if (field->accessibleName() == name) return field;
-    return nullptr;
-}
-
-} // namespace
-
 class TestSceneSettingsPanel : public QObject {
     Q_OBJECT
 private slots:
