@@ -1,6 +1,7 @@
 // The environment map: orientation as CONTRACTS.md "Environment" says, rotation, and importance
 // sampling with MIS giving the irradiance integral. The HDR is tests/data/env (see its LICENSES.md).
 #include "image_stats.h"
+#include "render_scene.h"
 #include "scene_builder.h"
 
 #include "renderer/gpu_scene/environment_image.h"
@@ -38,12 +39,7 @@ class TestRenderEnvironment : public QObject {
     std::unique_ptr<renderer::OfflineRenderer> renderer_;
 
     renderer::RenderOutput render(const Scene& scene, int size, int spp, std::uint32_t seed, int bounces) {
-        renderer::RenderRequest request;
-        request.width = size;
-        request.height = size;
-        request.spp = spp;
-        request.seed = seed;
-        request.bounces = bounces;
+        renderer::RenderRequest request = test::stillRequest(size, spp, seed, bounces);
         request.envFile = hdr;
         return renderer_->render(scene, request);
     }

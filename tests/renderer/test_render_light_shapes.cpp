@@ -2,6 +2,7 @@
 // uniform radiance I / (pi r^2), sampled by the cone they subtend) and a sun with an angular
 // diameter, whose disk camera rays see.
 #include "image_stats.h"
+#include "render_scene.h"
 #include "scene_builder.h"
 
 #include "renderer/offline_render.h"
@@ -27,13 +28,7 @@ NodeId addPointLight(Scene& scene, glm::vec3 position, float candela, float radi
 }
 
 renderer::RenderOutput render(renderer::OfflineRenderer& r, const Scene& scene, int size, int spp, std::uint32_t seed) {
-    renderer::RenderRequest request;
-    request.width = size;
-    request.height = size;
-    request.spp = spp;
-    request.seed = seed;
-    request.bounces = 0;
-    return r.render(scene, request);
+    return test::renderScene(r, scene, size, spp, seed);
 }
 
 } // namespace

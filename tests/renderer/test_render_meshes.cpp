@@ -3,6 +3,7 @@
 // and the Cornell box scene renders (a PNG is left in the test's temp dir).
 #include "image_stats.h"
 #include "mesh_builder.h"
+#include "render_scene.h"
 #include "scene_builder.h"
 
 #include "renderer/offline_render.h"
@@ -43,13 +44,7 @@ class TestRenderMeshes : public QObject {
     std::unique_ptr<renderer::OfflineRenderer> renderer_;
 
     renderer::RenderOutput render(const Scene& scene, int size, int spp, std::uint32_t seed, int bounces) {
-        renderer::RenderRequest request;
-        request.width = size;
-        request.height = size;
-        request.spp = spp;
-        request.seed = seed;
-        request.bounces = bounces;
-        return renderer_->render(scene, request);
+        return test::renderScene(*renderer_, scene, size, spp, seed, bounces);
     }
 
 private slots:

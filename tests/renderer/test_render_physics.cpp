@@ -1,6 +1,7 @@
 // Known-answer renders: white furnaces, a Lambert plane under the sun, a mirror and a glass slab.
 // Each test states its size, spp, seed and tolerance. Scenes are built in code.
 #include "image_stats.h"
+#include "render_scene.h"
 #include "scene_builder.h"
 
 #include "renderer/offline_render.h"
@@ -19,12 +20,7 @@ class TestRenderPhysics : public QObject {
     std::unique_ptr<renderer::OfflineRenderer> renderer_;
 
     renderer::RenderOutput render(const Scene& scene, int size, int spp, std::uint32_t seed, int bounces) {
-        renderer::RenderRequest request;
-        request.width = size;
-        request.height = size;
-        request.spp = spp;
-        request.seed = seed;
-        request.bounces = bounces;
+        renderer::RenderRequest request = test::stillRequest(size, spp, seed, bounces);
         request.tonemapper = Tonemapper::None;
         return renderer_->render(scene, request);
     }

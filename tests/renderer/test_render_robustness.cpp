@@ -1,6 +1,7 @@
 // Stress scenes must never give a NaN, an Inf or a negative pixel: degenerate shapes and singular
 // transforms, grazing angles, coordinates near 1e5 (no acne, no leaks), environments with huge values.
 #include "image_stats.h"
+#include "render_scene.h"
 #include "scene_builder.h"
 
 #include "renderer/offline_render.h"
@@ -44,12 +45,7 @@ class TestRenderRobustness : public QObject {
     std::unique_ptr<renderer::OfflineRenderer> renderer_;
 
     renderer::RenderOutput render(const Scene& scene, int spp, std::uint32_t seed, std::filesystem::path env = {}) {
-        renderer::RenderRequest request;
-        request.width = 32;
-        request.height = 32;
-        request.spp = spp;
-        request.seed = seed;
-        request.bounces = 4;
+        renderer::RenderRequest request = test::stillRequest(32, spp, seed, 4);
         request.envFile = std::move(env);
         return renderer_->render(scene, request);
     }

@@ -1,6 +1,7 @@
 // Determinism (same seed: identical bits; another seed: different noise) and convergence (mean
 // squared error against a reference falls like 1/spp, with no bias floor).
 #include "image_stats.h"
+#include "render_scene.h"
 #include "scene_builder.h"
 
 #include "renderer/offline_render.h"
@@ -52,12 +53,7 @@ class TestRenderStatistics : public QObject {
     std::unique_ptr<renderer::OfflineRenderer> renderer_;
 
     std::vector<float> render(const Scene& scene, int size, int spp, std::uint32_t seed, bool independent = false) {
-        renderer::RenderRequest request;
-        request.width = size;
-        request.height = size;
-        request.spp = spp;
-        request.seed = seed;
-        request.bounces = 3;
+        renderer::RenderRequest request = test::stillRequest(size, spp, seed, 3);
         request.independentSampler = independent;
         return renderer_->render(scene, request).radiance;
     }
