@@ -2,13 +2,12 @@
 
 #include "scene_merge.h"
 
-#include "scene/import/import.h"
-#include "scene/io/scene_io.h"
 
 #include <QFileInfo>
 
 #include <algorithm>
 #include <exception>
+#include <memory>
 
 namespace glint::editor {
 namespace {
@@ -21,20 +20,12 @@ QStringList warningLines(const Warnings& warnings) {
     return lines;
 }
 
-bool isNativeScene(const QString& path) {
-    const QString lower = path.toLower();
-    return lower.endsWith(".gltf") || lower.endsWith(".glb") || lower.endsWith(".glint.json");
-}
-
-LoadResult readAnyScene(const QString& path) {
-    if (isNativeScene(path)) return loadScene(toPath(path));
-    if (isImportableFile(toPath(path))) return importScene(toPath(path));
-    throw FileError(path.toStdString(), "unsupported-format", "not a scene file Glint can open or import");
-}
-
 } // namespace
 
 Document::Document(QObject* parent) : QObject(parent), history_(scene_) {
+    connect(&loader_, &SceneLoader::progress, this, &Document::loadProgress);
+    connect(&loader_, &SceneLoader::finished, this, &Document::onLoaded);
+    connect(&loader_, &SceneLoader::failed, this, &Document::onLoadFailed);
     changeListener_ = history_.addChangeListener([this](const ChangeSet& c) { onHistoryChanged(c); });
     indexListener_ = history_.addIndexListener([this](std::size_t) { onHistoryIndex(); });
 }
@@ -115,6 +106,7 @@ void Document::setCurrentTime(double seconds) {
 }
 
 void Document::newScene() {
+    cancelLoading();
     replaceScene(Scene{});
     recovered_ = false;
     onHistoryIndex();
@@ -124,15 +116,9 @@ void Document::newScene() {
 }
 
 QString Document::open(const QString& path) {
+    cancelLoading();
     try {
-        LoadResult result = readAnyScene(path);
-        replaceScene(std::move(result.scene));
-        recovered_ = false;
-        onHistoryIndex();
-        // Imported formats are not saved back in place: the document starts untitled.
-        path_ = isNativeScene(path) ? QFileInfo(path).absoluteFilePath() : QString();
-        reportWarnings(warningLines(result.warnings));
-        emit fileChanged();
+        applyOpened(path, readSceneFile(path, importOptions_));
         return {};
     } catch (const std::exception& e) {
         return QString::fromStdString(e.what());
@@ -140,18 +126,32 @@ QString Document::open(const QString& path) {
 }
 
 QString Document::recover(const QString& autosaveFile, const QString& originalPath) {
+    cancelLoading();
     try {
-        LoadResult result = loadScene(toPath(autosaveFile));
-        replaceScene(std::move(result.scene));
-        path_ = originalPath.isEmpty() ? QString() : QFileInfo(originalPath).absoluteFilePath();
-        recovered_ = true;
-        onHistoryIndex();
-        reportWarnings(warningLines(result.warnings));
-        emit fileChanged();
+        applyRecovered(originalPath, readSceneFile(autosaveFile, importOptions_));
         return {};
     } catch (const std::exception& e) {
         return QString::fromStdString(e.what());
     }
+}
+
+void Document::applyOpened(const QString& path, LoadResult result) {
+    replaceScene(std::move(result.scene));
+    recovered_ = false;
+    onHistoryIndex();
+    // Imported formats are not saved back in place: the document starts untitled.
+    path_ = isNativeScene(path) ? QFileInfo(path).absoluteFilePath() : QString();
+    reportWarnings(warningLines(result.warnings));
+    emit fileChanged();
+}
+
+void Document::applyRecovered(const QString& original, LoadResult result) {
+    replaceScene(std::move(result.scene));
+    path_ = original.isEmpty() ? QString() : QFileInfo(original).absoluteFilePath();
+    recovered_ = true;
+    onHistoryIndex();
+    reportWarnings(warningLines(result.warnings));
+    emit fileChanged();
 }
 
 QString Document::save() {
@@ -180,27 +180,120 @@ QString Document::saveAs(const QString& path) {
 }
 
 QString Document::importFile(const QString& path) {
+    cancelLoading();
     try {
-        LoadResult result = readAnyScene(path);
-        std::vector<CommandPtr> commands = mergeCommands(scene_, result.scene);
-        const NodeId firstNew = scene_.peekNextNodeId();
-        beginMacro(tr("Import %1").arg(QFileInfo(path).fileName()));
-        try {
-            for (CommandPtr& command : commands) push(std::move(command));
-        } catch (...) {
-            endMacro();
-            throw;
-        }
-        endMacro();
-        std::vector<NodeId> added;
-        for (NodeId root : scene_.roots())
-            if (root >= firstNew) added.push_back(root);
-        setSelection(added);
-        reportWarnings(warningLines(result.warnings));
+        applyImported(path, readSceneFile(path, importOptions_));
         return {};
     } catch (const std::exception& e) {
         return QString::fromStdString(e.what());
     }
+}
+
+// Throws when a command does; the macro is closed either way, so nothing half-merged stays open.
+void Document::applyImported(const QString& path, LoadResult result) {
+    std::vector<CommandPtr> commands = mergeCommands(scene_, result.scene);
+    const NodeId firstNew = scene_.peekNextNodeId();
+    beginMacro(tr("Import %1").arg(QFileInfo(path).fileName()));
+    try {
+        for (CommandPtr& command : commands) push(std::move(command));
+    } catch (...) {
+        endMacro();
+        throw;
+    }
+    endMacro();
+    std::vector<NodeId> added;
+    for (NodeId root : scene_.roots())
+        if (root >= firstNew) added.push_back(root);
+    setSelection(added);
+    reportWarnings(warningLines(result.warnings));
+}
+
+void Document::setImportOptions(const ImportOptions& options) {
+    importOptions_ = options;
+    loader_.setImportOptions(options);
+}
+
+void Document::startOpen(const QString& path) { startLoad({LoadKind::Open, path, {}}); }
+
+void Document::startRecover(const QString& autosaveFile, const QString& originalPath) {
+    startLoad({LoadKind::Recover, autosaveFile, originalPath});
+}
+
+void Document::startImport(const QString& path) {
+    if (inFlight_) {
+        queued_.push_back({LoadKind::Import, path, {}});
+        return;
+    }
+    startLoad({LoadKind::Import, path, {}});
+}
+
+void Document::startLoad(LoadRequest request) {
+    const bool wasLoading = isLoading();
+    if (request.kind != LoadKind::Import) {
+        // A new document supersedes everything: the load in flight and the imports queued for
+        // the document it would have replaced.
+        queued_.clear();
+        if (inFlight_) emit loadCancelled(inFlight_->kind, inFlight_->shownPath());
+    }
+    inFlight_ = request;
+    revisionAtLoad_ = revision_;
+    loader_.start(request.file);
+    emit loadStarted(request.kind, request.shownPath());
+    if (!wasLoading) emit loadingChanged(true);
+}
+
+void Document::cancelLoading() {
+    if (!inFlight_) return;
+    const LoadRequest request = *inFlight_;
+    loader_.cancel();
+    inFlight_.reset();
+    queued_.clear();
+    emit loadCancelled(request.kind, request.shownPath());
+    emit loadingChanged(false);
+}
+
+void Document::startNext() {
+    if (queued_.empty()) {
+        emit loadingChanged(false);
+        return;
+    }
+    LoadRequest next = std::move(queued_.front());
+    queued_.pop_front();
+    inFlight_ = next;
+    revisionAtLoad_ = revision_;
+    loader_.start(next.file);
+    emit loadStarted(next.kind, next.shownPath());
+}
+
+void Document::onLoaded() {
+    std::unique_ptr<LoadResult> result = loader_.take();
+    const LoadRequest request = *inFlight_;
+    inFlight_.reset();
+    // The prompt about unsaved changes came before the load; edits made since then get their own.
+    const bool replaces = request.kind != LoadKind::Import;
+    if (replaces && revision_ != revisionAtLoad_ && isModified() && confirmReplace_ && !confirmReplace_()) {
+        emit loadCancelled(request.kind, request.shownPath());
+        startNext();
+        return;
+    }
+    QString error;
+    try {
+        if (request.kind == LoadKind::Open) applyOpened(request.file, std::move(*result));
+        else if (request.kind == LoadKind::Recover) applyRecovered(request.original, std::move(*result));
+        else applyImported(request.file, std::move(*result));
+    } catch (const std::exception& e) {
+        error = QString::fromStdString(e.what());
+    }
+    if (error.isEmpty()) emit loaded(request.kind, request.shownPath());
+    else emit loadFailed(request.kind, request.shownPath(), error);
+    startNext();
+}
+
+void Document::onLoadFailed(const QString& message) {
+    const LoadRequest request = *inFlight_;
+    inFlight_.reset();
+    emit loadFailed(request.kind, request.shownPath(), message);
+    startNext();
 }
 
 QString Document::displayName() const {
@@ -210,6 +303,7 @@ QString Document::displayName() const {
 }
 
 void Document::onHistoryChanged(const ChangeSet& changes) {
+    ++revision_;
     if (changes.has(Change::Structure)) pruneSelection();
     emit changed(changes);
 }

@@ -3,6 +3,11 @@
 // Every edit goes through push() (a Command), so every view follows the scene through the
 // changed() signal instead of editing it directly. Selection and the current time are editor
 // state, not document content: they never dirty the file.
+//
+// Files are read on a worker (SceneLoader): the document keeps its scene until the new one
+// arrives, and a failed or cancelled load leaves it untouched (scene, file path, history).
+#include "scene_loader.h"
+
 #include "scene/core/scene.h"
 #include "scene/history/command.h"
 #include "scene/history/history.h"
@@ -11,7 +16,11 @@
 #include <QString>
 #include <QStringList>
 
+#include <cstdint>
+#include <deque>
+#include <functional>
 #include <map>
+#include <optional>
 #include <vector>
 
 namespace glint::editor {
@@ -51,7 +60,9 @@ public:
     void setCurrentTime(double seconds);
 
     // --- files: each returns an empty string on success, a message for people otherwise ----
-    void newScene();
+    // open, importFile and recover read on the calling thread (tests); the editor uses the
+    // start* forms below. Each cancels the background loads first.
+    void newScene(); // cancels the background loads
     QString open(const QString& path);
     QString save();
     QString saveAs(const QString& path);
@@ -59,6 +70,23 @@ public:
     // Loads an autosaved copy in place of `originalPath` (empty: untitled); the document stays
     // modified until it is saved, since the copy is newer than the file.
     QString recover(const QString& autosaveFile, const QString& originalPath);
+
+    // --- the same, read in the background ---------------------------------------------------
+    // An open (or recovery) supersedes every load in flight or queued; an import queues behind
+    // the load in flight. Each ends in exactly one of loaded, loadFailed or loadCancelled.
+    enum class LoadKind { Open, Import, Recover };
+    Q_ENUM(LoadKind)
+    void startOpen(const QString& path);
+    void startImport(const QString& path);
+    void startRecover(const QString& autosaveFile, const QString& originalPath);
+    void cancelLoading(); // the load in flight and the queued ones
+    bool isLoading() const { return inFlight_.has_value(); }
+    LoadKind loadingKind() const { return inFlight_ ? inFlight_->kind : LoadKind::Open; }
+    // Where the import worker is and its limits (tests name the worker they built).
+    void setImportOptions(const ImportOptions& options);
+    // Asked before a finished open replaces a document edited since the open started (its
+    // unsaved-changes prompt came before those edits); false drops the opened scene.
+    void setReplaceConfirmation(std::function<bool()> confirm) { confirmReplace_ = std::move(confirm); }
 
     const QString& filePath() const { return path_; }
     QString displayName() const;  // the scene name, else the file name, else "Untitled"
@@ -78,8 +106,28 @@ signals:
     void fileChanged();
     void cleanChanged(bool clean);
     void warningsReported(const QStringList& lines);
+    // Background loads. `path` is the file read (for a recovery: the file the copy stands for).
+    void loadStarted(glint::editor::Document::LoadKind kind, const QString& path);
+    void loadProgress(const QString& stage);
+    void loaded(glint::editor::Document::LoadKind kind, const QString& path);
+    void loadFailed(glint::editor::Document::LoadKind kind, const QString& path, const QString& message);
+    void loadCancelled(glint::editor::Document::LoadKind kind, const QString& path);
+    void loadingChanged(bool loading);
 
 private:
+    struct LoadRequest {
+        LoadKind kind = LoadKind::Open;
+        QString file;     // what is read
+        QString original; // a recovery: the file the copy stands for
+        QString shownPath() const { return kind == LoadKind::Recover ? original : file; }
+    };
+    void startLoad(LoadRequest request);
+    void startNext();
+    void onLoaded();
+    void onLoadFailed(const QString& message);
+    void applyOpened(const QString& path, LoadResult result);
+    void applyRecovered(const QString& original, LoadResult result);
+    void applyImported(const QString& path, LoadResult result);
     void onHistoryChanged(const ChangeSet& changes);
     void onHistoryIndex();
     void replaceScene(Scene scene);
@@ -101,6 +149,13 @@ private:
     std::vector<NodeId> macroSelection_;
     History::ListenerId changeListener_ = 0;
     History::ListenerId indexListener_ = 0;
+    std::uint64_t revision_ = 0; // counts every change, to tell edits made while a load ran
+    ImportOptions importOptions_;
+    SceneLoader loader_;
+    std::optional<LoadRequest> inFlight_;
+    std::deque<LoadRequest> queued_;
+    std::uint64_t revisionAtLoad_ = 0;
+    std::function<bool()> confirmReplace_;
 };
 
 } // namespace glint::editor

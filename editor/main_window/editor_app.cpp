@@ -53,7 +53,7 @@ int runEditor(int argc, char** argv, const char* version) {
     MainWindow window(options);
     window.show();
     const bool recovered = window.offerRecovery();
-    if (!recovered && !parser.positionalArguments().isEmpty()) window.openFile(parser.positionalArguments().first());
+    if (!recovered && !parser.positionalArguments().isEmpty()) window.beginOpen(parser.positionalArguments().first());
     return app.exec();
 }
 

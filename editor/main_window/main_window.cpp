@@ -1,6 +1,7 @@
 #include "main_window.h"
 
 #include "autosave.h"
+#include "load_progress.h"
 #include "recent_files.h"
 #include "theme.h"
 
@@ -58,6 +59,7 @@ MainWindow::MainWindow(Options options, QWidget* parent) : QMainWindow(parent), 
     connect(document_, &Document::selectionChanged, this, &MainWindow::updateUndoActions);
     connect(document_, &Document::warningsReported, log_, &LogPanel::warnings);
     connect(autosave_, &Autosave::failed, this, [this](const QString& m) { log_->warning(tr("Autosave failed: %1").arg(m)); });
+    connectLoading();
     updateTitle();
     updateStatus();
     updateUndoActions();
@@ -196,6 +198,8 @@ void MainWindow::createStatusBar() {
     statusBar()->addWidget(selectionLabel_);
     statusBar()->addWidget(sceneLabel_);
     statusBar()->addPermanentWidget(renderLabel_);
+    loadProgress_ = new LoadProgress(this);
+    statusBar()->addPermanentWidget(loadProgress_);
 }
 
 void MainWindow::report(const QString& message) {
@@ -210,30 +214,6 @@ bool MainWindow::maybeSave() {
         QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
     if (answer == QMessageBox::Cancel) return false;
     if (answer == QMessageBox::Save) return save();
-    return true;
-}
-
-bool MainWindow::openFile(const QString& path) {
-    const QString error = document_->open(path);
-    if (!error.isEmpty()) {
-        report(tr("Cannot open %1: %2").arg(path, error));
-        QMessageBox::warning(this, tr("Open"), error);
-        return false;
-    }
-    RecentFiles().add(path);
-    rebuildRecentMenu();
-    log_->info(tr("Opened %1").arg(path));
-    statusBar()->showMessage(tr("Opened %1").arg(QFileInfo(path).fileName()), 4000);
-    return true;
-}
-
-bool MainWindow::importFile(const QString& path) {
-    const QString error = document_->importFile(path);
-    if (!error.isEmpty()) {
-        report(tr("Cannot import %1: %2").arg(path, error));
-        return false;
-    }
-    log_->info(tr("Imported %1").arg(path));
     return true;
 }
 
@@ -279,12 +259,7 @@ bool MainWindow::offerRecovery() {
             return false;
         }
     }
-    const QString error = document_->recover(leftover->copy, leftover->original);
-    if (!error.isEmpty()) {
-        report(tr("Cannot recover the autosaved copy: %1").arg(error));
-        return false;
-    }
-    log_->info(tr("Recovered the autosaved copy of %1").arg(name));
+    document_->startRecover(leftover->copy, leftover->original);
     return true;
 }
 
@@ -294,6 +269,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
         return;
     }
     saveLayout();
+    document_->cancelLoading(); // an import's child is killed; nothing arrives after the window
     autosave_->discard(); // a normal exit: nothing to recover next time
     event->accept();
 }
@@ -315,9 +291,9 @@ void MainWindow::openDropped(const QList<QUrl>& urls, bool merge) {
         const QString lower = path.toLower();
         const bool native = lower.endsWith(".gltf") || lower.endsWith(".glb") || lower.endsWith(".glint.json");
         if (native && !merge) {
-            if (maybeSave()) openFile(path);
+            if (maybeSave()) beginOpen(path);
         } else {
-            importFile(path);
+            beginImport(path); // after an open of the same drop: merged into the opened scene
         }
     }
 }

@@ -2,6 +2,7 @@
 // The editor's main window: the viewport in the middle, dockable panels around it (outliner,
 // properties, scene settings, undo history, log), menus, a toolbar and a status bar. The window
 // owns the Document; every panel edits it through commands and follows its signals.
+#include "editor/document/document.h"
 #include "editor/preferences/preferences.h"
 
 #include <QMainWindow>
@@ -16,8 +17,8 @@ class QMenu;
 namespace glint::editor {
 
 class Autosave;
-class Document;
 class HistoryPanel;
+class LoadProgress;
 class LogPanel;
 class OutlinerPanel;
 class PropertiesPanel;
@@ -50,12 +51,21 @@ public:
     // Every action with a shortcut the keymap may change.
     QList<QAction*> keymapActions() const;
 
-    bool openFile(const QString& path);  // reports failures in the log and a message box
+    // Reads the file in the background (Document::startOpen): the window stays usable, the status
+    // bar shows progress with a Cancel button, and the outcome is reported when it arrives
+    // (failures in the log and a message box). Every way of opening a file goes through these.
+    void beginOpen(const QString& path);
+    void beginImport(const QString& path);
+    // The same, reading on the calling thread and reporting alike; returns whether it worked
+    // (tests and scripts that need the document at once).
+    bool openFile(const QString& path);
     bool importFile(const QString& path);
     bool save();
     bool saveAs(const QString& path = {});
-    // Offers a copy an earlier session left behind; returns whether it was recovered.
+    // Offers a copy an earlier session left behind; returns whether its recovery started (it is
+    // read in the background like an open).
     bool offerRecovery();
+    LoadProgress& loadProgress() { return *loadProgress_; }
     // What dropping files does: a scene file replaces the document (after asking about unsaved
     // changes); with `merge`, or for formats Glint only imports, files are merged into it.
     void openDropped(const QList<QUrl>& urls, bool merge);
@@ -87,6 +97,12 @@ private:
     void updateUndoActions();
     void rebuildRecentMenu();
     void report(const QString& message);
+    void connectLoading();
+    void onLoadStarted(Document::LoadKind kind, const QString& path);
+    void onLoaded(Document::LoadKind kind, const QString& path);
+    void onLoadFailed(Document::LoadKind kind, const QString& path, const QString& message);
+    void onLoadCancelled(Document::LoadKind kind, const QString& path);
+    void updateLoadActions();
     // `text` is the untranslated source (QT_TR_NOOP): the action follows language changes.
     QAction* makeAction(const QString& name, const char* text, const QKeySequence& shortcut = {});
     void retranslate(); // after a language change: kept texts, then the ones built from data
@@ -106,6 +122,8 @@ private:
     QLabel* selectionLabel_ = nullptr;
     QLabel* sceneLabel_ = nullptr;
     QLabel* renderLabel_ = nullptr;
+    LoadProgress* loadProgress_ = nullptr;
+    QAction* import_ = nullptr;
     QList<QAction*> actions_;
     QList<QAction*> viewportActions_;
     QAction* undo_ = nullptr;

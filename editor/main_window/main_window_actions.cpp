@@ -66,14 +66,14 @@ void MainWindow::createActions() {
         if (!maybeSave()) return;
         const QString path = QFileDialog::getOpenFileName(this, tr("Open scene"), {},
                                                           tr("Scenes (*.gltf *.glb *.glint.json);;All files (*)"));
-        if (!path.isEmpty()) openFile(path);
+        if (!path.isEmpty()) beginOpen(path);
     });
-    auto* import = makeAction("file.import", QT_TR_NOOP("&Import..."), QKeySequence(Qt::CTRL | Qt::Key_I));
+    auto* import = import_ = makeAction("file.import", QT_TR_NOOP("&Import..."), QKeySequence(Qt::CTRL | Qt::Key_I));
     connect(import, &QAction::triggered, this, [this] {
         const QString path = QFileDialog::getOpenFileName(
             this, tr("Import into the scene"), {},
             tr("Scenes and models (*.gltf *.glb *.obj *.ply *.stl *.fbx *.dae *.3ds);;All files (*)"));
-        if (!path.isEmpty()) importFile(path);
+        if (!path.isEmpty()) beginImport(path);
     });
     auto* saveAction = makeAction("file.save", QT_TR_NOOP("&Save"), QKeySequence::Save);
     saveAction->setIcon(s->standardIcon(QStyle::SP_DialogSaveButton));
@@ -226,7 +226,7 @@ void MainWindow::rebuildRecentMenu() {
     const QStringList files = RecentFiles().list();
     for (const QString& path : files) {
         recentMenu_->addAction(QFileInfo(path).fileName(), this, [this, path] {
-            if (maybeSave()) openFile(path);
+            if (maybeSave()) beginOpen(path);
         })->setToolTip(path);
     }
     if (!files.isEmpty()) recentMenu_->addSeparator();

@@ -34,10 +34,13 @@ private:
     int fd_;
 };
 
-int millisecondsUntil(Clock::time_point deadline) {
+// With a cancel flag the wait is cut into short slices, so a cancel is seen within one of them.
+int millisecondsUntil(Clock::time_point deadline, const std::atomic<bool>* cancel) {
     auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
-    return left <= 0 ? 0 : static_cast<int>(std::min<long long>(left, 60'000));
+    return left <= 0 ? 0 : static_cast<int>(std::min<long long>(left, cancel ? 50 : 60'000));
 }
+
+bool cancelled(const std::atomic<bool>* cancel) { return cancel && cancel->load(); }
 
 // The child starts with an empty signal mask and default handlers, whatever the caller's threads
 // block or ignore (Qt, for one, changes SIGPIPE).
@@ -68,13 +71,14 @@ int spawnWithStdout(const std::vector<std::string>& argv, int stdoutFd, pid_t& p
     return error;
 }
 
-enum class ReadEnd { EndOfFile, TimedOut, TooLarge };
+enum class ReadEnd { EndOfFile, TimedOut, TooLarge, Cancelled };
 
-ReadEnd readUntilEnd(int fd, Clock::time_point deadline, std::uint64_t maxBytes, std::vector<std::uint8_t>& out) {
+ReadEnd readUntilEnd(int fd, Clock::time_point deadline, const ChildLimits& limits, std::vector<std::uint8_t>& out) {
     std::vector<std::uint8_t> chunk(1 << 16);
     for (;;) {
+        if (cancelled(limits.cancel)) return ReadEnd::Cancelled;
         pollfd p{fd, POLLIN, 0};
-        int ready = ::poll(&p, 1, millisecondsUntil(deadline));
+        int ready = ::poll(&p, 1, millisecondsUntil(deadline, limits.cancel));
         if (ready < 0 && errno == EINTR) continue;
         if (ready == 0) {
             if (Clock::now() >= deadline) return ReadEnd::TimedOut;
@@ -83,18 +87,18 @@ ReadEnd readUntilEnd(int fd, Clock::time_point deadline, std::uint64_t maxBytes,
         ssize_t n = ::read(fd, chunk.data(), chunk.size());
         if (n < 0 && (errno == EINTR || errno == EAGAIN)) continue;
         if (n <= 0) return ReadEnd::EndOfFile;
-        if (out.size() + static_cast<std::uint64_t>(n) > maxBytes) return ReadEnd::TooLarge;
+        if (out.size() + static_cast<std::uint64_t>(n) > limits.maxOutputBytes) return ReadEnd::TooLarge;
         out.insert(out.end(), chunk.begin(), chunk.begin() + n);
     }
 }
 
 // The child may close its output and still linger: give it until the deadline to exit.
-bool reapBefore(pid_t pid, Clock::time_point deadline, int& status) {
+bool reapBefore(pid_t pid, Clock::time_point deadline, const std::atomic<bool>* cancel, int& status) {
     for (;;) {
         pid_t done = ::waitpid(pid, &status, WNOHANG);
         if (done == pid) return true;
         if (done < 0 && errno != EINTR) return true; // already reaped elsewhere: nothing left to wait for
-        if (Clock::now() >= deadline) return false;
+        if (Clock::now() >= deadline || cancelled(cancel)) return false;
         std::this_thread::sleep_for(std::chrono::milliseconds(2));
     }
 }
@@ -134,15 +138,16 @@ ChildOutcome runChild(const std::vector<std::string>& argv, const ChildLimits& l
     writeEnd.reset(); // so that the child's exit ends our read with EOF
 
     std::vector<std::uint8_t> output;
-    ReadEnd end = readUntilEnd(readEnd.get(), deadline, limits.maxOutputBytes, output);
+    ReadEnd end = readUntilEnd(readEnd.get(), deadline, limits, output);
     if (end != ReadEnd::EndOfFile) {
         killAndReap(pid);
+        if (end == ReadEnd::Cancelled) return {ChildOutcome::Kind::Cancelled, 0, {}};
         return {end == ReadEnd::TimedOut ? ChildOutcome::Kind::TimedOut : ChildOutcome::Kind::OutputTooLarge, 0, {}};
     }
     int status = 0;
-    if (!reapBefore(pid, deadline, status)) {
+    if (!reapBefore(pid, deadline, limits.cancel, status)) {
         killAndReap(pid);
-        return {ChildOutcome::Kind::TimedOut, 0, {}};
+        return {cancelled(limits.cancel) ? ChildOutcome::Kind::Cancelled : ChildOutcome::Kind::TimedOut, 0, {}};
     }
     return outcomeFromStatus(status, std::move(output));
 }

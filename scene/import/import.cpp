@@ -57,6 +57,8 @@ std::vector<std::string> workerCommand(const std::filesystem::path& worker, cons
         throw FileError(name, "importer-timeout", "importer timed out after " + std::to_string(options.timeout.count()) + " ms");
     case Kind::OutputTooLarge:
         throw FileError(name, "importer-failed", "importer result is larger than " + std::to_string(options.maxResultBytes) + " bytes");
+    case Kind::Cancelled:
+        throw FileError(name, "import-cancelled", "import cancelled");
     case Kind::SpawnFailed:
         throw FileError(name, "worker-not-found", std::string("cannot start the importer: ") + std::strerror(outcome.code));
     case Kind::Exited:
@@ -85,7 +87,7 @@ LoadResult importScene(const std::filesystem::path& file, const ImportOptions& o
     checkInputFile(file, options);
     const std::filesystem::path worker = resolveWorker(name, options);
 
-    ChildOutcome outcome = runChild(workerCommand(worker, file, options), {options.timeout, options.maxResultBytes});
+    ChildOutcome outcome = runChild(workerCommand(worker, file, options), {options.timeout, options.maxResultBytes, options.cancel});
     std::optional<WorkerReply> reply;
     if (outcome.kind == ChildOutcome::Kind::Exited) reply = decodeWorkerReply(outcome.output);
     if (!reply) throwForOutcome(name, outcome, options);

@@ -7,6 +7,7 @@
 // materials) and sends it back as GLB bytes, which are parsed with the glTF reader.
 #include "scene/io/scene_io.h"
 
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
@@ -22,6 +23,9 @@ struct ImportOptions {
     std::uint64_t maxWorkerMemoryBytes = 8ull << 30;  // the worker's address space; 0 = no limit
     std::uint64_t maxTriangles = 64'000'000;          // over the whole converted scene
     LoadOptions load;                                 // for parsing the worker's GLB
+    // Set from another thread to stop the import: the worker is killed at once (within ~50 ms)
+    // and importScene throws FileError "import-cancelled".
+    const std::atomic<bool>* cancel = nullptr;
 };
 
 // The lower-case extensions importScene accepts: ".obj", ".ply", ".stl", ".fbx", ".dae", ".3ds".
@@ -29,7 +33,7 @@ bool isImportableFile(const std::filesystem::path& file);
 
 // Imports FILE in a child process. Throws FileError naming the file: "not-found", "empty-file",
 // "too-large", "unsupported-format", "import-failed" (Assimp's message), "importer-crashed",
-// "importer-timeout", "importer-failed" (bad exit or reply), "worker-not-found".
+// "importer-timeout", "importer-failed" (bad exit or reply), "worker-not-found", "import-cancelled".
 LoadResult importScene(const std::filesystem::path& file, const ImportOptions& options = {});
 
 // Where the worker executable is looked for when ImportOptions::workerPath is empty. Empty when

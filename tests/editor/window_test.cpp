@@ -106,8 +106,8 @@ void WindowTest::autosaveIsRecoveredAfterACrash() {
         delete window;
     }
     MainWindow next(panelsOnly(folder));
-    QVERIFY(next.offerRecovery());
-    QVERIFY(nodeNamed(next.document(), "recovered floor"));
+    QVERIFY(next.offerRecovery()); // read in the background, like an open
+    QTRY_VERIFY(nodeNamed(next.document(), "recovered floor"));
     QVERIFY(next.document().isModified()); // newer than the file until saved
     QCOMPARE(QFileInfo(next.document().filePath()).fileName(), QString("cornell_box.gltf"));
     // Saving elsewhere makes the copy obsolete: it is removed.
@@ -122,12 +122,12 @@ void WindowTest::droppedFilesOpenOrImport() {
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
     const QList<QUrl> urls{QUrl::fromLocalFile(cornellBox())};
-    window.openDropped(urls, false);
-    QCOMPARE(window.document().scene().nodeCount(), std::size_t{9});
+    window.openDropped(urls, false); // read in the background
+    QTRY_COMPARE(window.document().scene().nodeCount(), std::size_t{9});
     QVERIFY(!window.document().isModified());
     // With Ctrl the file is merged into the open scene, as one undo step.
     window.openDropped(urls, true);
-    QCOMPARE(window.document().scene().nodeCount(), std::size_t{18});
+    QTRY_COMPARE(window.document().scene().nodeCount(), std::size_t{18});
     window.document().undo();
     QCOMPARE(window.document().scene().nodeCount(), std::size_t{9});
 }
