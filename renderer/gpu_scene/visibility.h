@@ -1,13 +1,7 @@
 #pragma once
-// Whether a node is drawn: it and every ancestor are visible.
-#include "scene/core/scene.h"
+// The renderer draws what the scene core calls visible (scene/core/visibility.h).
+#include "scene/core/visibility.h"
 
 namespace glint::renderer {
-
-inline bool visibleInWorld(const Scene& scene, const Node& node) {
-    for (const Node* n = &node; n; n = n->parent ? scene.node(n->parent) : nullptr)
-        if (!n->visible) return false;
-    return true;
-}
-
+using glint::visibleInWorld;
 } // namespace glint::renderer

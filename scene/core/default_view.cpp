@@ -1,0 +1,44 @@
+#include "scene/core/default_view.h"
+
+#include "scene/core/scene_bounds.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace glint {
+namespace {
+
+constexpr float kMargin = 1.1f;
+constexpr float kEmptySceneDistance = 5.0f;
+
+// Distance from the centre at which a sphere of `radius` fills the narrower half-angle.
+float framingDistance(float radius, float yfov, float aspect) {
+    const float halfY = 0.5f * yfov;
+    const float halfX = std::atan(std::tan(halfY) * std::max(aspect, 1e-3f));
+    return kMargin * std::max(radius, 1e-3f) / std::sin(std::min(halfX, halfY));
+}
+
+} // namespace
+
+NodeId addDefaultView(Scene& scene, float aspect) {
+    Camera camera;
+    const Bounds bounds = worldBounds(scene);
+    glm::vec3 centre(0.0f);
+    float distance = kEmptySceneDistance;
+    if (!bounds.empty()) {
+        centre = bounds.centre();
+        const float radius = 0.5f * glm::length(bounds.max - bounds.min);
+        distance = framingDistance(radius, camera.yfov, aspect);
+        camera.focusDistance = distance;
+    }
+    Node node;
+    node.name = std::string(kDefaultViewName);
+    node.local.translation = centre + glm::vec3(0.0f, 0.0f, distance);
+    node.component = camera;
+    const NodeId id = scene.addNode(std::move(node));
+    scene.settings.activeCamera = id;
+    return id;
+}
+
+} // namespace glint

@@ -1,0 +1,12 @@
+#pragma once
+// Whether anything can light a scene: a light, a visible emissive surface, or an environment
+// that is not black. Without one the image is black, which the command line says, since most
+// glTF assets carry no lights and CONTRACTS.md makes the environment black by default.
+#include "scene/core/scene.h"
+
+namespace glint {
+
+bool environmentEmits(const Environment& environment);
+bool hasLightSource(const Scene& scene); // lights, emissive surfaces and the project's environment
+
+} // namespace glint
