@@ -215,6 +215,12 @@ struct FrameRenderer::State {
         return {settings.seed, effectiveBounces(settings), settings.clamp, settings.independentSampler, settings.view,
                 settings.aoDistance, traits.svgf, traits.ao};
     }
+    // The pixels the path tracer covers: the region plus the reconstruction's reach around it.
+    PixelRect tracedPixels() const {
+        const ConfigurationTraits traits = traitsOf(settings.configuration);
+        const int margin = reconstructionReach(traits, svgfSettingsOf(document.settings.render.svgf).iterations);
+        return grown(regionPixels(settings.region, settings.width, settings.height), margin, settings.width, settings.height);
+    }
     void renderAccumulated();
     void renderRealTime();
     void beginRegion();
@@ -222,7 +228,8 @@ struct FrameRenderer::State {
 };
 
 // A new, moved or cleared region restarts the samples (inside it); a set one freezes the last
-// image for the outside and keeps every pass inside its pixels with the scissor.
+// image for the outside and keeps the path tracer and accumulation inside the region and its
+// margin (tracedPixels) with the scissor.
 void FrameRenderer::State::beginRegion() {
     if (regionChanged) {
         pictureChanged = true;
@@ -233,7 +240,14 @@ void FrameRenderer::State::beginRegion() {
     }
     if (!settings.region.active) return;
     if (!region.fits(settings.width, settings.height)) region.freeze(result, settings.width, settings.height);
-    const PixelRect r = regionPixels(settings.region, settings.width, settings.height);
+    if (!historyValid && !traitsOf(settings.configuration).accumulate) {
+        // The filters also read beyond the margin (with weights too small to matter, but not 0):
+        // zeros there, not whatever was rendered before, keep a region's frames the same in every
+        // run, shard and chunk.
+        targets->sample.clear();
+        targets->frameMean.clear();
+    }
+    const PixelRect r = tracedPixels();
     glEnable(GL_SCISSOR_TEST);
     glScissor(r.x, r.y, r.width, r.height);
 }
@@ -270,6 +284,9 @@ void FrameRenderer::State::renderRealTime() {
         t.stillMean.add(t.sample);
         if (spp > 1) t.frameMean.add(t.sample);
     }
+    // The filters run on the whole frame: cheap next to path tracing, and anti-lag's per-stratum
+    // target (a third of the size) would not match a scissor given in full-size pixels.
+    glDisable(GL_SCISSOR_TEST);
     const gl::RenderTarget& frame = spp > 1 ? t.frameMean.mean() : t.sample;
     ReconstructionInputs in{frame, t.stillMean.mean(), t.stillMean.sampleCount(), camera, previousCamera,
                             historyValid, traitsOf(settings.configuration), {}};
@@ -455,6 +472,7 @@ FrameImages FrameRenderer::readImages() {
     FrameTargets& t = *s.targets;
     out.width = t.sample.width();
     out.height = t.sample.height();
+    out.window = imageWindowOf(regionPixels(s.settings.region, out.width, out.height), out.height);
     s.tonemap.render(*s.result, s.camera.exposure + s.settings.exposure,
                      s.settings.tonemapper.value_or(s.document.settings.render.tonemapper), t.display);
     out.tonemapped = topDown(t.display.readRgba8(0), out.width, out.height, 4);

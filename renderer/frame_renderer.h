@@ -41,7 +41,9 @@ struct FrameSettings {
     int height = 360;
     // Samples go only into this region; outside it the last image stays (renderer/render_region.h).
     // Accumulation, reconstruction and sampleCount() then refer to the region's pixels; the
-    // G-buffer images read back are valid inside it only.
+    // G-buffer images read back are valid inside it only. Real-time configurations path trace a
+    // margin around it as wide as their filters reach (reconstructionReach), so the filters at the
+    // region's edge read this frame's samples, not the frozen image's.
     RenderRegion region;
 };
 
@@ -49,6 +51,8 @@ struct FrameSettings {
 struct FrameImages {
     int width = 0;
     int height = 0;
+    ImageWindow window;           // the pixels this frame rendered: the region, else the whole image
+                                  // (empty: the whole image too)
     std::vector<float> radiance;  // RGBA: linear Rec.709, A = coverage (the reconstructed frame)
     std::vector<float> albedo;    // RGB
     std::vector<float> normal;    // XYZ, world space

@@ -28,6 +28,10 @@ void validate(const RenderRequest& request) {
     if (request.spp <= 0) throw std::runtime_error("samples per pixel must be at least 1");
     if (request.bounces < 0) throw std::runtime_error("bounces must be 0 or more");
     if (request.frames <= 0) throw std::runtime_error("frames must be at least 1");
+    if (const auto& r = request.region;
+        r && (r->x < 0 || r->y < 0 || r->width < 1 || r->height < 1 || r->x + r->width > request.width ||
+              r->y + r->height > request.height))
+        throw std::runtime_error("the render region must be a non-empty part of the image");
 }
 
 } // namespace
@@ -52,6 +56,7 @@ FrameSettings frameSettingsFor(const RenderRequest& request, int sppPerFrame) {
     s.aoDistance = request.aoDistance;
     s.width = request.width;
     s.height = request.height;
+    if (request.region) s.region = regionOfWindow(*request.region, request.width, request.height);
     return s;
 }
 

@@ -30,6 +30,9 @@ struct RenderRequest {
     bool requireGpu = false;
     float clamp = 0.0f;                   // 0 = off (unbiased)
     bool independentSampler = false;
+    // Render only these pixels (top-left origin); outside them the images read back hold nothing
+    // meaningful and RenderOutput::window names the valid ones. Unset: the whole image.
+    std::optional<ImageWindow> region;
     DebugView view = DebugView::None;
     float aoDistance = 1.0f;              // metres, for DebugView::AmbientOcclusion
     std::function<void(int done, int total)> progress; // after each sample (real-time: frame); may be empty

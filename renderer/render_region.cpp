@@ -16,4 +16,31 @@ PixelRect regionPixels(const RenderRegion& region, int width, int height) {
     return {left, height - bottom, right - left, bottom - top};
 }
 
+ImageWindow imageWindowOf(const PixelRect& rect, int height) {
+    return {rect.x, height - rect.y - rect.height, rect.width, rect.height};
+}
+
+PixelRect pixelRectOf(const ImageWindow& window, int height) {
+    return {window.x, height - window.y - window.height, window.width, window.height};
+}
+
+RenderRegion regionOfWindow(const ImageWindow& window, int width, int height) {
+    const auto fraction = [](double pixels, int size) { return static_cast<float>(pixels / size); };
+    RenderRegion region;
+    region.active = true;
+    region.x = fraction(window.x + 0.25, width);
+    region.y = fraction(window.y + 0.25, height);
+    region.width = fraction(window.width - 0.5, width);
+    region.height = fraction(window.height - 0.5, height);
+    return region;
+}
+
+PixelRect grown(const PixelRect& rect, int margin, int width, int height) {
+    const int left = std::max(rect.x - margin, 0);
+    const int bottom = std::max(rect.y - margin, 0);
+    const int right = std::min(rect.x + rect.width + margin, width);
+    const int top = std::min(rect.y + rect.height + margin, height);
+    return {left, bottom, std::max(right - left, 0), std::max(top - bottom, 0)};
+}
+
 } // namespace glint::renderer

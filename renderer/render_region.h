@@ -22,8 +22,29 @@ struct PixelRect {
     friend bool operator==(const PixelRect&, const PixelRect&) = default;
 };
 
+// Pixels as image files count them: from the top-left corner (EXR's data window, the command
+// line's --region). A separate type, so the two row orders never mix unnoticed.
+struct ImageWindow {
+    int x = 0;
+    int y = 0;
+    int width = 0;
+    int height = 0;
+    friend bool operator==(const ImageWindow&, const ImageWindow&) = default;
+};
+
 // The pixels a region covers in a width x height image: every pixel the rectangle touches, at
 // least one, never outside the image. An inactive region covers the whole image.
 PixelRect regionPixels(const RenderRegion& region, int width, int height);
+
+// The same pixels counted from the other corner, in an image `height` rows high.
+ImageWindow imageWindowOf(const PixelRect& rect, int height);
+PixelRect pixelRectOf(const ImageWindow& window, int height);
+
+// A region that covers exactly `window`'s pixels (regionPixels gives them back): its edges lie a
+// quarter pixel inside the window's, so float rounding of the fractions never adds or drops a row.
+RenderRegion regionOfWindow(const ImageWindow& window, int width, int height);
+
+// `rect` grown by `margin` pixels on every side, clipped to the width x height image.
+PixelRect grown(const PixelRect& rect, int margin, int width, int height);
 
 } // namespace glint::renderer

@@ -7,6 +7,7 @@
 #include "frame_render.h"
 #include "render_options.h"
 #include "report.h"
+#include "scene_defaults.h"
 #include "scene_file.h"
 
 #include "renderer/offline_render.h"
@@ -44,8 +45,24 @@ int renderStill(const RenderOptions& o, Scene& scene) {
     return kSuccess;
 }
 
+// The image size is known only with the scene (its project may set it): a region outside the
+// image is still a usage error (exit 2), reported before anything is rendered.
+bool regionFits(const RenderOptions& o, const Scene& scene) {
+    if (!o.region) return true;
+    const Size size = o.common.size.value_or(Size{scene.settings.render.width, scene.settings.render.height});
+    try {
+        checkRegionInside(*o.region, size.width, size.height);
+    } catch (const std::invalid_argument& e) {
+        printError(std::string("--region: ") + e.what());
+        return false;
+    }
+    return true;
+}
+
 int runRender(const RenderOptions& o) {
     LoadResult loaded = openSceneFile(o.scene);
+    completeForRender(loaded, o.scene, o.common.camera.value_or(""), o.common.env.has_value(), outputSize(o.common, loaded.scene));
+    if (!regionFits(o, loaded.scene)) return kUsage;
     if (reportWarnings(loaded.warnings, o.common.strict)) return kFailure;
     return o.animation ? renderAnimation(o, loaded.scene) : renderStill(o, loaded.scene);
 }
@@ -92,6 +109,13 @@ void addRenderCommand(CLI::App& app, Action& action) {
         ->check(CLI::Validator(rejection([](const std::string& v) { renderer::parseAovList(v); }), "LIST", "aovs"));
     cmd->add_option("--time", options->time, "Render the scene at this time in seconds: camera path and node "
                                              "animations (default: the scene as stored)");
+    cmd->add_option_function<std::string>("--region", [o = options.get()](const std::string& v) { o->region = parseRegion(v); },
+                                          "Render only pixels X,Y,W,H of the output image: whole pixels, origin at the "
+                                          "top-left corner, inside the image. EXR: the region is the data window, the "
+                                          "whole image the display window (every AOV alike); PNG/TIFF: the whole "
+                                          "image, transparent (alpha 0) outside; JPEG: black outside. Its pixels "
+                                          "equal a full render's (default: none, the whole image)")
+        ->check(CLI::Validator(rejection([](const std::string& v) { parseRegion(v); }), "X,Y,W,H", "region"));
     addAnimationOptions(*cmd, *options);
     addCommonRenderOptions(*cmd, options->common);
     cmd->callback([options, &action] {

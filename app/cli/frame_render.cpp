@@ -21,6 +21,10 @@ void printSampleProgress(int done, int total) {
 
 RenderPlan planImage(const RenderOptions& o, const FrameJob& job) {
     RenderPlan plan = planRender(*job.scene, o.scene, o.common);
+    if (o.region) { // other pixels, another file: hashed, so --resume renders the frame again
+        plan.request.region = o.region;
+        plan.metadata["region"] = formatRegion(*o.region);
+    }
     if (job.history) {
         // The noise varies with the frame index inside the chunk; K and W decide the history.
         plan.metadata["spp"] = o.common.spp ? std::to_string(*o.common.spp) : std::string("configuration");

@@ -2,6 +2,7 @@
 // Everything `glint render` accepts, stills and animations alike.
 #include "common_options.h"
 #include "frame_timing.h"
+#include "region_option.h"
 #include "shard_plan.h"
 
 #include <optional>
@@ -14,6 +15,7 @@ struct RenderOptions {
     std::string out;
     std::string aovs = "all";
     std::optional<double> time;
+    std::optional<ImageWindow> region; // --region: pixels from the top-left corner; unset: the whole image
     bool animation = false;
     std::optional<FrameRange> frames; // default: the animation's span
     std::optional<Fps> fps;           // default: the project's

@@ -22,12 +22,34 @@ std::string lower(std::string s) {
     return s;
 }
 
-// Interleaves the beauty pass and the requested AOVs into one float buffer with EXR channel names.
+// The beauty pass and the requested AOVs interleaved into one float buffer, with EXR channel names.
 struct Planes {
     std::vector<std::string> names;
     std::vector<float> pixels;
 };
 
+// The pixels written: the render's window (its region), or the whole image when it names none.
+ImageWindow dataWindowOf(const RenderOutput& img) {
+    const ImageWindow& w = img.window;
+    if (w.width <= 0 || w.height <= 0) return {0, 0, img.width, img.height};
+    return w;
+}
+
+// Appends pixel `i` (row-major over the whole image) of every plane in `p`'s channel order.
+void appendPixel(Planes& p, const RenderOutput& img, const ExrLayers& layers, std::size_t i) {
+    const auto append = [&p, i](const std::vector<float>& plane, std::size_t channels) {
+        p.pixels.insert(p.pixels.end(), plane.begin() + std::ptrdiff_t(i * channels), plane.begin() + std::ptrdiff_t((i + 1) * channels));
+    };
+    append(img.radiance, 4);
+    if (layers.albedo) append(img.albedo, 3);
+    if (layers.normal) append(img.normal, 3);
+    if (layers.depth) append(img.depth, 1);
+    if (layers.objectId) append(img.objectId, 1);
+    if (layers.variance) append(img.variance, 3);
+    if (layers.bvhCost) append(img.bvhCost, 1);
+}
+
+// The beauty pass and the requested AOVs of the data window, interleaved, with EXR channel names.
 Planes exrPlanes(const RenderOutput& img, const ExrLayers& layers) {
     Planes p;
     p.names = {"R", "G", "B", "A"};
@@ -40,17 +62,26 @@ Planes exrPlanes(const RenderOutput& img, const ExrLayers& layers) {
     const std::size_t count = std::size_t(img.width) * std::size_t(img.height);
     if (layers.bvhCost && img.bvhCost.size() != count)
         throw std::invalid_argument("the bvh_cost AOV is available for stills and per-frame renders only");
-    p.pixels.reserve(count * p.names.size());
-    for (std::size_t i = 0; i < count; ++i) {
-        p.pixels.insert(p.pixels.end(), img.radiance.begin() + std::ptrdiff_t(i * 4), img.radiance.begin() + std::ptrdiff_t(i * 4 + 4));
-        if (layers.albedo) p.pixels.insert(p.pixels.end(), img.albedo.begin() + std::ptrdiff_t(i * 3), img.albedo.begin() + std::ptrdiff_t(i * 3 + 3));
-        if (layers.normal) p.pixels.insert(p.pixels.end(), img.normal.begin() + std::ptrdiff_t(i * 3), img.normal.begin() + std::ptrdiff_t(i * 3 + 3));
-        if (layers.depth) p.pixels.push_back(img.depth[i]);
-        if (layers.objectId) p.pixels.push_back(img.objectId[i]);
-        if (layers.variance) p.pixels.insert(p.pixels.end(), img.variance.begin() + std::ptrdiff_t(i * 3), img.variance.begin() + std::ptrdiff_t(i * 3 + 3));
-        if (layers.bvhCost) p.pixels.push_back(img.bvhCost[i]);
-    }
+    const ImageWindow window = dataWindowOf(img);
+    p.pixels.reserve(std::size_t(window.width) * std::size_t(window.height) * p.names.size());
+    for (int y = window.y; y < window.y + window.height; ++y)
+        for (int x = window.x; x < window.x + window.width; ++x)
+            appendPixel(p, img, layers, std::size_t(y) * std::size_t(img.width) + std::size_t(x));
     return p;
+}
+
+// 8-bit images keep the full size: outside the window every byte is 0, so transparent where the
+// format has alpha (PNG, TIFF) and black where it has none (JPEG).
+std::vector<std::uint8_t> displayPixels(const RenderOutput& img) {
+    const ImageWindow window = dataWindowOf(img);
+    if (window == ImageWindow{0, 0, img.width, img.height}) return img.tonemapped;
+    std::vector<std::uint8_t> pixels(img.tonemapped.size(), 0);
+    for (int y = window.y; y < window.y + window.height; ++y) {
+        const std::size_t row = (std::size_t(y) * std::size_t(img.width) + std::size_t(window.x)) * 4;
+        std::copy_n(img.tonemapped.begin() + std::ptrdiff_t(row), std::size_t(window.width) * 4,
+                    pixels.begin() + std::ptrdiff_t(row));
+    }
+    return pixels;
 }
 
 void writeWithOiio(const std::filesystem::path& target, const std::filesystem::path& temp, const OIIO::ImageSpec& spec,
@@ -95,7 +126,16 @@ void publish(const std::filesystem::path& temp, const std::filesystem::path& fil
 
 OIIO::ImageSpec specFor(const RenderOutput& img, ImageFormat format, const Planes* planes) {
     if (format == ImageFormat::Exr) {
-        OIIO::ImageSpec spec(img.width, img.height, int(planes->names.size()), OIIO::TypeDesc::FLOAT);
+        // A region is the data window inside the whole image's display window (OpenEXR's own
+        // way to store part of an image): readers place it where it belongs.
+        const ImageWindow window = dataWindowOf(img);
+        OIIO::ImageSpec spec(window.width, window.height, int(planes->names.size()), OIIO::TypeDesc::FLOAT);
+        spec.x = window.x;
+        spec.y = window.y;
+        spec.full_x = 0;
+        spec.full_y = 0;
+        spec.full_width = img.width;
+        spec.full_height = img.height;
         spec.channelnames = planes->names;
         spec.alpha_channel = 3;
         spec.z_channel = -1;
@@ -171,8 +211,9 @@ void writeRenderImage(const std::filesystem::path& file, const RenderOutput& img
     // two identical renders differ; the render time is recorded, and allowed to differ, on its own.
     if (format == ImageFormat::Exr) spec.attribute("DateTime", "");
     try {
+        const std::vector<std::uint8_t> display = format == ImageFormat::Exr ? std::vector<std::uint8_t>() : displayPixels(img);
         writeWithOiio(file, temp, spec, format == ImageFormat::Exr ? static_cast<const void*>(planes.pixels.data())
-                                                                     : static_cast<const void*>(img.tonemapped.data()));
+                                                                     : static_cast<const void*>(display.data()));
     } catch (...) {
         std::error_code ec;
         std::filesystem::remove(temp, ec);

@@ -6,6 +6,7 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
 #include <charconv>
 
 namespace glint::video {
@@ -40,6 +41,23 @@ std::vector<T> readRgba(OIIO::ImageInput& in, const std::filesystem::path& file,
     return rgba;
 }
 
+// A frame whose data window is only part of its display window (glint render --region) is placed
+// where it belongs, black and transparent around it.
+std::vector<float> inDisplayWindow(const std::vector<float>& rgba, const OIIO::ImageSpec& spec) {
+    if (spec.x == spec.full_x && spec.y == spec.full_y && spec.width == spec.full_width && spec.height == spec.full_height)
+        return rgba;
+    std::vector<float> full(std::size_t(spec.full_width) * std::size_t(spec.full_height) * 4, 0.0f);
+    for (int y = 0; y < spec.height; ++y)
+        for (int x = 0; x < spec.width; ++x) {
+            const int fx = spec.x - spec.full_x + x, fy = spec.y - spec.full_y + y;
+            if (fx < 0 || fy < 0 || fx >= spec.full_width || fy >= spec.full_height) continue;
+            const std::size_t from = (std::size_t(y) * std::size_t(spec.width) + std::size_t(x)) * 4;
+            const std::size_t to = (std::size_t(fy) * std::size_t(spec.full_width) + std::size_t(fx)) * 4;
+            std::copy_n(rgba.begin() + std::ptrdiff_t(from), 4, full.begin() + std::ptrdiff_t(to));
+        }
+    return full;
+}
+
 } // namespace
 
 Rgba8Image loadFrameForVideo(const std::filesystem::path& file) {
@@ -53,7 +71,10 @@ Rgba8Image loadFrameForVideo(const std::filesystem::path& file) {
         image.pixels = readRgba<std::uint8_t>(*in, file, OIIO::TypeDesc::UINT8, 255);
         return image;
     }
-    const std::vector<float> radiance = readRgba<float>(*in, file, OIIO::TypeDesc::FLOAT, 1.0f);
+    const OIIO::ImageSpec spec = in->spec();
+    const std::vector<float> radiance = inDisplayWindow(readRgba<float>(*in, file, OIIO::TypeDesc::FLOAT, 1.0f), spec);
+    image.width = spec.full_width;
+    image.height = spec.full_height;
     in->close();
     const auto metadata = renderer::readGlintMetadata(file);
     const auto get = [&](const char* key) { auto it = metadata.find(key); return it == metadata.end() ? std::string() : it->second; };

@@ -18,6 +18,8 @@ public:
     AccumulatePass(gl::ProgramCache& programs, int width, int height);
     void add(const gl::RenderTarget& sample);
     void reset() { count_ = 0; }
+    // Zeroes both targets, so pixels a scissor keeps out hold no earlier render (render regions).
+    void clear() { targets_[0].clear(); targets_[1].clear(); }
     int sampleCount() const { return count_; }
     const gl::RenderTarget& mean() const { return targets_[current_]; }
 

@@ -1,5 +1,7 @@
 #include "renderer/passes/region_composite.h"
 
+#include <algorithm>
+
 namespace glint::renderer {
 namespace {
 
@@ -23,6 +25,17 @@ void blit(const gl::RenderTarget& from, const gl::RenderTarget& to, const PixelR
 PixelRect whole(const gl::RenderTarget& t) { return {0, 0, t.width(), t.height()}; }
 
 } // namespace
+
+int reconstructionReach(const ConfigurationTraits& traits, int svgfIterations) {
+    if (traits.accumulate) return 0;
+    constexpr int antiLagReach = 3; // a pixel takes the largest lambda of its 2x2 nearest 3x3 strata
+    constexpr int varianceReach = 3;
+    int reach = 0;
+    if (traits.svgf) reach = 2 * ((1 << std::clamp(svgfIterations, 1, 16)) - 1) + varianceReach + antiLagReach;
+    else if (traits.taa) reach = antiLagReach;
+    if (traits.taa) reach += 1;
+    return reach;
+}
 
 bool RegionComposite::fits(int width, int height) const {
     return composite_ && composite_->width() == width && composite_->height() == height;

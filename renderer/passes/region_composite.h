@@ -4,12 +4,22 @@
 // passes run under a scissor, so only the region's pixels of their targets are up to date; this
 // keeps the rest of the picture as it was instead of showing those stale pixels. It outlives the
 // frame targets: after a resize (or a moving view's coarser resolution) the last image is scaled.
+#include "renderer/configuration.h"
 #include "renderer/gl/render_target.h"
 #include "renderer/render_region.h"
 
 #include <memory>
 
 namespace glint::renderer {
+
+// How far (pixels) the real-time reconstruction of one frame reads the path-traced samples around
+// a pixel: TAA's 3x3 neighbourhood (1), the a-trous steps 2^i over 5x5 taps (2 (2^N - 1); each
+// step's 3x3 variance blur lies inside), SVGF's 7x7 variance estimate (3), and anti-lag's strata
+// (3: the 2x2 nearest 3x3 strata) or SVGF's 3x3 firefly test (1) at reprojection. Path tracing
+// this margin around a region makes the region's first frame after a reset exactly the full
+// frame's; later frames differ only through history, far inside the filters' weight tails.
+// Accumulate and Reference read no neighbours: 0.
+int reconstructionReach(const ConfigurationTraits& traits, int svgfIterations);
 
 class RegionComposite {
 public:
