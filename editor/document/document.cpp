@@ -191,7 +191,7 @@ QString Document::importFile(const QString& path) {
 
 // Throws when a command does; the macro is closed either way, so nothing half-merged stays open.
 void Document::applyImported(const QString& path, LoadResult result) {
-    std::vector<CommandPtr> commands = mergeCommands(scene_, result.scene);
+    std::vector<CommandPtr> commands = mergeCommands(scene_, std::move(result.scene));
     const NodeId firstNew = scene_.peekNextNodeId();
     beginMacro(tr("Import %1").arg(QFileInfo(path).fileName()));
     try {

@@ -33,16 +33,17 @@ void remapMaterial(Material& m, const Remap<TextureId>& textures) {
         if (ref->valid()) ref->texture = mapped(textures, ref->texture);
 }
 
-// Adds every asset of one table under fresh ids and records the mapping.
+// Moves every asset of one table into a command under a fresh id and records the mapping. Moved,
+// not copied: the merge runs on the GUI thread, and an imported mesh can be hundreds of megabytes.
 template <class T, class IdT, class Fix>
-Remap<IdT> addAssets(const AssetTable<IdT, T>& source, std::uint32_t next, std::vector<CommandPtr>& out, Fix fix) {
+Remap<IdT> addAssets(AssetTable<IdT, T>& source, std::uint32_t next, std::vector<CommandPtr>& out, Fix fix) {
     Remap<IdT> remap;
-    for (const auto& [id, value] : source) {
+    for (auto& [id, value] : source) {
         IdT fresh{next++};
         remap[id] = fresh;
-        T copy = value;
-        fix(copy);
-        out.push_back(std::make_unique<AddAsset<T>>(std::move(copy), fresh));
+        T moved = std::move(value);
+        fix(moved);
+        out.push_back(std::make_unique<AddAsset<T>>(std::move(moved), fresh));
     }
     return remap;
 }
@@ -52,7 +53,7 @@ struct AssetRemaps {
     Remap<MaterialId> materials;
 };
 
-AssetRemaps addAllAssets(const Scene& target, const Scene& imported, std::vector<CommandPtr>& out) {
+AssetRemaps addAllAssets(const Scene& target, Scene& imported, std::vector<CommandPtr>& out) {
     auto keep = [](auto&) {};
     auto images = addAssets(imported.images, nextId(target.images), out, keep);
     auto samplers = addAssets(imported.samplers, nextId(target.samplers), out, keep);
@@ -76,7 +77,7 @@ void remapComponent(Component& component, const AssetRemaps& remaps) {
 
 } // namespace
 
-std::vector<CommandPtr> mergeCommands(const Scene& target, const Scene& imported) {
+std::vector<CommandPtr> mergeCommands(const Scene& target, Scene&& imported) {
     std::vector<CommandPtr> out;
     const AssetRemaps remaps = addAllAssets(target, imported, out);
     std::map<NodeId, NodeId> nodes;

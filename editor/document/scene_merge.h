@@ -10,7 +10,8 @@
 namespace glint::editor {
 
 // Commands in the order they must be pushed (assets before the nodes that use them).
-// `target` supplies the next free ids, so the commands name the ids they will assign.
-std::vector<CommandPtr> mergeCommands(const Scene& target, const Scene& imported);
+// `target` supplies the next free ids, so the commands name the ids they will assign. The assets of
+// `imported` are moved into the commands (left empty); its nodes are copied.
+std::vector<CommandPtr> mergeCommands(const Scene& target, Scene&& imported);
 
 } // namespace glint::editor
