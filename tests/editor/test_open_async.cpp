@@ -230,9 +230,9 @@ private slots:
         QElapsedTimer clock;
         clock.start();
         document.cancelLoading();
-        QTRY_VERIFY_WITH_TIMEOUT(!QFileInfo::exists(QString("/proc/%1").arg(worker)), 2000); // killed and reaped
+        QTRY_VERIFY_WITH_TIMEOUT(!QFileInfo::exists(QString("/proc/%1").arg(worker)), 3000); // killed and reaped
         qInfo("import worker %lld gone %lld ms after cancel", worker, clock.elapsed());
-        QVERIFY(clock.elapsed() < 1000);
+        QVERIFY(clock.elapsed() < 2000); // ~50 ms when the machine is idle; CI shares two cores
         QTest::qWait(100);
         QVERIFY(DocumentState(document) == before);
         QCOMPARE(loaded.size(), 0);
