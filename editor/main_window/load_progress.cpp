@@ -25,21 +25,38 @@ LoadProgress::LoadProgress(QWidget* parent) : QWidget(parent) {
     layout->addWidget(bar_);
     layout->addWidget(cancel_);
     connect(cancel_, &QToolButton::clicked, this, &LoadProgress::cancelRequested);
+    clock_.setInterval(1000);
+    connect(&clock_, &QTimer::timeout, this, &LoadProgress::showText);
     retranslate();
     hide();
 }
 
 void LoadProgress::begin(const QString& text) {
     text_ = text;
-    label_->setText(text_);
+    stage_.clear();
+    elapsed_.start();
+    clock_.start();
+    showText();
     show();
 }
 
-void LoadProgress::setStage(const QString& stage) { label_->setText(tr("%1 (%2)").arg(text_, stage)); }
+void LoadProgress::setStage(const QString& stage) {
+    stage_ = stage;
+    showText();
+}
 
 void LoadProgress::end() {
     text_.clear();
+    stage_.clear();
+    clock_.stop();
     hide();
+}
+
+void LoadProgress::showText() {
+    QString text = stage_.isEmpty() ? text_ : tr("%1 (%2)").arg(text_, stage_);
+    const qint64 seconds = elapsed_.isValid() ? elapsed_.elapsed() / 1000 : 0;
+    if (seconds > 0) text = tr("%1, %2 s").arg(text).arg(seconds);
+    label_->setText(text);
 }
 
 QString LoadProgress::text() const { return label_->text(); }
@@ -53,6 +70,7 @@ void LoadProgress::retranslate() {
     cancel_->setText(tr("Cancel"));
     cancel_->setToolTip(tr("Stop reading the file; the open scene stays as it is"));
     bar_->setAccessibleName(tr("Loading progress"));
+    if (!text_.isEmpty()) showText();
 }
 
 } // namespace glint::editor

@@ -2,6 +2,8 @@
 // The status bar's progress for a file being opened or imported in the background: what is being
 // read, a busy bar (the readers report stages, not fractions) and a Cancel button. Non-modal, as
 // in Qt Creator or Blender: the window stays usable while it shows.
+#include <QElapsedTimer>
+#include <QTimer>
 #include <QWidget>
 
 class QLabel;
@@ -28,11 +30,15 @@ protected:
 
 private:
     void retranslate();
+    void showText();
 
     QLabel* label_ = nullptr;
     QProgressBar* bar_ = nullptr;
     QToolButton* cancel_ = nullptr;
     QString text_;
+    QString stage_;
+    QElapsedTimer elapsed_;
+    QTimer clock_; // the seconds so far, once a load takes longer than a moment
 };
 
 } // namespace glint::editor

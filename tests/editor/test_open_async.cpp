@@ -133,6 +133,8 @@ private slots:
         latency.start();
         window.beginOpen(large_);
         QVERIFY(window.loadProgress().isVisible()); // at once, with its Cancel button
+        QAction* import = window.findChild<QAction*>("file.import");
+        QVERIFY(!import->isEnabled()); // no merging into a scene about to be replaced
         QVERIFY(loaded.wait(20000)); // an event loop that sleeps until something happens, like the editor's
         QTest::qWait(3 * editor::test::EventLoopLatency::kTickMs); // the tick after the arrival counts its stall
         latency.stop();
@@ -147,6 +149,7 @@ private slots:
         QVERIFY(!document.isModified());
         QVERIFY(window.windowTitle().contains("large.gltf"));
         QVERIFY(!window.loadProgress().isVisible());
+        QVERIFY(import->isEnabled());
         QVERIFY(!progress.isEmpty() && progress.front().contains("large.gltf")); // the stage named the file
         QVERIFY(latency.ticks() > 10); // the loop really ran meanwhile
         QVERIFY2(p95 < kP95LimitMs, qPrintable(QString("p95 lateness %1 ms").arg(p95)));
@@ -278,6 +281,32 @@ private slots:
         QVERIFY(DocumentState(window.document()) == before);
         QVERIFY(window.windowTitle().contains("cornell_box.gltf"));
         QVERIFY(!window.loadProgress().isVisible());
+    }
+
+    // Edits made while an open runs were not covered by the prompt before it: the document asks
+    // again before the opened scene replaces them, and a "no" keeps them.
+    void editsDuringAnOpenAreConfirmed() {
+        Document document;
+        QCOMPARE(document.open(cornellBox()), QString());
+        int asked = 0;
+        bool answer = false;
+        document.setReplaceConfirmation([&] { ++asked; return answer; });
+        QSignalSpy loaded(&document, &Document::loaded);
+        QSignalSpy cancelled(&document, &Document::loadCancelled);
+        document.startOpen(cornellBox()); // arrives through the event loop, after the edit below
+        QCOMPARE(renameNode(document, nodeNamed(document, "floor"), "edited"), QString());
+        QTRY_COMPARE_WITH_TIMEOUT(cancelled.size(), 1, 10000);
+        QCOMPARE(asked, 1);
+        QCOMPARE(loaded.size(), 0);
+        QVERIFY(nodeNamed(document, "edited"));
+        QVERIFY(document.isModified());
+        answer = true;
+        document.startOpen(cornellBox());
+        QCOMPARE(renameNode(document, nodeNamed(document, "edited"), "edited again"), QString());
+        QTRY_COMPARE_WITH_TIMEOUT(loaded.size(), 1, 10000);
+        QCOMPARE(asked, 2);
+        QVERIFY(nodeNamed(document, "floor"));
+        QVERIFY(!document.isModified());
     }
 
     // (e) Opening B while A loads ends with B, and A never shows up afterwards.
