@@ -58,6 +58,41 @@ void OverlayPainter::drawCameraPaths(NodeId lookingThrough) {
     }
 }
 
+void OverlayPainter::drawNodeIcons(const std::vector<NodeIcon>& icons, NodeId lookingThrough) {
+    constexpr double kLampRadius = 4.0, kRayInner = 5.5, kRayOuter = 8.0; // within kIconPickRadius
+    painter_.setRenderHint(QPainter::Antialiasing);
+    for (const NodeIcon& icon : icons) {
+        if (icon.node == lookingThrough) continue;
+        const auto centre = view_.project(icon.position);
+        if (!centre) continue;
+        const bool selected = document_.isSelected(icon.node);
+        const QColor ink = selected ? QColor(255, 170, 40) : QColor(235, 235, 235);
+        painter_.setPen(QPen(QColor(0, 0, 0, 160), 3.0)); // a dark halo keeps icons readable on bright images
+        painter_.setBrush(Qt::NoBrush);
+        const QRectF body(*centre - QPointF(6.0, 4.0), QSizeF(12.0, 8.0));
+        if (icon.camera) painter_.drawRect(body);
+        else painter_.drawEllipse(*centre, kLampRadius, kLampRadius);
+        painter_.setPen(QPen(ink, 1.5));
+        if (icon.camera) {
+            painter_.drawRect(body);
+            // Which way it looks, as a short line towards where its -Z axis points on screen.
+            if (const auto ahead = view_.project(icon.position + 0.25 * icon.forward)) {
+                const QPointF d = *ahead - *centre;
+                const double length = std::hypot(d.x(), d.y());
+                if (length > 1e-6) painter_.drawLine(*centre, *centre + d * (kRayOuter + 4.0) / length);
+            }
+            continue;
+        }
+        painter_.setBrush(ink);
+        painter_.drawEllipse(*centre, kLampRadius - 1.0, kLampRadius - 1.0);
+        for (int i = 0; i < 8; ++i) {
+            const double angle = std::numbers::pi * i / 4.0;
+            const QPointF u(std::cos(angle), std::sin(angle));
+            painter_.drawLine(*centre + kRayInner * u, *centre + kRayOuter * u);
+        }
+    }
+}
+
 void OverlayPainter::drawGizmo(const GizmoFrame& frame, GizmoMode mode, int activeAxis) {
     painter_.setRenderHint(QPainter::Antialiasing);
     const auto origin = view_.project(frame.origin);

@@ -1,9 +1,10 @@
 #pragma once
 // The viewport's 2D overlays, drawn with QPainter over the rendered image: the gizmo of the
-// current node, camera-path curves with their keys, messages, the BVH heat map's legend and the
+// current node, camera-path curves with their keys, the lights' and cameras' icons, messages, the BVH heat map's legend and the
 // render region's frame. Geometry is projected with the
 // view camera, so overlays and the path-traced image line up.
 #include "editor/viewport/gizmo_math.h"
+#include "editor/viewport/node_icons.h"
 #include "renderer/bvh/aabb.h"
 #include "scene/core/ids.h"
 
@@ -27,6 +28,9 @@ public:
         : painter_(painter), view_(view), document_(document) {}
     // Every camera's path (the one looked through is skipped: it would sit on the image centre).
     void drawCameraPaths(NodeId lookingThrough);
+    // An icon at every light and camera (but the camera looked through), clickable within
+    // kIconPickRadius: a lamp with rays (a sun with a line along its light), a camera body.
+    void drawNodeIcons(const std::vector<NodeIcon>& icons, NodeId lookingThrough);
     void drawGizmo(const GizmoFrame& frame, GizmoMode mode, int activeAxis);
     void drawMessage(const QString& text);
     // The top-level BVH's leaves: one world box per instance.

@@ -12,6 +12,7 @@
 #include "editor/viewport/overlay_painter.h"
 #include "editor/viewport/scene_preparer.h"
 #include "editor/viewport/scene_picker.h"
+#include "editor/viewport/view_picking.h"
 #include "renderer/configuration.h"
 #include "scene/anim/scene_at_time.h"
 
@@ -51,7 +52,8 @@ std::filesystem::path environmentPath(const Document& document) {
 } // namespace
 
 RenderView::RenderView(Document& document, QWidget* parent)
-    : QOpenGLWidget(parent), document_(document), preparer_(std::make_unique<ScenePreparer>()) {
+    : QOpenGLWidget(parent), document_(document), preparer_(std::make_unique<ScenePreparer>()),
+      picking_(std::make_unique<ViewPicking>()) {
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(true);
     setAccessibleName(tr("Viewport"));
@@ -76,7 +78,7 @@ RenderView::RenderView(Document& document, QWidget* parent)
             stats_.samples = 0;
         }
         pending_.merge(changes);
-        picker_.reset();
+        picking_->noteChange(changes);
         followLookThrough();
         update();
     });
@@ -86,16 +88,17 @@ RenderView::RenderView(Document& document, QWidget* parent)
         fullUpload_ = true;
         showPrevious_ = false;
         reportedWarnings_.clear(); // warnings are de-duplicated per opened file
-        picker_.reset();
+        picking_->noteNewFile();
         update();
     });
     connect(&document_, &Document::timeChanged, this, [this] {
         timeDirty_ = true;
-        picker_.reset();
+        picking_->noteTime();
         followLookThrough();
         update();
     });
     connect(&document_, &Document::selectionChanged, this, qOverload<>(&QWidget::update));
+    connect(picking_.get(), &ViewPicking::arrived, this, qOverload<>(&QWidget::update));
     sinceMotion_.start();
 }
 
@@ -143,6 +146,7 @@ void RenderView::startPreparation() {
     stats_.preparation = tr("Preparing the scene");
     ++stats_.preparations;
     preparer_->start(document_.scene(), document_.currentTime(), environmentPath(document_), textureLimits_);
+    picking_->preparationStarted();
     fullUpload_ = false;
     gpuCurrent_ = false;
     pending_ = {};
@@ -154,6 +158,7 @@ void RenderView::uploadPrepared(PreparedDocument prepared) {
     upload.start();
     stats_.preparing = false;
     showPrevious_ = false; // until the upload succeeds
+    picking_->adoptPrepared(std::move(prepared.picker));
     renderer_->setPreparedScene(std::move(prepared.document), prepared.time, std::move(prepared.gpu));
     renderer::raster::finishGpuWork();
     stats_.uploadMs = double(upload.nsecsElapsed()) / 1e6;
@@ -212,6 +217,7 @@ void RenderView::showPreparationProgress(const QString& stage, int done, int tot
     else if (stage == QLatin1String("textures")) what = tr("decoding textures");
     else if (stage == QLatin1String("environment")) what = tr("loading the environment");
     else if (stage == QLatin1String("packing")) what = tr("packing the scene");
+    else if (stage == QLatin1String("picking")) what = tr("building the click picker");
     stats_.preparation = total > 1 ? tr("Preparing the scene: %1 %2/%3").arg(what).arg(done + 1).arg(total)
                                    : tr("Preparing the scene: %1").arg(what);
     emit statsChanged();
@@ -304,6 +310,7 @@ void RenderView::paintPreview() {
     } catch (const std::exception& e) {
         stats_.error = QString::fromStdString(e.what());
     }
+    picker(); // the raster views prepare no GPU scene: this starts a picker-only job where needed
     ++stats_.paints;
     drawOverlays();
     emit statsChanged();
@@ -364,6 +371,7 @@ void RenderView::drawOverlays() {
     if (mode_ == ViewMode::BvhCost && !readBack_.isNull()) overlays.drawCostLegend(readBack_.text(kCostScaleKey).toFloat());
     if (const auto frame = region_.frame(size()); frame && !showsRaster(mode_)) overlays.drawRegion(*frame);
     overlays.drawCameraPaths(lookThrough_);
+    overlays.drawNodeIcons(picking_->icons(document_.scene(), document_.currentTime()), lookThrough_);
     if (const NodeId node = document_.currentNode(); node.valid() && document_.scene().contains(node))
         overlays.drawGizmo(gizmoFrame(node), gizmoMode_, gizmoDrag_ ? gizmoDrag_->axis() : -1);
     if (!stats_.error.isEmpty()) overlays.drawMessage(stats_.error);
@@ -447,16 +455,18 @@ void RenderView::armFocusPick(bool on) {
 }
 
 const ScenePicker& RenderView::picker() {
-    if (!picker_) {
-        const Scene& scene = document_.scene();
-        picker_ = std::make_unique<ScenePicker>(scene.animations.empty() ? scene : sceneAt(scene, document_.currentTime()));
-    }
-    return *picker_;
+    // The path-traced views get the picker with their GPU scene; the raster views prepare none.
+    const bool preparationComing = preparer_->busy() || (!showsRaster(mode_) && renderer_ && stats_.error.isEmpty());
+    return picking_->picker(document_.scene(), document_.currentTime(), preparationComing);
 }
 
 bvh::Ray RenderView::rayAt(QPointF p) const { return pixelRay(camera_, p.x(), p.y(), width(), height()); }
 
-NodeId RenderView::pickAt(QPointF p) { return picker().pick(rayAt(p)).node; }
+NodeId RenderView::pickAt(QPointF p) {
+    const auto icons = projectIcons(picking_->icons(document_.scene(), document_.currentTime()), camera_, width(), height(), lookThrough_);
+    if (const auto icon = nearestIcon(icons, {p.x(), p.y()}, kIconPickRadius)) return *icon;
+    return picker().pick(rayAt(p)).node;
+}
 
 std::optional<QPointF> RenderView::project(const glm::dvec3& world) const {
     const glm::dvec3 p = projectToPixels(camera_, world, width(), height());

@@ -38,6 +38,7 @@ namespace glint::editor {
 
 class Document;
 class ScenePicker;
+class ViewPicking;
 class GizmoDrag;
 class ScenePreparer;
 struct PreparedDocument;
@@ -93,8 +94,11 @@ public:
     bool focusPickArmed() const { return focusPickArmed_; }
 
     void frameSelection();
-    NodeId pickAt(QPointF widgetPos);   // the node under a widget position (no selection change)
-    const ScenePicker& picker();
+    // The node under a widget position (no selection change): a light's or camera's icon within
+    // kIconPickRadius, else the nearest surface (none while the picker is on its way).
+    NodeId pickAt(QPointF widgetPos);
+    const ScenePicker& picker();        // empty (picks nothing) until the document's arrives
+    ViewPicking& picking() { return *picking_; }
     GizmoFrame gizmoFrame(NodeId node) const;
     std::optional<QPointF> project(const glm::dvec3& world) const; // world -> widget coordinates
     bvh::Ray rayAt(QPointF widgetPos) const;
@@ -148,7 +152,7 @@ private:
     std::set<std::pair<std::string, std::string>> reportedWarnings_; // (code, message) since the file was opened
     std::unique_ptr<renderer::raster::PreviewPass> preview_;
     bool previewStale_ = false;
-    std::unique_ptr<ScenePicker> picker_;
+    std::unique_ptr<ViewPicking> picking_; // the click picker, built on worker threads
     std::unique_ptr<GizmoDrag> gizmoDrag_;
     ViewCamera camera_;
     ViewMode mode_ = ViewMode::PathTraced;

@@ -4,8 +4,17 @@
 #include <QMetaObject>
 
 #include <exception>
+#include <utility>
+#include <vector>
 
 namespace glint::editor {
+
+std::shared_ptr<ScenePicker> pickerFromPreparation(const Scene& posed, const renderer::MeshData& meshes) {
+    std::vector<bvh::Aabb> roots;
+    roots.reserve(meshes.bvhs.size());
+    for (const bvh::MeshBvh& mesh : meshes.bvhs) roots.push_back(mesh.bounds());
+    return std::make_shared<ScenePicker>(posed, std::move(roots), meshes.ids, meshes.flat);
+}
 
 struct ScenePreparer::Job {
     Scene document;
@@ -65,6 +74,8 @@ void ScenePreparer::run(const std::shared_ptr<Job>& job) {
         const Scene posed = renderer::sceneForTime(job->document, job->time);
         auto result = std::make_unique<PreparedDocument>();
         result->gpu = renderer::prepareScene(posed, job->environmentFile, job->limits, *meshCache_, control, textureCache_.get());
+        control.progress("picking", 0, 1); // may stop here too
+        result->picker = pickerFromPreparation(posed, result->gpu.meshes);
         result->document = std::move(job->document);
         result->time = job->time;
         result->milliseconds = double(clock.nsecsElapsed()) / 1e6;

@@ -2,12 +2,14 @@
 // Runs the CPU stage of the GPU scene (renderer::prepareScene: mesh BVHs, top level, texture
 // decoding and mipmaps, packing) on a worker thread, so the viewport's event loop never waits for
 // it; the GL upload stays with the viewport, on the GL thread (no GL here, no context on the worker).
+// The click picker is built there too, from the same mesh BVHs (they are not built twice).
 //
 // One preparation runs at a time, on one worker, so the mesh BVH cache the worker keeps across
 // preparations is never shared. start() supersedes: the preparation in flight is cancelled at its
 // next step (between two meshes or two textures) and its result never arrives; only the newest
 // one's finished() or failed() is emitted. The destructor cancels and waits for the worker (at most
 // one step), so closing the document or the application leaves nothing running.
+#include "editor/viewport/scene_picker.h"
 #include "renderer/gpu_scene/prepared_scene.h"
 
 #include <QObject>
@@ -26,8 +28,13 @@ struct PreparedDocument {
     Scene document;
     double time = 0.0;
     renderer::PreparedScene gpu;
+    std::shared_ptr<ScenePicker> picker; // of the posed scene, over gpu's mesh BVHs
     double milliseconds = 0.0; // on the worker
 };
+
+// The click picker of a posed scene over the mesh BVHs a preparation built for it (a copy of their
+// flattened nodes and triangles: the GPU scene keeps its own).
+std::shared_ptr<ScenePicker> pickerFromPreparation(const Scene& posed, const renderer::MeshData& meshes);
 
 class ScenePreparer : public QObject {
     Q_OBJECT
@@ -46,7 +53,7 @@ public:
     std::unique_ptr<PreparedDocument> take();
 
 signals:
-    // stage: "meshes", "textures", "environment" or "packing"; done of total steps of that stage.
+    // stage: "textures", "packing", "meshes", "environment" or "picking"; done of total steps of that stage.
     void progress(const QString& stage, int done, int total);
     void finished();
     void failed(const QString& message);
