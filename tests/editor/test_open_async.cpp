@@ -180,6 +180,9 @@ private slots:
     // (b) Cancel: the document is at once exactly as it was, and the dropped scene never arrives.
     void cancelledOpenLeavesDocumentUntouched() {
         MainWindow window(options("autosave-b"));
+        window.resize(1000, 600);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
         Document& document = window.document();
         QVERIFY(window.openFile(cornellBox()));
         QCOMPARE(renameNode(document, nodeNamed(document, "floor"), "ground"), QString()); // unsaved, one undo step
@@ -194,6 +197,8 @@ private slots:
         window.beginOpen(large_);
         QTest::qWait(int(loadMs_ / 3)); // well into the load
         QVERIFY(document.isLoading());
+        // What a person sees meanwhile: the status bar's progress with its Cancel button.
+        window.grab().save(QStringLiteral(GLINT_TEST_OUTPUT_DIR "/editor_open_progress.png"));
         window.loadProgress().findChild<QToolButton*>("LoadProgress.cancel")->click();
         QVERIFY(!document.isLoading());
         QCOMPARE(cancelled.size(), 1);
