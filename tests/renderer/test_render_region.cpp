@@ -8,7 +8,7 @@
 // - the first frame bit for bit: the path-traced margin covers everything the filters read;
 // - every frame up to the 8th within 1e-4 (max |difference| of RGBA over the region; radiance here
 //   ~0.05-1): only history carries a trace of the outside, through the filters' weight tails.
-// Measured on llvmpipe: frames 1-2 equal, frame 8 max 1e-5 (edge), 9e-7 (inside). Without the
+// Measured on llvmpipe: frames 1-2 equal, frames 3-8 at most 1e-5 (edge and inside). Without the
 // margin (the scissor on the region alone, the filters reading the stale outside): 0.024 at the
 // edge on frame 1, up to 0.10 (edge) and 0.010 (inside) over 8 frames.
 #include "renderer/frame_renderer.h"
