@@ -10,6 +10,7 @@
 #include "exit_codes.h"
 #include "render_setup.h"
 #include "report.h"
+#include "scene_defaults.h"
 #include "scene_file.h"
 
 #include "image_metrics.h"
@@ -24,11 +25,8 @@
 
 #include <epoxy/gl.h>
 
-#include <glm/gtc/quaternion.hpp>
-
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -71,41 +69,6 @@ renderer::FrameSettings settingsFor(const BenchOptions& o, const Scene& scene, r
     s.width = o.size.width;
     s.height = o.size.height;
     return s;
-}
-
-bool hasCamera(const Scene& scene) {
-    for (const NodeId id : scene.depthFirst())
-        if (scene.at(id).get<Camera>()) return true;
-    return false;
-}
-
-// Scenes without a camera (sample models) get one that frames their meshes from the front (+Z),
-// slightly above, so the bench still measures them.
-void addFramingCamera(Scene& scene) {
-    glm::vec3 low(std::numeric_limits<float>::max()), high(-std::numeric_limits<float>::max());
-    for (const NodeId id : scene.depthFirst()) {
-        const MeshInstance* instance = scene.at(id).get<MeshInstance>();
-        if (!instance || !scene.meshes.contains(instance->mesh)) continue;
-        const glm::mat4 world = scene.worldFromNode(id);
-        for (const Primitive& primitive : scene.meshes.at(instance->mesh).primitives)
-            for (const glm::vec3& p : primitive.positions) {
-                const glm::vec3 w(world * glm::vec4(p, 1.0f));
-                low = glm::min(low, w);
-                high = glm::max(high, w);
-            }
-    }
-    if (low.x > high.x) throw std::runtime_error("the scene has neither a camera nor a mesh to frame");
-    const glm::vec3 centre = 0.5f * (low + high);
-    const float radius = 0.5f * glm::length(high - low);
-    Camera camera;
-    camera.yfov = 0.7f;
-    Node node;
-    node.name = "bench framing camera";
-    const glm::vec3 eye = centre + glm::normalize(glm::vec3(0.0f, 0.35f, 1.0f)) * (radius / std::sin(0.35f) * 1.05f);
-    node.local.translation = eye;
-    node.local.rotation = glm::quatLookAt(glm::normalize(centre - eye), glm::vec3(0.0f, 1.0f, 0.0f));
-    node.component = camera;
-    scene.settings.activeCamera = scene.addNode(std::move(node));
 }
 
 // The converged image every configuration is measured against (another seed than the runs).
@@ -250,9 +213,9 @@ std::vector<renderer::Configuration> parseConfigs(const std::vector<std::string>
 
 int runBench(const BenchOptions& o) {
     LoadResult loaded = openSceneFile(o.scene);
+    completeForRender(loaded, o.scene, o.camera, !o.env.empty(), o.size);
     if (reportWarnings(loaded.warnings, false)) return kFailure;
     Scene& scene = loaded.scene;
-    if (o.camera.empty() && !hasCamera(scene)) addFramingCamera(scene);
     const std::filesystem::path dir(o.out);
     std::filesystem::create_directories(dir);
     std::vector<BenchRow> rows;

@@ -2,6 +2,8 @@
 
 #include "scene/core/scene_bounds.h"
 
+#include <glm/gtc/quaternion.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -11,6 +13,8 @@ namespace {
 
 constexpr float kMargin = 1.1f;
 constexpr float kEmptySceneDistance = 5.0f;
+// From the front and a little above: a flat front view hides the top of most assets.
+const glm::vec3 kFromCentre = glm::normalize(glm::vec3(0.0f, 0.35f, 1.0f));
 
 // Distance from the centre at which a sphere of `radius` fills the narrower half-angle.
 float framingDistance(float radius, float yfov, float aspect) {
@@ -28,13 +32,13 @@ NodeId addDefaultView(Scene& scene, float aspect) {
     float distance = kEmptySceneDistance;
     if (!bounds.empty()) {
         centre = bounds.centre();
-        const float radius = 0.5f * glm::length(bounds.max - bounds.min);
-        distance = framingDistance(radius, camera.yfov, aspect);
-        camera.focusDistance = distance;
+        distance = framingDistance(0.5f * glm::length(bounds.max - bounds.min), camera.yfov, aspect);
     }
+    camera.focusDistance = distance;
     Node node;
     node.name = std::string(kDefaultViewName);
-    node.local.translation = centre + glm::vec3(0.0f, 0.0f, distance);
+    node.local.translation = centre + kFromCentre * distance;
+    node.local.rotation = glm::quatLookAt(-kFromCentre, glm::vec3(0.0f, 1.0f, 0.0f));
     node.component = camera;
     const NodeId id = scene.addNode(std::move(node));
     scene.settings.activeCamera = id;

@@ -1,9 +1,9 @@
 #pragma once
 // A camera for scenes that have none, such as most downloaded glTF assets, so that they render
-// without editing: glTF's front view (from +Z, looking along -Z, +Y up) through Blender's default
-// 39.6-degree lens, far enough back that the sphere around worldBounds fits the narrower field of
-// view with 10 % to spare (the editor's Frame All rule). A scene that draws nothing is looked at
-// from 5 m in front of the origin.
+// without editing: from glTF's front (+Z) and about 19 degrees above, looking at the centre of
+// worldBounds with +Y up, through Blender's default 39.6-degree lens, far enough back that the
+// sphere around the bounds fits the narrower field of view with 10 % to spare (the editor's Frame
+// All rule). A scene that draws nothing is looked at from 5 m away, the same way, at the origin.
 #include "scene/core/scene.h"
 
 #include <string_view>
