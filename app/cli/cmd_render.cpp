@@ -113,8 +113,10 @@ void addRenderCommand(CLI::App& app, Action& action) {
                                           "Render only pixels X,Y,W,H of the output image: whole pixels, origin at the "
                                           "top-left corner, inside the image. EXR: the region is the data window, the "
                                           "whole image the display window (every AOV alike); PNG/TIFF: the whole "
-                                          "image, transparent (alpha 0) outside; JPEG: black outside. Its pixels "
-                                          "equal a full render's (default: none, the whole image)")
+                                          "image, transparent (alpha 0) outside; JPEG: black outside. Accumulate/"
+                                          "Reference: bit for bit a full render's pixels; real-time configurations "
+                                          "path trace a margin as wide as their filters read (docs/FARM.md) "
+                                          "(default: none, the whole image)")
         ->check(CLI::Validator(rejection([](const std::string& v) { parseRegion(v); }), "X,Y,W,H", "region"));
     addAnimationOptions(*cmd, *options);
     addCommonRenderOptions(*cmd, options->common);
