@@ -5,6 +5,8 @@
 // The GPU scene is prepared on a worker thread (ScenePreparer: BVHs, textures, packing) and
 // uploaded here; meanwhile the view shows its last image of the document, or the raster preview.
 // Transform, light and material-value edits are applied in place at once (a top-level rebuild).
+// The click picker comes from worker threads too (ViewPicking); lights and cameras are clicked on
+// their icons.
 // When Qt re-creates the context (re-docking or floating the viewport), the GPU scene is uploaded
 // again from a preparation (the one in flight, if any).
 #include "editor/viewport/frame_budget.h"

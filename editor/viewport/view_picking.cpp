@@ -90,8 +90,7 @@ void ViewPicking::dropJob() {
 
 void ViewPicking::startJob(const Scene& document, double seconds) {
     auto job = std::make_shared<Job>();
-    Scene storage;
-    job->posed = &posedAt(document, seconds, storage) == &storage ? std::move(storage) : document;
+    job->posed = renderer::sceneAnimates(document) ? sceneAt(document, seconds) : document; // the worker's own copy
     job->meshes = meshes_;
     job->poses = poses_;
     dropJob();
