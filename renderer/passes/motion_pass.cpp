@@ -9,7 +9,7 @@
 namespace glint::renderer {
 
 MotionPass::MotionPass(gl::ProgramCache& programs, int width, int height)
-    : programs_(programs), motion_(width, height, {GL_RG32F}) {}
+    : programs_(programs), motion_(width, height, {GL_RGBA32F}) {}
 
 const gl::RenderTarget& MotionPass::execute(const gl::RenderTarget& gbuffer, const CameraSetup& camera,
                                             const CameraSetup& previousCamera, const std::vector<MovedInstance>& moved) {
@@ -38,7 +38,10 @@ const gl::RenderTarget& MotionPass::execute(const gl::RenderTarget& gbuffer, con
     };
     runStage(programs_, triangle_,
              {"reconstruction/motion.frag.glsl", {"outMotion"},
-              {{"uNormalDepth", gbuffer, normalDepthAttachment}, {"uObjectId", gbuffer, objectIdAttachment}}, uniforms},
+              {{"uNormalDepth", gbuffer, normalDepthAttachment},
+               {"uObjectId", gbuffer, objectIdAttachment},
+               {"uSpecularRadiance", gbuffer, specularRadianceAttachment}},
+              uniforms},
              motion_);
     return motion_;
 }

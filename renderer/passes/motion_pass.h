@@ -1,7 +1,9 @@
 #pragma once
-// Motion vectors (RG32F, previous minus current pixel position) from the G-buffer's depth and id,
-// the current and previous cameras, and the previous world transforms of instances that moved.
-// Input: G-buffer (normal + depth, id). Output: one RG32F target.
+// Motion vectors (previous minus current pixel position) from the G-buffer's depth and id, the
+// current and previous cameras, and the previous world transforms of instances that moved; and the
+// virtual motion of reflections, for SVGF's specular lobe (motion.frag.glsl).
+// Input: G-buffer (normal + depth, id, specular radiance's reflection distance). Output: one RGBA32F
+// target, xy: the surface's motion, zw: the reflected image's.
 #include "renderer/gpu_scene/camera_setup.h"
 #include "renderer/passes/fullscreen_stage.h"
 

@@ -1,7 +1,9 @@
 // Exact running mean, mean_n = mean_(n-1) + (x_n - mean_(n-1)) / n, read from the previous target
 // and written to the other one (ping-pong: never read and write one texture). Depth (normalDepth.w)
 // and object id come from the first sample: their means would mix surfaces. The mean of the squared
-// radiance gives each pixel's sample variance (statistical tests, the variance AOV).
+// radiance gives each pixel's sample variance (statistical tests, the variance AOV). The specular
+// radiance's alpha, the first bounce's reflection distance (0: none), is the first sample's that had
+// one: a mean would mix reflected surfaces, and samples without a reflection would pull it to 0.
 uniform sampler2D uPreviousRadiance;
 uniform sampler2D uPreviousAlbedo;
 uniform sampler2D uPreviousNormalDepth;
@@ -50,6 +52,8 @@ void main() {
     outDiffuseAlbedo = runningMean(uPreviousDiffuseAlbedo, uSampleDiffuseAlbedo, pixel);
     outSpecularAlbedo = runningMean(uPreviousSpecularAlbedo, uSampleSpecularAlbedo, pixel);
     outSpecularRadiance = runningMean(uPreviousSpecularRadiance, uSampleSpecularRadiance, pixel);
+    float reflectionDistance = firstSample(uPreviousSpecularRadiance, uSampleSpecularRadiance, pixel).a;
+    outSpecularRadiance.a = reflectionDistance > 0.0 ? reflectionDistance : texelFetch(uSampleSpecularRadiance, pixel, 0).a;
     vec4 radiance = texelFetch(uSampleRadiance, pixel, 0);
     // Squares of huge (finite) radiance would overflow to Inf: saturate at the largest float.
     outRadianceSquared = runningMean(texelFetch(uPreviousRadianceSquared, pixel, 0), min(radiance * radiance, vec4(3.0e38)));

@@ -108,8 +108,9 @@ float environmentMisWeight(vec3 direction, float bsdfPdf) {
 // `lobes`: the radiance split by the first hit's lobe that carried it (lobe_radiance.glsl).
 PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng, OUT(LobeRadiance) lobes) {
     PathResult result = PathResult(vec3(0.0), vec3(0.0), vec3(0.0), -1.0, 0.0, vec4(0.0, 1.0, 0.0, 0.0));
-    lobes = LobeRadiance(vec3(0.0), vec3(0.0));
+    lobes = noLobeRadiance();
     bool specularPath = false; // the first bounce left by a specular lobe (reflection or transmission)
+    bool reflectedPath = false; // ... and stayed on the side it came from
     vec3 throughput = vec3(1.0);
     vec3 attenuation = vec3(0.0); // Beer-Lambert sigma of the medium the ray travels in
     float lastBsdfPdf = 0.0;       // of the sampled direction; 0 for camera rays and delta lobes
@@ -120,6 +121,7 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng, OUT(LobeRadiance) l
         Hit hit = traceClosest(ray);
         float lampT;
         vec3 lamp = sphereLampEmission(ray, hit.t, lastBsdfPdf, lampT); // a sphere lamp in front ends the path
+        if (depth == 1 && reflectedPath) lobes.reflectionDistance = min(min(hit.t, lampT), REFLECTION_AT_INFINITY);
         if (lampT < hit.t) {
             addRadiance(result.radiance, lobes, throughput * lamp, specularPath);
             if (depth == 0) {
@@ -174,6 +176,7 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng, OUT(LobeRadiance) l
         }
         throughput *= bs.weight;
         if (depth == 0) specularPath = (bs.lobe & LOBE_DIFFUSE) == 0u;
+        if (depth == 0) reflectedPath = specularPath && (bs.wi.z > 0.0) == (v.wo.z > 0.0);
         lastBsdfPdf = (bs.lobe & LOBE_SPECULAR) != 0u ? 0.0 : bs.pdf;
         bool crosses = (bs.wi.z > 0.0) != (v.wo.z > 0.0);
         if (crosses && !v.material.thinWalled) attenuation = v.wo.z > 0.0 ? attenuationCoefficient(v.material) : vec3(0.0);

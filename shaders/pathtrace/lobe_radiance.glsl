@@ -7,10 +7,19 @@
 //   specular ones: metal, the dielectric layer, glass reflection and transmission);
 // - the first hit's emission, misses and Baseline's ambient term: diffuse (they pass the filter's
 //   demodulation unchanged).
+// `reflectionDistance`: how far the first bounce's ray went when that bounce was a reflection by a
+// specular lobe (metal, the dielectric layer, glass reflection): what SVGF's virtual motion vectors
+// place the reflected image by (motion.frag.glsl). 0: no such bounce (a diffuse or transmitted
+// bounce, or none); REFLECTION_AT_INFINITY: it left the scene (the image moves with rotation only).
 struct LobeRadiance {
     vec3 diffuse;
     vec3 specular;
+    float reflectionDistance;
 };
+
+const float REFLECTION_AT_INFINITY = 1.0e20; // far enough, and finite through a 4x4 transform
+
+LobeRadiance noLobeRadiance() { return LobeRadiance(vec3(0.0), vec3(0.0), 0.0); }
 
 // f * cos(wi) of the diffuse lobe alone: the Lambert term of opaqueEval (bsdf/bsdf.glsl).
 vec3 diffuseLobeEval(SurfaceMaterial m, vec3 wo, vec3 wi) {

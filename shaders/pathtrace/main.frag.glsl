@@ -36,13 +36,14 @@ out vec4 outSpecularAlbedo; // rgb: approximate directional albedo of the specul
 // The part of outRadiance the first hit's specular lobes carried (lobe_radiance.glsl); the rest is
 // the diffuse part. Only the SPLIT_LOBES variant (the SVGF configurations) writes it: elsewhere it
 // is 0 and the split compiles away. DEBUG_VIEW_DIFFUSE writes the diffuse part into outRadiance.
+// a: the first bounce's reflection distance (LobeRadiance) in the SPLIT_LOBES variant, else 1.
 out vec4 outSpecularRadiance;
 
 void main() {
     uvec2 pixel = uvec2(gl_FragCoord.xy);
     Rng rng = rngStart(pixel, uSampleIndex, uSeed);
     Ray ray = cameraRay(pixel, uSampleIndex, uSeed, rng);
-    LobeRadiance lobes = LobeRadiance(vec3(0.0), vec3(0.0));
+    LobeRadiance lobes = noLobeRadiance();
 #if defined(DEBUG_VIEW_BVH_COST)
     PathResult path = bvhCost(ray, cameraForward(), rng);
 #elif defined(DEBUG_VIEW_AO)
@@ -51,10 +52,10 @@ void main() {
     PathResult path = tracePath(ray, cameraForward(), rng, lobes);
 #endif
     outRadiance = vec4(finiteNonNegative(path.radiance), 1.0);
-    outSpecularRadiance = vec4(guardedSpecular(lobes.specular, outRadiance.rgb), 1.0);
+    outSpecularRadiance = vec4(guardedSpecular(lobes.specular, outRadiance.rgb), guardedReflectionDistance(lobes.reflectionDistance));
 #ifdef DEBUG_VIEW_DIFFUSE
     outRadiance = vec4(finiteNonNegative(lobes.diffuse), 1.0);
-    outSpecularRadiance = vec4(finiteNonNegative(lobes.specular), 1.0);
+    outSpecularRadiance.rgb = finiteNonNegative(lobes.specular);
 #endif
     outAlbedo = vec4(finiteNonNegative(path.albedo), 1.0);
     outNormalDepth = vec4(finiteOrZero(path.normal), path.depth);

@@ -19,3 +19,13 @@ vec3 guardedSpecular(vec3 specular, vec3 guardedRadiance) {
     return vec3(0.0);
 #endif
 }
+
+// The first bounce's reflection distance (lobe_radiance.glsl) in the SPLIT_LOBES variant (0 when
+// not finite or negative); elsewhere 1, as before it existed: only SVGF reads it.
+float guardedReflectionDistance(float distance) {
+#ifdef SPLIT_LOBES
+    return isFiniteFloat(distance) && distance > 0.0 ? distance : 0.0;
+#else
+    return 1.0;
+#endif
+}

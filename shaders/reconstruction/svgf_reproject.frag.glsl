@@ -1,10 +1,12 @@
 // SVGF stage 1: temporal accumulation of each lobe's demodulated illumination (diffuse and
 // specular apart) and of their first two luminance moments, with a history length per pixel
 // (Schied et al. 2017). Disoccluded pixels restart at 1.
-// Smooth specular lobes (mirrors, glass, a polished layer) see reflections whose motion the primary
-// motion vectors do not describe: while the pixel moves, their history is kept short (current-frame
-// weight up to 0.5 at roughness 0 from 1/4 px/frame); the diffuse lobe on the same pixel keeps its long
-// history, and a still view keeps both long (there the reflection does not move).
+// Smooth specular lobes (mirrors, glass, a polished layer) see reflections that move with the
+// reflected point's virtual image, not with the surface: their history is fetched at the virtual
+// motion (motion.frag.glsl, zw) blended with the surface's by roughness, and where that finds no
+// history of this surface, at the surface's. While the reflection moves, their history is kept short
+// (reflectionMotion); the diffuse lobe on the same pixel keeps its long history on the surface's
+// motion, and a still view keeps both long.
 // Guard: NaN/Inf become 0, and a pixel far brighter than all its neighbours (a firefly) is clamped
 // to them before it can enter history.
 #include "reconstruction/common.glsl"
@@ -64,11 +66,57 @@ void withoutFireflies(ivec2 pixel, inout vec3 diffuse, inout vec3 specular) {
     specular *= scale;
 }
 
-// 1 for a mirror moving a quarter pixel a frame or more, 0 from roughness 0.3 up or when still: how much shorter
-// the specular lobe's history is.
+// 1 for a mirror whose reflection moves a quarter pixel a frame or more, 0 from roughness 0.3 up or
+// when still: how much shorter the specular lobe's history is (current-frame weight up to
+// MOVING_MIRROR_ALPHA). Even reprojected by the reflected image's own motion, a sharp reflection
+// loses less to a short history than to a long one: the history is the first a-trous step's output,
+// so its blur compounds over the frames it keeps, and a moving view has a new one each frame.
+// Measured on a mirror floor under a pan (docs/DENOISING.md, failure mode 4): weight 0.5 -> 0.7
+// cut Full's error by 7 %, and 0.2 (no shortening) raised it by 40 %.
+const float MOVING_MIRROR_ALPHA = 0.7;
 float reflectionMotion(ivec2 p, vec2 motion) {
     float smoothness = 1.0 - clamp(texelFetch(uSpecularAlbedo, p, 0).a / 0.3, 0.0, 1.0);
     return smoothness * clamp(length(motion) / 0.25, 0.0, 1.0);
+}
+
+// How far the specular lobe follows the reflected image's virtual motion (motion.frag.glsl) rather
+// than the surface's: all of it on a mirror, none from roughness VIRTUAL_ROUGHNESS up, where the
+// lobe's wide highlight moves more with the surface than with any one reflected point.
+const float VIRTUAL_ROUGHNESS = 0.5;
+float virtualMotionWeight(ivec2 p) {
+    return 1.0 - clamp(texelFetch(uSpecularAlbedo, p, 0).a / VIRTUAL_ROUGHNESS, 0.0, 1.0);
+}
+
+// Bilinear history around `previous` over the taps that saw the same surface: rgb from `history`,
+// moments (two channels from `firstMoment`), length; w: the taps' total weight (0: none).
+struct Reprojected {
+    vec3 history;
+    vec2 moments;
+    float frames;
+    float weight;
+};
+
+Reprojected reproject(vec2 previous, sampler2D history, int firstMoment, vec4 normalDepth, float id) {
+    Reprojected r = Reprojected(vec3(0.0), vec2(0.0), 0.0, 0.0);
+    if (uHistoryValid == 0 || !insideImage(previous, vec2(textureSize(uRadiance, 0)))) return r;
+    ivec2 taps[4];
+    float weights[4];
+    sameSurfaceTaps(previous, textureSize(uRadiance, 0), normalDepth, id, uPreviousNormalDepth, uPreviousObjectId, taps, weights);
+    for (int k = 0; k < 4; ++k) {
+        if (weights[k] == 0.0) continue;
+        float w = weights[k];
+        ivec2 q = taps[k];
+        vec4 moments = texelFetch(uHistoryMoments, q, 0);
+        r.history += w * finiteRadiance(texelFetch(history, q, 0).rgb);
+        r.moments += w * (firstMoment == 0 ? moments.xy : moments.zw);
+        r.frames += w * texelFetch(uHistoryLength, q, 0).x;
+        r.weight += w;
+    }
+    if (r.weight < 1.0e-3) return Reprojected(vec3(0.0), vec2(0.0), 0.0, 0.0);
+    r.history /= r.weight;
+    r.moments /= r.weight;
+    r.frames /= r.weight;
+    return r;
 }
 
 void main() {
@@ -80,50 +128,36 @@ void main() {
     l.yw = l.xz * l.xz;
     vec4 normalDepth = texelFetch(uNormalDepth, pixel, 0);
     float id = texelFetch(uObjectId, pixel, 0).x;
-    vec2 motion = texelFetch(uMotion, pixel, 0).xy;
-    vec2 previous = gl_FragCoord.xy + motion;
+    vec4 motion = texelFetch(uMotion, pixel, 0);
 
-    // Bilinear reprojection over the taps that saw the same surface.
-    vec3 historyDiffuse = vec3(0.0), historySpecular = vec3(0.0);
-    vec4 moments = vec4(0.0);
-    float pastLength = 0.0;
-    float weight = 0.0;
-    if (uHistoryValid != 0 && insideImage(previous, vec2(textureSize(uRadiance, 0)))) {
-        ivec2 taps[4];
-        float weights[4];
-        sameSurfaceTaps(previous, textureSize(uRadiance, 0), normalDepth, id, uPreviousNormalDepth, uPreviousObjectId, taps, weights);
-        for (int k = 0; k < 4; ++k) {
-            if (weights[k] == 0.0) continue;
-            float w = weights[k];
-            ivec2 q = taps[k];
-            historyDiffuse += w * finiteRadiance(texelFetch(uHistoryDiffuse, q, 0).rgb);
-            historySpecular += w * finiteRadiance(texelFetch(uHistorySpecular, q, 0).rgb);
-            moments += w * texelFetch(uHistoryMoments, q, 0);
-            pastLength += w * texelFetch(uHistoryLength, q, 0).x;
-            weight += w;
-        }
-    }
-    if (weight < 1.0e-3) {
+    // The diffuse lobe follows the surface; the specular lobe the reflected image as far as its
+    // roughness says, or the surface where that finds no history of this surface (a curved mirror's
+    // image is approximate, and may reproject off it).
+    Reprojected d = reproject(gl_FragCoord.xy + motion.xy, uHistoryDiffuse, 0, normalDepth, id);
+    if (d.weight == 0.0) {
         outDiffuse = vec4(diffuse, 0.0);
         outSpecular = vec4(specular, 0.0);
         outMoments = l;
         outHistoryLength = vec4(1.0, 0.0, 0.0, 0.0);
         return;
     }
-    historyDiffuse /= weight;
-    historySpecular /= weight;
-    moments /= weight;
-    pastLength /= weight;
+    vec2 specularMotion = mix(motion.xy, motion.zw, virtualMotionWeight(pixel));
+    Reprojected s = reproject(gl_FragCoord.xy + specularMotion, uHistorySpecular, 1, normalDepth, id);
+    if (s.weight == 0.0) {
+        s = reproject(gl_FragCoord.xy + motion.xy, uHistorySpecular, 1, normalDepth, id);
+        specularMotion = motion.xy;
+    }
     // Where the lighting changed, history is shortened (and the variance turns spatial) by anti-lag.
     float stale = texelFetch(uAntiLag, pixel, 0).x;
-    float historyLength = mix(pastLength, 0.0, stale) + 1.0;
+    float historyLength = mix(d.frames, 0.0, stale) + 1.0;
     float alpha = max(max(uAlpha, 1.0 / historyLength), stale);
     float momentsAlpha = max(max(uMomentsAlpha, 1.0 / historyLength), stale);
-    float specularShort = mix(uAlpha, 0.5, reflectionMotion(pixel, motion));
-    vec2 alphas = vec2(alpha, max(alpha, specularShort));
-    vec4 m = mix(moments, l, vec4(momentsAlpha, momentsAlpha, max(momentsAlpha, specularShort), max(momentsAlpha, specularShort)));
-    outDiffuse = vec4(mix(historyDiffuse, diffuse, alphas.x), max(m.y - m.x * m.x, 0.0));
-    outSpecular = vec4(mix(historySpecular, specular, alphas.y), max(m.w - m.z * m.z, 0.0));
+    float specularShort = mix(uAlpha, MOVING_MIRROR_ALPHA, reflectionMotion(pixel, specularMotion));
+    float specularAlpha = max(alpha, specularShort);
+    float specularMomentsAlpha = max(momentsAlpha, specularShort);
+    vec4 m = vec4(mix(d.moments, l.xy, momentsAlpha), mix(s.moments, l.zw, specularMomentsAlpha));
+    outDiffuse = vec4(mix(d.history, diffuse, alpha), max(m.y - m.x * m.x, 0.0));
+    outSpecular = vec4(mix(s.history, specular, specularAlpha), max(m.w - m.z * m.z, 0.0));
     outMoments = m;
     outHistoryLength = vec4(historyLength, 0.0, 0.0, 0.0);
 }
