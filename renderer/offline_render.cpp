@@ -1,6 +1,7 @@
 #include "renderer/offline_render.h"
 
 #include "renderer/gl/headless_context.h"
+#include "scene/io/project_file.h"
 
 #include <epoxy/gl.h>
 
@@ -39,7 +40,11 @@ void validate(const RenderRequest& request) {
 std::filesystem::path environmentPath(const Scene& scene, const RenderRequest& request) {
     if (!request.envFile.empty()) return request.envFile;
     const std::string& file = scene.settings.environment.file;
-    return file.empty() ? std::filesystem::path() : request.sceneFolder / file;
+    if (file.empty()) return {};
+    // The project's path was checked at load; checked again here, where it is opened, so a symlink
+    // swapped since then or a path set after the load cannot lead out of the scene's folder.
+    const std::string folder = request.sceneFolder.empty() ? std::string(".") : request.sceneFolder.string();
+    return projectEnvironmentPath(request.sceneFolder, file, folder);
 }
 
 FrameSettings frameSettingsFor(const RenderRequest& request, int sppPerFrame) {

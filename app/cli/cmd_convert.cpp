@@ -20,7 +20,10 @@ struct ConvertOptions {
 int runConvert(const ConvertOptions& o) {
     LoadResult loaded = openSceneFile(o.input);
     if (reportWarnings(loaded.warnings, o.strict)) return kFailure;
-    SaveReport report = saveScene(loaded.scene, o.output);
+    // The project's environment image resolves in the input's folder: copied beside OUT like textures.
+    SaveOptions save;
+    save.sourceFolder = std::filesystem::absolute(o.input).parent_path();
+    SaveReport report = saveScene(loaded.scene, o.output, save);
     if (reportWarnings(report.dropped, o.strict)) return kFailure;
     return kSuccess;
 }

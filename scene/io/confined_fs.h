@@ -1,25 +1,10 @@
 #pragma once
-// The folder check of CONTRACTS.md: a path inside a scene file may not leave the scene's folder
-// (no `..` out of it, no absolute paths, no symlink pointing outside). Used for every URI the
-// glTF names and handed to tinygltf as its file-system callbacks.
+// tinygltf's file-system callbacks confined to the scene's folder (the check is confined_path.h).
+#include "confined_path.h"
+
 #include <tiny_gltf.h>
 
-#include <filesystem>
-#include <optional>
-#include <string>
-
 namespace glint {
-
-struct ConfinedFolder {
-    std::filesystem::path root; // the scene's folder
-};
-
-// Why `relative` may not be read from `folder` (a message naming the path), or nothing if it may.
-// Symlinks are resolved before the check, so a link that leads out of the folder is refused too.
-std::optional<std::string> confinementProblem(const ConfinedFolder& folder, const std::string& relative);
-
-// The path `relative` names inside `folder`, or FileError(file, "uri-escapes-folder") if it leaves it.
-std::filesystem::path confinedPath(const ConfinedFolder& folder, const std::string& relative, const std::string& file);
 
 // tinygltf callbacks that read only inside `folder` (which must outlive the loader) and never write.
 tinygltf::FsCallbacks confinedFsCallbacks(ConfinedFolder* folder);

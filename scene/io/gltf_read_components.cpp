@@ -3,6 +3,8 @@
 #include "gltf_read_json.h"
 #include "gltf_read_nodes.h"
 
+#include <glm/gtc/constants.hpp>
+
 namespace glint {
 
 namespace {
@@ -58,6 +60,34 @@ void readProjection(const JsonReader& json, const Json& source, const std::strin
     c.zfar = json.number(*p, "zfar", c.zfar, where + ".perspective");
 }
 
+// glTF requires yfov in (0, pi), znear > 0 (orthographic: >= 0), zfar > znear, aspectRatio > 0 and
+// xmag, ymag != 0; a degenerate camera casts every ray alike. Lenient but loud: each bad value is
+// replaced by a usable one and named.
+void fixCamera(GltfReadContext& ctx, const Json& source, const std::string& where, Camera& c)
+{
+    const Camera defaults;
+    const auto fix = [&](float& value, float replacement, const std::string& key, const char* rule) {
+        ctx.warn("invalid-value", where + "." + key + " is " + floatText(value) + " (" + rule + "): " +
+                                      (replacement == 0.0f && key.ends_with("zfar") ? "the far plane is dropped" : "replaced by " + floatText(replacement)));
+        value = replacement;
+    };
+    const bool ortho = c.projection == Projection::Orthographic;
+    const std::string kind = ortho ? "orthographic." : "perspective.";
+    const Json* projection = JsonReader{ctx.file}.member(source, ortho ? "orthographic" : "perspective");
+    if (ortho) {
+        if (c.xmag == 0.0f) fix(c.xmag, defaults.xmag, kind + "xmag", "must not be 0");
+        if (c.ymag == 0.0f) fix(c.ymag, defaults.ymag, kind + "ymag", "must not be 0");
+        if (c.znear < 0.0f) fix(c.znear, 0.0f, kind + "znear", "must be 0 or more");
+    } else {
+        if (!(c.yfov > 0.0f && c.yfov < glm::pi<float>())) fix(c.yfov, defaults.yfov, kind + "yfov", "must be between 0 and pi radians");
+        if (c.znear <= 0.0f) fix(c.znear, defaults.znear, kind + "znear", "must be greater than 0");
+        if (projection && projection->contains("aspectRatio") && c.aspectRatio <= 0.0f)
+            fix(c.aspectRatio, 0.0f, kind + "aspectRatio", "must be greater than 0; the output's is used");
+    }
+    // Absent zfar (perspective) is an infinite far plane, which is what a bad one becomes.
+    if (projection && projection->contains("zfar") && c.zfar <= c.znear) fix(c.zfar, 0.0f, kind + "zfar", "must be greater than znear");
+}
+
 LightType lightTypeFrom(const GltfReadContext& ctx, const std::string& type, const std::string& where)
 {
     if (type == "directional") return LightType::Sun;
@@ -77,13 +107,14 @@ ShapeKind shapeKindFrom(const GltfReadContext& ctx, const std::string& kind, con
 
 } // namespace
 
-Camera readCamera(const GltfReadContext& ctx, int camera, const Json& node, const std::string& nodeWhere)
+Camera readCamera(GltfReadContext& ctx, int camera, const Json& node, const std::string& nodeWhere)
 {
     const JsonReader json{ctx.file};
     const std::string where = "cameras[" + std::to_string(camera) + "]";
     const Json& source = ctx.doc["cameras"][static_cast<std::size_t>(camera)];
     Camera c;
     readProjection(json, source, where, c);
+    fixCamera(ctx, source, where, c);
     if (const Json* e = json.extension(source, "GLINT_camera", where)) {
         c.lensRadius = json.number(*e, "lensRadius", c.lensRadius, where + ".extensions.GLINT_camera");
         c.focusDistance = json.number(*e, "focusDistance", c.focusDistance, where + ".extensions.GLINT_camera");

@@ -1,6 +1,7 @@
 // GLB container checks and the depth-capped JSON parse. Nothing here trusts a length field: every
 // chunk is checked against the bytes actually present before it is used.
 #include "gltf_reader.h"
+#include "json_parse.h"
 
 #include <algorithm>
 
@@ -88,12 +89,7 @@ nlohmann::json parseGltfJson(std::string_view text, const std::string& file, int
 {
     if (jsonNestingDepth(text, maxDepth) > maxDepth)
         throw FileError(file, "json-too-deep", "the JSON nests deeper than " + std::to_string(maxDepth) + " levels");
-    nlohmann::json doc;
-    try {
-        doc = nlohmann::json::parse(text.begin(), text.end());
-    } catch (const nlohmann::json::exception& e) {
-        throw FileError(file, "invalid-json", std::string("not valid JSON: ") + e.what());
-    }
+    const nlohmann::json doc = parseJsonText(text, file, maxDepth);
     if (!doc.is_object()) throw FileError(file, "wrong-type", "the glTF's top level must be a JSON object");
     return doc;
 }

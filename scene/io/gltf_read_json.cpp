@@ -126,6 +126,13 @@ Json unknownMembers(const Json& object, std::initializer_list<std::string_view> 
     return out;
 }
 
+std::string floatText(float value)
+{
+    char text[32];
+    const auto end = std::to_chars(text, text + sizeof text, value).ptr;
+    return std::string(text, end);
+}
+
 float finiteFloat(double value, const std::string& file, const std::string& where)
 {
     if (!std::isfinite(value) || std::abs(value) > static_cast<double>(std::numeric_limits<float>::max()))

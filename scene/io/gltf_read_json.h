@@ -34,6 +34,9 @@ struct JsonReader {
 // {"extensions": {the ones not in `known`}, "extras": ...} of an object; null when there is nothing.
 Json unknownMembers(const Json& object, std::initializer_list<std::string_view> known = {});
 
+// The shortest decimal that reads back as `value` (locale-independent), for messages.
+std::string floatText(float value);
+
 // Floats stay within float range: 1e39 or an overflow is as wrong as NaN (non-finite-value).
 float finiteFloat(double value, const std::string& file, const std::string& where);
 

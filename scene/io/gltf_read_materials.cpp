@@ -3,6 +3,9 @@
 #include "gltf_read_json.h"
 #include "gltf_reader.h"
 
+#include <algorithm>
+#include <limits>
+
 namespace glint {
 
 namespace {
@@ -86,7 +89,38 @@ void readExtensions(const GltfReadContext& ctx, const Json& source, const std::s
     }
 }
 
-Material readMaterial(const GltfReadContext& ctx, std::size_t index)
+// glTF bounds these factors; renderers disagree on what a value beyond them means (a roughness of
+// -5 is no surface at all). Lenient but loud: clamped into range, each one named.
+void clampFactor(GltfReadContext& ctx, float& value, float low, float high, const std::string& where)
+{
+    if (value >= low && value <= high) return;
+    const float clamped = std::clamp(value, low, high);
+    ctx.warn("invalid-value", where + " is " + floatText(value) + ", outside " + floatText(low) +
+                                  (high == std::numeric_limits<float>::max() ? " or more" : ".." + floatText(high)) +
+                                  ": clamped to " + floatText(clamped));
+    value = clamped;
+}
+
+void clampFactors(GltfReadContext& ctx, Material& m, const std::string& where)
+{
+    constexpr float kUnbounded = std::numeric_limits<float>::max();
+    const std::string pbr = where + ".pbrMetallicRoughness.";
+    for (int i = 0; i < 4; ++i)
+        clampFactor(ctx, m.baseColorFactor[i], 0.0f, 1.0f, pbr + "baseColorFactor[" + std::to_string(i) + "]");
+    clampFactor(ctx, m.metallicFactor, 0.0f, 1.0f, pbr + "metallicFactor");
+    clampFactor(ctx, m.roughnessFactor, 0.0f, 1.0f, pbr + "roughnessFactor");
+    // Above 1 is kept: files written before KHR_materials_emissive_strength encode strength there.
+    for (int i = 0; i < 3; ++i)
+        clampFactor(ctx, m.emissiveFactor[i], 0.0f, kUnbounded, where + ".emissiveFactor[" + std::to_string(i) + "]");
+    clampFactor(ctx, m.alphaCutoff, 0.0f, kUnbounded, where + ".alphaCutoff");
+    const std::string ext = where + ".extensions.";
+    clampFactor(ctx, m.emissiveStrength, 0.0f, kUnbounded, ext + "KHR_materials_emissive_strength.emissiveStrength");
+    clampFactor(ctx, m.specularFactor, 0.0f, 1.0f, ext + "KHR_materials_specular.specularFactor");
+    clampFactor(ctx, m.transmissionFactor, 0.0f, 1.0f, ext + "KHR_materials_transmission.transmissionFactor");
+    clampFactor(ctx, m.thicknessFactor, 0.0f, kUnbounded, ext + "KHR_materials_volume.thicknessFactor");
+}
+
+Material readMaterial(GltfReadContext& ctx, std::size_t index)
 {
     const JsonReader json{ctx.file};
     const Json& source = ctx.doc["materials"][index];
@@ -102,6 +136,7 @@ Material readMaterial(const GltfReadContext& ctx, std::size_t index)
     m.alphaCutoff = json.number(source, "alphaCutoff", m.alphaCutoff, where);
     m.doubleSided = json.boolean(source, "doubleSided", m.doubleSided, where);
     readExtensions(ctx, source, where, m);
+    clampFactors(ctx, m, where);
     m.unknown = unknownMembers(source, {"KHR_materials_emissive_strength", "KHR_materials_specular", "KHR_materials_transmission",
                                         "KHR_materials_ior", "KHR_materials_volume"});
     return m;

@@ -37,6 +37,22 @@ Transform matrixTransform(GltfReadContext& ctx, const Json& node, const std::str
     return t;
 }
 
+// glTF rotations are unit quaternions. A zero one has no rotation to recover (identity, named); a
+// visibly non-unit one is normalised, named too; exporters' rounding (within 1e-3) passes quietly.
+glm::quat unitRotation(GltfReadContext& ctx, const glm::vec4& q, const std::string& where)
+{
+    const double length = std::sqrt(double(q.x) * q.x + double(q.y) * q.y + double(q.z) * q.z + double(q.w) * q.w);
+    const std::string text = "[" + floatText(q.x) + ", " + floatText(q.y) + ", " + floatText(q.z) + ", " + floatText(q.w) + "]";
+    if (length < 1e-6) {
+        ctx.warn("invalid-value", where + ".rotation is " + text + ", not a rotation (a unit quaternion): the identity is used");
+        return glm::quat(1.0f, 0.0f, 0.0f, 0.0f);
+    }
+    const glm::quat rotation(q.w, q.x, q.y, q.z);
+    if (std::abs(length - 1.0) <= 1e-3) return rotation;
+    ctx.warn("invalid-value", where + ".rotation is " + text + ", not a unit quaternion: normalised");
+    return glm::normalize(rotation);
+}
+
 Transform readTransform(GltfReadContext& ctx, const Json& node, const std::string& where)
 {
     const JsonReader json{ctx.file};
@@ -46,7 +62,7 @@ Transform readTransform(GltfReadContext& ctx, const Json& node, const std::strin
     } else {
         t.translation = json.vec3(node, "translation", t.translation, where);
         const glm::vec4 q = json.vec4(node, "rotation", glm::vec4(0.0f, 0.0f, 0.0f, 1.0f), where);
-        t.rotation = glm::quat(q.w, q.x, q.y, q.z);
+        t.rotation = unitRotation(ctx, q, where);
         t.scale = json.vec3(node, "scale", t.scale, where);
     }
     if (t.scale.x == 0.0f || t.scale.y == 0.0f || t.scale.z == 0.0f)

@@ -17,7 +17,7 @@ std::vector<int> nodesToLoad(GltfReadContext& ctx, const std::vector<int>& paren
 // Ids from GLINT_node, else i + 1 for glTF node i; duplicates and clashes get the next free id.
 std::vector<NodeId> assignNodeIds(GltfReadContext& ctx, const std::vector<int>& loaded);
 
-Camera readCamera(const GltfReadContext& ctx, int camera, const nlohmann::json& node, const std::string& where);
+Camera readCamera(GltfReadContext& ctx, int camera, const nlohmann::json& node, const std::string& where);
 Light readLight(const GltfReadContext& ctx, int light);
 Shape readShape(const GltfReadContext& ctx, const nlohmann::json& extension, const std::string& where);
 

@@ -2,9 +2,12 @@
 // error naming the key), unknown keys kept with a warning, older schemas migrated step by step.
 #include "project_file.h"
 
+#include "confined_path.h"
 #include "json_numbers.h"
+#include "json_parse.h"
 
 #include <array>
+#include <cmath>
 #include <exception>
 #include <fstream>
 #include <limits>
@@ -197,17 +200,29 @@ void readSvgf(ObjectReader& r, SvgfParameters& s)
                   "a number of at least 1");
 }
 
+// The command line's ranges (--size, --spp, --bounces), so a project renders whatever it says and
+// a value the CLI would refuse is refused at load, naming the file and the key.
+bool inRange(int v, int low, int high) { return v >= low && v <= high; }
+bool finiteFloat(float v) { return std::isfinite(v); }
+bool nonNegativeFinite(float v) { return std::isfinite(v) && v >= 0.0f; }
+
 void readRender(ObjectReader& r, RenderSettings& s)
 {
     r.read("configuration", s.configuration);
-    r.read("width", s.width);
-    r.read("height", s.height);
-    r.read("spp", s.spp);
-    r.read("bounces", s.bounces);
+    const auto size = [](int v) { return inRange(v, 1, kMaxProjectImageSize); };
+    const std::string sizeText = "an integer from 1 to " + std::to_string(kMaxProjectImageSize);
+    r.readChecked("width", s.width, size, sizeText);
+    r.readChecked("height", s.height, size, sizeText);
+    r.readChecked("spp", s.spp, [](int v) { return inRange(v, 1, kMaxProjectSpp); },
+                  "an integer from 1 to " + std::to_string(kMaxProjectSpp));
+    r.readChecked("bounces", s.bounces, [](int v) { return inRange(v, 0, kMaxProjectBounces); },
+                  "an integer from 0 to " + std::to_string(kMaxProjectBounces));
     r.read("seed", s.seed);
-    r.read("exposure", s.exposure);
+    r.readChecked("exposure", s.exposure, [](float v) { return std::abs(v) <= kMaxProjectExposureEv; },
+                  "a number of stops from -" + std::to_string(int(kMaxProjectExposureEv)) + " to " +
+                      std::to_string(int(kMaxProjectExposureEv)));
     r.readEnum("tonemapper", s.tonemapper, kTonemapperNames);
-    r.read("clamp", s.clamp);
+    r.readChecked("clamp", s.clamp, nonNegativeFinite, "0 (off) or a positive number");
     r.object("taa", [&](ObjectReader& nested) { readTaa(nested, s.taa); });
     r.object("svgf", [&](ObjectReader& nested) { readSvgf(nested, s.svgf); });
 }
@@ -215,9 +230,10 @@ void readRender(ObjectReader& r, RenderSettings& s)
 void readEnvironment(ObjectReader& r, Environment& e)
 {
     r.read("file", e.file);
-    r.read("color", e.color);
-    r.read("intensity", e.intensity);
-    r.read("rotation", e.rotationDegrees);
+    r.readChecked("color", e.color, [](const glm::vec3& c) { return nonNegativeFinite(c.x) && nonNegativeFinite(c.y) && nonNegativeFinite(c.z); },
+                  "3 numbers of at least 0");
+    r.readChecked("intensity", e.intensity, nonNegativeFinite, "a number of at least 0");
+    r.readChecked("rotation", e.rotationDegrees, finiteFloat, "a finite number of degrees");
 }
 
 void readTimeline(ObjectReader& r, Timeline& t)
@@ -271,18 +287,6 @@ void migrate(json& root, const std::string& file)
     root["glint"] = kProjectSchemaVersion;
 }
 
-json parseJson(const std::string& text, const std::string& file)
-{
-    try {
-        return json::parse(text, [&](int depth, json::parse_event_t, json&) {
-            if (depth > kMaxJsonDepth) throw FileError(file, "too-deep", "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
-            return true;
-        });
-    } catch (const json::exception& e) {
-        throw FileError(file, "invalid-json", std::string("invalid JSON: ") + e.what());
-    }
-}
-
 // Only what differs from the defaults, so files that never touched these stay byte-identical.
 json taaJson(const TaaParameters& t)
 {
@@ -327,7 +331,7 @@ bool isProjectPath(const std::filesystem::path& file)
 
 ProjectFile parseProjectFile(const std::string& text, const std::string& displayName, Warnings& warnings)
 {
-    json root = parseJson(text, displayName);
+    json root = parseJsonText(text, displayName, kMaxJsonDepth);
     if (!root.is_object()) throw FileError(displayName, "wrong-type", "a project file must be a JSON object");
     migrate(root, displayName);
     ProjectFile project;
@@ -346,7 +350,19 @@ ProjectFile readProjectFile(const std::filesystem::path& file, Warnings& warning
     if (!in) throw FileError(file.string(), "cannot-open", "cannot open the project file");
     std::ostringstream text;
     text << in.rdbuf();
-    return parseProjectFile(text.str(), file.string(), warnings);
+    ProjectFile project = parseProjectFile(text.str(), file.string(), warnings);
+    if (const std::string& env = project.settings.environment.file; !env.empty())
+        projectEnvironmentPath(file.parent_path(), env, file.string());
+    return project;
+}
+
+std::filesystem::path projectEnvironmentPath(const std::filesystem::path& projectFolder, const std::string& file,
+                                             const std::string& displayName)
+{
+    const ConfinedFolder folder{projectFolder.empty() ? std::filesystem::path(".") : projectFolder};
+    if (auto problem = confinementProblem(folder, file))
+        throw FileError(displayName, "uri-escapes-folder", "key 'environment.file': " + *problem);
+    return folder.root / file;
 }
 
 std::string writeProjectFileText(const ProjectFile& project)

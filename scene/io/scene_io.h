@@ -38,6 +38,10 @@ LoadResult loadGltfFromMemory(std::span<const std::uint8_t> bytes, const std::fi
 
 struct SaveOptions {
     bool writeProjectFile = true;
+    // The folder the scene's own relative paths resolve in now (the project's environment image):
+    // the folder of the file it was loaded from or last saved to. Empty: the folder saved to (a save
+    // in place). Saving into another folder copies the environment image there, as it does textures.
+    std::filesystem::path sourceFolder;
 };
 
 struct SaveReport {

@@ -1,10 +1,11 @@
 // loadScene: a .gltf, a .glb, or a project file (.glint.json) that names its glTF.
-#include "confined_fs.h"
+#include "confined_path.h"
 #include "scene/io/project_file.h"
 #include "scene/io/scene_io.h"
 
 #include <fstream>
 #include <iterator>
+#include <variant>
 
 namespace glint {
 
@@ -30,6 +31,19 @@ LoadResult loadGltfFile(const fs::path& file, const LoadOptions& options)
     return loadGltfFromMemory(bytes, folder, file.string(), options);
 }
 
+// The project's active camera must be a camera node of the glTF it belongs to: a dangling id would
+// render through some other camera without a word.
+void checkActiveCamera(const Scene& scene, const fs::path& project)
+{
+    const NodeId id = scene.settings.activeCamera;
+    if (!id.valid()) return;
+    const Node* node = scene.node(id);
+    if (!node || !std::holds_alternative<Camera>(node->component))
+        throw FileError(project.string(), "bad-value",
+                        "key 'activeCamera' must be the id of a camera node of the scene: " + std::to_string(id.value) +
+                            (node ? " is not a camera" : " names no node"));
+}
+
 // The project file beside a glTF, when there is one.
 void addProjectSettings(LoadResult& result, const fs::path& sceneFile)
 {
@@ -37,6 +51,7 @@ void addProjectSettings(LoadResult& result, const fs::path& sceneFile)
     std::error_code error;
     if (!fs::exists(project, error)) return;
     result.scene.settings = readProjectFile(project, result.warnings).settings;
+    checkActiveCamera(result.scene, project);
 }
 
 } // namespace
@@ -49,6 +64,7 @@ LoadResult loadScene(const fs::path& file, const LoadOptions& options)
         const ConfinedFolder folder{file.parent_path().empty() ? fs::path(".") : file.parent_path()};
         LoadResult result = loadGltfFile(confinedPath(folder, project.sceneFile, file.string()), options);
         result.scene.settings = std::move(project.settings);
+        checkActiveCamera(result.scene, file);
         warnings.insert(warnings.end(), result.warnings.begin(), result.warnings.end());
         result.warnings = std::move(warnings);
         return result;

@@ -2,11 +2,13 @@
 #include "scene_io.h"
 
 #include "atomic_save.h"
+#include "environment_save.h"
 #include "gltf_writer.h"
 #include "project_file.h"
 
 #include <algorithm>
 #include <system_error>
+#include <variant>
 
 namespace glint {
 
@@ -43,6 +45,33 @@ void removeOldBuffers(const std::filesystem::path& folder, const std::string& ba
     }
 }
 
+// The project as saved: its environment image copied beside the new file (added to `data`), and
+// nothing the loader would refuse (an active camera that is no camera node is left out), so every
+// saved scene opens again.
+ProjectSettings settingsForSave(const Scene& scene, const std::string& displayName, const std::filesystem::path& folder,
+                                const SaveOptions& options, std::vector<PendingFile>& data, Warnings& dropped)
+{
+    ProjectSettings settings = scene.settings;
+    if (!options.writeProjectFile) return settings;
+    EnvironmentSaveContext context{options.sourceFolder.empty() ? folder : std::filesystem::absolute(options.sourceFolder),
+                                   folder, {}, displayName};
+    const std::filesystem::path project = projectPathFor(std::filesystem::path(displayName)).filename();
+    context.taken = {std::filesystem::path(displayName).filename(), project};
+    for (const PendingFile& file : data) context.taken.push_back(file.path.lexically_relative(folder));
+    EnvironmentSave environment = saveEnvironment(settings.environment, context, dropped);
+    settings.environment.file = environment.file;
+    if (environment.copy) data.push_back(std::move(*environment.copy));
+
+    const NodeId camera = settings.activeCamera;
+    const Node* node = camera.valid() ? scene.node(camera) : nullptr;
+    if (camera.valid() && (!node || !std::holds_alternative<Camera>(node->component))) {
+        dropped.push_back({displayName, "active-camera-dropped",
+                           "the active camera " + std::to_string(camera.value) + " is not a camera node: left out of the project file"});
+        settings.activeCamera = {};
+    }
+    return settings;
+}
+
 } // namespace
 
 std::vector<std::uint8_t> writeGlb(const Scene& scene, SaveReport* report)
@@ -71,15 +100,17 @@ SaveReport saveScene(const Scene& scene, const std::filesystem::path& file, cons
     std::vector<PendingFile> data;
     if (!output.binUri.empty()) data.push_back({folder / output.binUri, output.bin});
     for (ExternalFile& image : output.images) data.push_back({folder / image.path, std::move(image.bytes)});
+    Warnings dropped = std::move(output.dropped);
+    const ProjectSettings settings = settingsForSave(scene, file.string(), folder, options, data, dropped);
     std::vector<std::vector<PendingFile>> stages{std::move(data)};
     const bool binary = writeOptions.container == GltfContainer::Binary;
     stages.push_back({{target, binary ? glbBytes(output) : bytesOf(output.json)}});
     if (options.writeProjectFile)
-        stages.push_back({{project, bytesOf(writeProjectFileText({target.filename().string(), scene.settings}))}});
+        stages.push_back({{project, bytesOf(writeProjectFileText({target.filename().string(), settings}))}});
 
     SaveReport report;
     report.written = saveFilesAtomically(stages);
-    report.dropped = std::move(output.dropped);
+    report.dropped = std::move(dropped);
     if (!binary) removeOldBuffers(folder, writeOptions.baseName, output.binUri);
     return report;
 }

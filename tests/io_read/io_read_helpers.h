@@ -125,6 +125,7 @@ inline void writeFile(const std::filesystem::path& file, const std::vector<std::
 struct Caught {
     std::string code;
     std::string message;
+    std::string file = {};
 };
 
 inline Caught errorOf(const std::function<void()>& call)
@@ -132,7 +133,7 @@ inline Caught errorOf(const std::function<void()>& call)
     try {
         call();
     } catch (const FileError& e) {
-        return {e.code(), e.message()};
+        return {e.code(), e.message(), e.file()};
     }
     return {"(no error)", ""};
 }

@@ -258,6 +258,114 @@ private slots:
         GLINT_EXPECT_ERROR(loadJson(doc), "invalid-gltf", "accessors[0] has an unknown componentType or type");
     }
 
+    // A number beyond double range is grammatically valid JSON: it is a non-finite value, named by
+    // its JSON path, and no message leaks the parser's exception ids.
+    void numberBeyondDoubleRangeIsNonFinite()
+    {
+        Json doc = triangle().finish();
+        doc["nodes"][0]["translation"] = {0, 0, 0};
+        std::string text = doc.dump();
+        const std::string plain = "\"translation\":[0,0,0]";
+        QVERIFY(text.find(plain) != std::string::npos);
+        text.replace(text.find(plain), plain.size(), "\"translation\":[0,1e400,0]");
+        const Caught caught = errorOf([&] { (void)loadGltfFromMemory(bytesOf(text), ".", "inf.gltf"); });
+        QCOMPARE(QString::fromStdString(caught.code), QStringLiteral("non-finite-value"));
+        QCOMPARE(QString::fromStdString(caught.file), QStringLiteral("inf.gltf"));
+        QCOMPARE(QString::fromStdString(caught.message), QStringLiteral("nodes[0].translation[1] is 1e400, beyond the range of a number"));
+        const Caught invalid = errorOf([&] { (void)loadGltfFromMemory(bytesOf("{\"asset\": 1,"), ".", "bad.gltf"); });
+        QCOMPARE(QString::fromStdString(invalid.code), QStringLiteral("invalid-json"));
+        QVERIFY2(invalid.message.find("json.exception") == std::string::npos, invalid.message.c_str());
+    }
+
+    // glTF forbids these camera values; each is repaired and named (file, camera, key, value).
+    void degenerateCamerasAreRepairedLoudly_data()
+    {
+        QTest::addColumn<QString>("camera");
+        QTest::addColumn<QString>("message");
+        QTest::addColumn<float>("yfov");
+        QTest::addColumn<float>("znear");
+        QTest::addColumn<float>("zfar");
+        QTest::addColumn<float>("xmag");
+        const float yfov = Camera{}.yfov;
+        QTest::newRow("yfov 0") << R"({"type": "perspective", "perspective": {"yfov": 0, "znear": 0.1}})"
+                                << "cameras[0].perspective.yfov is 0 (must be between 0 and pi radians): replaced by 0.6911112" << yfov << 0.1f << 0.0f << 1.0f;
+        QTest::newRow("yfov negative") << R"({"type": "perspective", "perspective": {"yfov": -1, "znear": 0.1}})"
+                                       << "cameras[0].perspective.yfov is -1" << yfov << 0.1f << 0.0f << 1.0f;
+        QTest::newRow("yfov 10 rad") << R"({"type": "perspective", "perspective": {"yfov": 10, "znear": 0.1}})"
+                                     << "cameras[0].perspective.yfov is 10" << yfov << 0.1f << 0.0f << 1.0f;
+        QTest::newRow("znear 0") << R"({"type": "perspective", "perspective": {"yfov": 1, "znear": 0}})"
+                                 << "cameras[0].perspective.znear is 0 (must be greater than 0): replaced by 0.01" << 1.0f << 0.01f << 0.0f << 1.0f;
+        QTest::newRow("zfar < znear") << R"({"type": "perspective", "perspective": {"yfov": 1, "znear": 1, "zfar": 0.5}})"
+                                      << "cameras[0].perspective.zfar is 0.5 (must be greater than znear): the far plane is dropped" << 1.0f << 1.0f << 0.0f << 1.0f;
+        QTest::newRow("xmag 0") << R"({"type": "orthographic", "orthographic": {"xmag": 0, "ymag": 2, "znear": 0, "zfar": 10}})"
+                                << "cameras[0].orthographic.xmag is 0 (must not be 0): replaced by 1" << yfov << 0.0f << 10.0f << 1.0f;
+    }
+
+    void degenerateCamerasAreRepairedLoudly()
+    {
+        QFETCH(QString, camera);
+        QFETCH(QString, message);
+        Json doc = triangle().finish();
+        doc["cameras"] = Json::array({Json::parse(camera.toStdString())});
+        doc["nodes"].push_back({{"camera", 0}, {"name", "cam"}});
+        doc["scenes"][0]["nodes"].push_back(1);
+        const LoadResult r = loadJson(doc);
+        const Warning* w = findWarning(r.warnings, "invalid-value");
+        QVERIFY(w);
+        QCOMPARE(QString::fromStdString(w->file), QStringLiteral("test.gltf"));
+        QVERIFY2(w->message.find(message.toStdString()) != std::string::npos, w->message.c_str());
+        const NodeId id = *r.scene.findByName("cam");
+        const Camera* c = r.scene.at(id).get<Camera>();
+        QVERIFY(c);
+        QTEST(c->yfov, "yfov");
+        QTEST(c->znear, "znear");
+        QTEST(c->zfar, "zfar");
+        QTEST(c->xmag, "xmag");
+    }
+
+    void validCameraHasNoWarning()
+    {
+        Json doc = triangle().finish();
+        doc["cameras"] = Json::array({{{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.1}, {"zfar", 100}}}}});
+        doc["nodes"][0]["camera"] = 0;
+        QVERIFY(!hasWarning(loadJson(doc).warnings, "invalid-value"));
+    }
+
+    void zeroQuaternionIsIdentityWithWarning()
+    {
+        Json doc = triangle().finish();
+        doc["nodes"][0]["rotation"] = {0, 0, 0, 0};
+        const LoadResult r = loadJson(doc);
+        const Warning* w = findWarning(r.warnings, "invalid-value");
+        QVERIFY(w);
+        QCOMPARE(QString::fromStdString(w->file), QStringLiteral("test.gltf"));
+        QVERIFY2(w->message.find("nodes[0].rotation is [0, 0, 0, 0], not a rotation") != std::string::npos, w->message.c_str());
+        const glm::quat q = r.scene.at(r.scene.roots()[0]).local.rotation;
+        QCOMPARE(q, glm::quat(1.0f, 0.0f, 0.0f, 0.0f));
+        // A far-from-unit rotation is normalised (named); exporters' rounding passes quietly.
+        doc["nodes"][0]["rotation"] = {0, 0, 0, 2};
+        QVERIFY(hasWarning(loadJson(doc).warnings, "invalid-value"));
+        doc["nodes"][0]["rotation"] = {0, 0, 0, 1.0001};
+        QVERIFY(!hasWarning(loadJson(doc).warnings, "invalid-value"));
+    }
+
+    void materialFactorsOutOfRangeAreClamped()
+    {
+        Json doc = triangle().finish();
+        doc["materials"] = Json::array({{{"pbrMetallicRoughness", {{"roughnessFactor", -5}, {"metallicFactor", 7}}}}});
+        doc["meshes"][0]["primitives"][0]["material"] = 0;
+        const LoadResult r = loadJson(doc);
+        const Material& m = r.scene.materials.begin()->second;
+        QCOMPARE(m.roughnessFactor, 0.0f);
+        QCOMPARE(m.metallicFactor, 1.0f);
+        std::vector<std::string> messages;
+        for (const Warning& w : r.warnings)
+            if (w.code == "invalid-value" && w.file == "test.gltf") messages.push_back(w.message);
+        QCOMPARE(messages.size(), std::size_t(2));
+        QCOMPARE(QString::fromStdString(messages[0]), QStringLiteral("materials[0].pbrMetallicRoughness.metallicFactor is 7, outside 0..1: clamped to 1"));
+        QCOMPARE(QString::fromStdString(messages[1]), QStringLiteral("materials[0].pbrMetallicRoughness.roughnessFactor is -5, outside 0..1: clamped to 0"));
+    }
+
     void indicesMustBeUnsignedIntegers()
     {
         Json doc = triangle().finish();

@@ -144,6 +144,69 @@ private slots:
         GLINT_EXPECT_ERROR(loadJson(doc, folder() / "scene"), "uri-escapes-folder", "'link.bin' resolves through a symlink to a place outside the scene's folder: refused");
     }
 
+    // The project file's environment image follows the glTF URI rule (CONTRACTS.md): refused at load,
+    // naming the project file and the key.
+    void environmentEscapingTheFolder_data()
+    {
+        QTest::addColumn<QString>("env");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("dot dot") << "../outside.hdr" << "key 'environment.file': '../outside.hdr' leads out of the scene's folder ('..'): refused";
+        QTest::newRow("dot dot inside") << "hdr/../../outside.hdr" << "leads out of the scene's folder";
+        QTest::newRow("absolute") << "/etc/passwd" << "key 'environment.file': '/etc/passwd' is an absolute path";
+        QTest::newRow("symlink out") << "link.hdr" << "key 'environment.file': 'link.hdr' resolves through a symlink to a place outside the scene's folder: refused";
+    }
+
+    void environmentEscapingTheFolder()
+    {
+        QFETCH(QString, env);
+        QFETCH(QString, message);
+        const fs::path scene = folder() / "envscene";
+        fs::create_directories(scene);
+        writeFile(folder() / "outside.hdr", {1, 2, 3});
+        if (!fs::is_symlink(scene / "link.hdr")) fs::create_symlink(folder() / "outside.hdr", scene / "link.hdr");
+        writeFile(scene / "s.gltf", bytesOf(triangle().finish().dump()));
+        const fs::path project = scene / "s.glint.json";
+        writeFile(project, bytesOf(Json{{"glint", 1}, {"scene", "s.gltf"}, {"environment", {{"file", env.toStdString()}}}}.dump()));
+        for (const fs::path& file : {scene / "s.gltf", project}) {
+            const Caught caught = errorOf([&] { (void)loadScene(file); });
+            QCOMPARE(QString::fromStdString(caught.code), QStringLiteral("uri-escapes-folder"));
+            QCOMPARE(QString::fromStdString(caught.file), QString::fromStdString(project.string()));
+            QVERIFY2(caught.message.find(message.toStdString()) != std::string::npos, caught.message.c_str());
+        }
+        // The renderer's check before it opens the image is the same rule.
+        const Caught again = errorOf([&] { (void)projectEnvironmentPath(scene, env.toStdString(), scene.string()); });
+        QCOMPARE(QString::fromStdString(again.code), QStringLiteral("uri-escapes-folder"));
+    }
+
+    void environmentInsideTheFolderLoads()
+    {
+        const fs::path scene = folder() / "envinside";
+        fs::create_directories(scene / "hdr");
+        writeFile(scene / "hdr" / "studio.hdr", {1, 2, 3});
+        fs::create_symlink("studio.hdr", scene / "hdr" / "alias.hdr");
+        writeFile(scene / "s.gltf", bytesOf(triangle().finish().dump()));
+        for (const char* env : {"hdr/studio.hdr", "hdr/alias.hdr", "./hdr/../hdr/studio.hdr"}) {
+            writeFile(scene / "s.glint.json", bytesOf(Json{{"glint", 1}, {"environment", {{"file", env}}}}.dump()));
+            QCOMPARE(QString::fromStdString(loadScene(scene / "s.gltf").scene.settings.environment.file), QString(env));
+        }
+    }
+
+    // activeCamera must name a camera node of the glTF it belongs to.
+    void danglingActiveCameraIsRefused()
+    {
+        const fs::path scene = folder() / "activecamera";
+        fs::create_directories(scene);
+        writeFile(scene / "s.gltf", bytesOf(triangle().finish().dump()));
+        writeFile(scene / "s.glint.json", bytesOf(Json{{"glint", 1}, {"activeCamera", 12345}}.dump()));
+        const Caught caught = errorOf([&] { (void)loadScene(scene / "s.gltf"); });
+        QCOMPARE(QString::fromStdString(caught.code), QStringLiteral("bad-value"));
+        QCOMPARE(QString::fromStdString(caught.file), QString::fromStdString((scene / "s.glint.json").string()));
+        QCOMPARE(QString::fromStdString(caught.message),
+                 QStringLiteral("key 'activeCamera' must be the id of a camera node of the scene: 12345 names no node"));
+        writeFile(scene / "s.glint.json", bytesOf(Json{{"glint", 1}, {"activeCamera", 1}}.dump()));
+        GLINT_EXPECT_ERROR(loadScene(scene / "s.gltf"), "bad-value", "1 is not a camera");
+    }
+
     void symlinkInsideTheFolderIsFine()
     {
         fs::create_directory(folder() / "inner");
@@ -210,17 +273,23 @@ private slots:
     void projectFileBesideTheSceneIsRead()
     {
         fs::create_directory(folder() / "project");
-        writeFile(folder() / "project" / "shot.glb", validGlb());
+        const GltfBuilder b = triangle();
+        Json doc = b.finish();
+        doc["buffers"][0].erase("uri");
+        doc["cameras"] = Json::array({{{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.1}}}}});
+        doc["nodes"].push_back({{"camera", 0}});
+        doc["scenes"][0]["nodes"].push_back(1);
+        writeFile(folder() / "project" / "shot.glb", makeGlb(doc, b.bin));
         ProjectFile project;
         project.sceneFile = "shot.glb";
         project.settings.render.spp = 7;
-        project.settings.activeCamera = NodeId{1};
+        project.settings.activeCamera = NodeId{2}; // the camera node (ids 1..N in glTF node order)
         writeFile(folder() / "project" / "shot.glint.json", bytesOf(writeProjectFileText(project)));
         const LoadResult viaScene = loadScene(folder() / "project" / "shot.glb");
         QCOMPARE(viaScene.scene.settings.render.spp, 7);
         const LoadResult viaProject = loadScene(folder() / "project" / "shot.glint.json");
-        QCOMPARE(viaProject.scene.settings.activeCamera, NodeId{1});
-        QCOMPARE(viaProject.scene.nodeCount(), std::size_t(1));
+        QCOMPARE(viaProject.scene.settings.activeCamera, NodeId{2});
+        QCOMPARE(viaProject.scene.nodeCount(), std::size_t(2));
         LoadOptions withoutProject;
         withoutProject.loadProjectFile = false;
         QCOMPARE(loadScene(folder() / "project" / "shot.glb", withoutProject).scene.settings.render.spp, ProjectSettings{}.render.spp);

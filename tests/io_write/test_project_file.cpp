@@ -130,8 +130,55 @@ private slots:
         QCOMPARE(expectError(R"({"glint": 1, "activeCamera": -1})"), std::string("wrong-type: key 'activeCamera' must be an integer from 0 to 4294967295"));
         QCOMPARE(expectError(R"({"glint": 1, "lightUnits": "photometric"})"), std::string("bad-value: key 'lightUnits' must be one of blender, raw, not 'photometric'"));
         QCOMPARE(expectError(R"([1])"), std::string("wrong-type: a project file must be a JSON object"));
-        QVERIFY(expectError(R"({"glint": 1,)").starts_with("invalid-json: invalid JSON: "));
-        QVERIFY(expectError(std::string(200, '[') + std::string(200, ']')).starts_with("too-deep: "));
+        QVERIFY(expectError(R"({"glint": 1,)").starts_with("invalid-json: not valid JSON: "));
+        QVERIFY(expectError(R"({"glint": 1,)").find("json.exception") == std::string::npos);
+        QVERIFY(expectError(std::string(200, '[') + std::string(200, ']')).starts_with("json-too-deep: "));
+        QCOMPARE(expectError(R"({"glint": 1, "render": {"exposure": 1e400}})"),
+                 std::string("non-finite-value: render.exposure is 1e400, beyond the range of a number"));
+    }
+
+    // Render values are checked at load with the command line's ranges, naming the file and the key.
+    void valuesOutOfRangeNameTheKey_data()
+    {
+        QTest::addColumn<QString>("text");
+        QTest::addColumn<QString>("error");
+        const auto row = [](const char* name, const char* text, const char* error) { QTest::newRow(name) << text << error; };
+        row("width 0", R"({"glint": 1, "render": {"width": 0, "height": 0}})", "bad-value: key 'render.width' must be an integer from 1 to 16384");
+        row("height huge", R"({"glint": 1, "render": {"height": 100000}})", "bad-value: key 'render.height' must be an integer from 1 to 16384");
+        row("spp 0", R"({"glint": 1, "render": {"spp": 0}})", "bad-value: key 'render.spp' must be an integer from 1 to 1048576");
+        row("spp days", R"({"glint": 1, "render": {"spp": 2000000000}})", "bad-value: key 'render.spp' must be an integer from 1 to 1048576");
+        row("bounces -1", R"({"glint": 1, "render": {"bounces": -1}})", "bad-value: key 'render.bounces' must be an integer from 0 to 1024");
+        row("exposure 1e308", R"({"glint": 1, "render": {"exposure": 1e308}})", "bad-value: key 'render.exposure' must be a number of stops from -64 to 64");
+        row("clamp -1", R"({"glint": 1, "render": {"clamp": -1}})", "bad-value: key 'render.clamp' must be 0 (off) or a positive number");
+        row("intensity -5", R"({"glint": 1, "environment": {"intensity": -5}})", "bad-value: key 'environment.intensity' must be a number of at least 0");
+        row("colour -1", R"({"glint": 1, "environment": {"color": [0, -1, 0]}})", "bad-value: key 'environment.color' must be 3 numbers of at least 0");
+        row("rotation 1e39", R"({"glint": 1, "environment": {"rotation": 1e39}})", "bad-value: key 'environment.rotation' must be a finite number of degrees");
+    }
+
+    void valuesOutOfRangeNameTheKey()
+    {
+        QFETCH(QString, text);
+        QFETCH(QString, error);
+        QCOMPARE(QString::fromStdString(expectError(text.toStdString())), error);
+        Warnings warnings;
+        try {
+            parseProjectFile(text.toStdString(), "shot.glint.json", warnings);
+        } catch (const FileError& e) {
+            QCOMPARE(QString::fromStdString(e.file()), QStringLiteral("shot.glint.json"));
+        }
+    }
+
+    void limitsThemselvesAreAllowed()
+    {
+        Warnings warnings;
+        const ProjectFile p = parseProjectFile(
+            R"({"glint": 1, "render": {"width": 16384, "height": 1, "spp": 1048576, "bounces": 0, "exposure": -64, "clamp": 0},
+                "environment": {"intensity": 0, "color": [0, 0, 0], "rotation": -720}})", "p.glint.json", warnings);
+        QCOMPARE(p.settings.render.width, 16384);
+        QCOMPARE(p.settings.render.spp, 1048576);
+        QCOMPARE(p.settings.render.exposure, -64.0f);
+        QCOMPARE(p.settings.environment.rotationDegrees, -720.0f);
+        QVERIFY(warnings.empty());
     }
 
     void schemaVersions()
