@@ -79,6 +79,7 @@ RenderOutput OfflineRenderer::render(const Scene& scene, const RenderRequest& re
     const auto setupStart = Clock::now();
     frames.setSettings(frameSettingsFor(request, accumulate ? 1 : request.spp)); // accumulation: one sample per frame, for progress
     frames.setCamera(resolveCamera(scene, request.cameraName, request.width, request.height));
+    frames.setTime(request.time); // before the scene: setScene poses it at the renderer's time
     frames.setScene(scene, environmentPath(scene, request));
     frames.resetHistory();
     RenderOutput out;

@@ -24,6 +24,9 @@ struct RenderRequest {
     int bounces = 4;
     std::string cameraName;               // empty: the project's active camera, else the first one
     float exposure = 0.0f;                // EV added to the camera's
+    // Seconds: node animations and camera paths are posed at this time. The scene passed may
+    // already be posed at it (posing twice at one time changes nothing).
+    double time = 0.0;
     std::optional<Tonemapper> tonemapper; // unset: the project's
     std::filesystem::path envFile;        // overrides the project's environment image
     std::filesystem::path sceneFolder;    // resolves the project's relative environment path

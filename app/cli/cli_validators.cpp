@@ -1,5 +1,8 @@
 #include "cli_validators.h"
 
+#include <cmath>
+#include <cstdio>
+
 namespace glint::cli {
 
 std::function<std::string(std::string&)> rejection(std::function<void(const std::string&)> parse) {
@@ -11,6 +14,23 @@ std::function<std::string(std::string&)> rejection(std::function<void(const std:
             return e.what();
         }
     };
+}
+
+CLI::Validator finiteIn(double low, double high) {
+    const auto text = [](double v) {
+        char buffer[32];
+        std::snprintf(buffer, sizeof buffer, "%g", v);
+        return std::string(buffer);
+    };
+    const std::string range = text(low) + " to " + text(high);
+    return CLI::Validator(
+        [low, high, range](std::string& text) -> std::string {
+            double value = 0.0;
+            if (!CLI::detail::lexical_cast(text, value)) return "'" + text + "' is not a number";
+            if (!(std::isfinite(value) && value >= low && value <= high)) return text + " is not in " + range;
+            return {};
+        },
+        "NUMBER in " + range, "finite");
 }
 
 void addFrameOptions(CLI::App& cmd, std::optional<FrameRange>& frames, std::optional<Fps>& fps) {

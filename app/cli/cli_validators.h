@@ -13,6 +13,9 @@ namespace glint::cli {
 
 std::function<std::string(std::string&)> rejection(std::function<void(const std::string&)> parse);
 
+// A number in [low, high]; CLI::Range lets NaN through (every comparison with NaN is false).
+CLI::Validator finiteIn(double low, double high);
+
 // --frames A-B and --fps N[/D], as render --animation and encode both take them.
 void addFrameOptions(CLI::App& cmd, std::optional<FrameRange>& frames, std::optional<Fps>& fps);
 

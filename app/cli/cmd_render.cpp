@@ -108,7 +108,8 @@ void addRenderCommand(CLI::App& app, Action& action) {
                                              "rays, mean per pixel, stills and per-frame renders only)")
         ->check(CLI::Validator(rejection([](const std::string& v) { renderer::parseAovList(v); }), "LIST", "aovs"));
     cmd->add_option("--time", options->time, "Render the scene at this time in seconds: camera path and node "
-                                             "animations (default: the scene as stored)");
+                                             "animations (default: the scene as stored)")
+        ->check(finiteIn(-1e5, 1e5));
     cmd->add_option_function<std::string>("--region", [o = options.get()](const std::string& v) { o->region = parseRegion(v); },
                                           "Render only pixels X,Y,W,H of the output image: whole pixels, origin at the "
                                           "top-left corner, inside the image. EXR: the region is the data window, the "

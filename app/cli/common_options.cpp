@@ -1,5 +1,7 @@
 #include "common_options.h"
 
+#include "cli_validators.h"
+
 #include <charconv>
 
 namespace glint::cli {
@@ -41,8 +43,12 @@ void addCommonRenderOptions(CLI::App& cmd, CommonRenderOptions& o) {
                                             " (default: the project's)")
         ->transform(CLI::IsMember({"baseline", "realistic", "full", "heavy", "accumulate", "reference"},
                                   CLI::ignore_case));
-    cmd.add_option("--camera", o.camera, "Camera by glTF node name, else camera name (default: the active camera)");
-    cmd.add_option("--exposure", o.exposure, "Exposure in stops, + brighter, added to the camera's (default: 0)");
+    cmd.add_option("--camera", o.camera, "Camera by glTF node name, else camera name (default: the active camera, "
+                                         "else the first; a scene with none is seen from a default view that frames "
+                                         "it, with a warning)");
+    cmd.add_option("--exposure", o.exposure, "Exposure in stops, + brighter, added to the camera's, -64 to 64 "
+                                             "(default: 0)")
+        ->check(finiteIn(-64.0, 64.0));
     cmd.add_option("--tonemap", o.tonemap, std::string("Tonemapper: ") + kTonemappers + " (default: the project's)")
         ->transform(CLI::IsMember({"aces", "neutral", "none"}, CLI::ignore_case));
     cmd.add_option("--env", o.env, "Environment map (.hdr, .exr), anywhere on disk (default: the project's)");

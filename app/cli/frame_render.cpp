@@ -38,7 +38,10 @@ RenderPlan planImage(const RenderOptions& o, const FrameJob& job) {
         plan.metadata["frame"] = std::to_string(*job.frame);
     }
     if (job.fps) plan.metadata["fps"] = std::to_string(job.fps->numerator) + "/" + std::to_string(job.fps->denominator);
-    if (job.time) plan.metadata["time"] = formatNumber(*job.time);
+    if (job.time) {
+        plan.request.time = *job.time;
+        plan.metadata["time"] = formatNumber(*job.time);
+    }
     if (renderer::imageFormatFor(job.out) == renderer::ImageFormat::Exr) plan.metadata["aovs"] = o.aovs;
     sealSettings(plan.metadata);
     return plan;

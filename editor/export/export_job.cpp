@@ -44,6 +44,7 @@ void ExportJob::run() {
         for (ExportFrame& frame : frames) {
             if (cancelled_) throw Cancelled{};
             const Scene posed = frame.time ? sceneAt(scene_, *frame.time) : scene_;
+            frame.request.time = frame.time.value_or(0.0);
             frame.request.progress = [&](int done, int) {
                 if (cancelled_) throw Cancelled{};
                 emit progress(before + done, total);

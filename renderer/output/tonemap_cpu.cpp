@@ -10,6 +10,10 @@ namespace {
 
 using Rgb = std::array<float, 3>;
 
+// Beyond this every curve is white; above it ACES's squares overflow to inf / inf = NaN (black).
+// The same ceiling as shaders/passes/tonemap_curves.glsl.
+constexpr float kTonemapCeiling = 1.0e6f;
+
 // GLSL's mat3 is column-major: columns are listed in the shader's constructor order.
 Rgb multiply(const std::array<float, 9>& columns, const Rgb& v) {
     Rgb out{};
@@ -57,7 +61,8 @@ std::vector<std::uint8_t> tonemapToSrgb8(const std::vector<float>& rgba, float e
     const float scale = std::exp2(exposureEv);
     std::vector<std::uint8_t> out(rgba.size());
     for (std::size_t i = 0; i + 3 < rgba.size(); i += 4) {
-        Rgb c{rgba[i] * scale, rgba[i + 1] * scale, rgba[i + 2] * scale};
+        Rgb c{std::min(rgba[i] * scale, kTonemapCeiling), std::min(rgba[i + 1] * scale, kTonemapCeiling),
+              std::min(rgba[i + 2] * scale, kTonemapCeiling)};
         if (tonemapper == Tonemapper::AcesFitted) c = acesFitted(c);
         else if (tonemapper == Tonemapper::PbrNeutral) c = pbrNeutral(c);
         for (std::size_t k = 0; k < 3; ++k) out[i + k] = toByte(encodeSrgb(std::clamp(c[k], 0.0f, 1.0f)));

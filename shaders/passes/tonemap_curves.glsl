@@ -26,7 +26,11 @@ vec3 pbrNeutral(vec3 color) {
     return mix(color, vec3(newPeak), g);
 }
 
+// Beyond this every curve is white; above it ACES's squares overflow to inf / inf = NaN (black).
+const float kTonemapCeiling = 1.0e6;
+
 vec3 applyTonemapper(vec3 color, int tonemapper) {
+    color = min(color, vec3(kTonemapCeiling));
     if (tonemapper == 1) return acesFitted(color);
     if (tonemapper == 2) return pbrNeutral(color);
     return color;
