@@ -56,10 +56,9 @@ public:
     // (failures in the log and a message box). Every way of opening a file goes through these.
     void beginOpen(const QString& path);
     void beginImport(const QString& path);
-    // The same, reading on the calling thread and reporting alike; returns whether it worked
-    // (tests and scripts that need the document at once).
+    // The same open, reading on the calling thread and reporting alike; returns whether it worked
+    // (tests that need the document at once).
     bool openFile(const QString& path);
-    bool importFile(const QString& path);
     bool save();
     bool saveAs(const QString& path = {});
     // Offers a copy an earlier session left behind; returns whether its recovery started (it is

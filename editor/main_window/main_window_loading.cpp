@@ -40,13 +40,6 @@ bool MainWindow::openFile(const QString& path) {
     return error.isEmpty();
 }
 
-bool MainWindow::importFile(const QString& path) {
-    const QString error = document_->importFile(path);
-    if (!error.isEmpty()) onLoadFailed(Document::LoadKind::Import, path, error);
-    else onLoaded(Document::LoadKind::Import, path);
-    return error.isEmpty();
-}
-
 void MainWindow::onLoadStarted(Document::LoadKind kind, const QString& path) {
     const QString name = QFileInfo(path).fileName();
     switch (kind) {
