@@ -5,6 +5,8 @@
 #include "scene/anim/scene_at_time.h"
 #include "scene/io/oiio/oiio_image_decoder.h"
 
+#include <algorithm>
+
 namespace glint::renderer {
 namespace {
 
@@ -25,7 +27,9 @@ public:
 
 private:
     void report() const {
-        if (control_.progress) control_.progress("textures", done_, total_);
+        // Decodes can outnumber the textures counted up front (WaterBottle: 5 for 4): never report
+        // more than all.
+        if (control_.progress) control_.progress("textures", std::min(done_, total_), total_);
         ++done_;
     }
     OiioImageDecoder decoder_;
