@@ -42,13 +42,12 @@ class TestCliProjectPaths : public QObject {
 private slots:
     void environmentOutsideTheFolderIsRefused() {
         QTemporaryDir dir;
-        for (const QByteArray& env : {QByteArray("../../etc/passwd"), QByteArray(GLINT_TEST_DATA_DIR "/env/studio_small_03_1k.hdr")}) {
-            const QString scene = sceneWithProject(dir, "escape", R"({"glint": 1, "environment": {"file": ")" + env + R"("}})");
-            const CliResult r = runGlint({"info", scene});
-            QCOMPARE(r.exitCode, 1);
-            const QString expected = "glint: " + dir.filePath("escape/s.glint.json") + ": key 'environment.file': '" + env + "'";
-            QVERIFY2(r.err.startsWith(expected), qPrintable(r.err));
-        }
+        // Absolute paths and symlinks out are refused by the same check (tests/io_read); one process here.
+        const QString scene = sceneWithProject(dir, "escape", R"({"glint": 1, "environment": {"file": "../../etc/passwd"}})");
+        const CliResult r = runGlint({"info", scene});
+        QCOMPARE(r.exitCode, 1);
+        QCOMPARE(r.err.trimmed(), "glint: " + dir.filePath("escape/s.glint.json") +
+                                      ": key 'environment.file': '../../etc/passwd' leads out of the scene's folder ('..'): refused");
     }
 
     void renderValueOutOfRangeIsRefusedAtLoad() {
