@@ -143,6 +143,9 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(view.picking().current(), 60000);
         QCOMPARE(view.picking().builtHere(), 0); // it came with the preparation
 
+        QTRY_VERIFY_WITH_TIMEOUT(view.stats().samples >= 4, 60000);
+        view.grabFramebuffer().save(QStringLiteral(GLINT_TEST_OUTPUT_DIR "/viewport_icons.png")); // to look at
+
         // The lamp's sphere away from its icon: a ray pick.
         const QPoint lampSurface = pixelOf(view, {0.0, 0.85, 0.0});
         QVERIFY(QLineF(lampSurface, pixelOf(view, {0.0, 1.2, 0.0})).length() > kIconPickRadius + 1.0);
