@@ -14,8 +14,6 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
-#include <algorithm>
-#include <cmath>
 #include <cstring>
 #include <vector>
 
@@ -76,7 +74,6 @@ private slots:
             {"-1,0,8,8", "X and Y must be 0 or more"},
             {"0,0,0,8", "the region is empty"},
             {"30,0,11,8", "reaches outside the 40x32 image"}, // X + W = 41
-            {"0,30,8,3", "reaches outside the 40x32 image"},
             {"abc", "expected X,Y,W,H"},
             {"1,2,3", "expected X,Y,W,H"},
         };
@@ -137,32 +134,23 @@ private slots:
 
     // A history chunk in a shard takes the region. Realistic (TAA) reads 4 pixels around a pixel,
     // so its margin leaves an outside here: the shard's frames equal the same region rendered in
-    // one run bit for bit (history is reset, and the outside zeroed, at every chunk start), and
-    // the full run's frames within 1e-4 (the margin rule, tests/renderer/test_render_region.cpp).
-    // --resume keeps them, and renders them again for another region.
+    // one run bit for bit (history is reset, and the outside zeroed, at every chunk start). (The
+    // margin rule against full frames: tests/renderer/test_render_region.cpp.) --resume keeps
+    // them, and renders them again for another region.
     void animationShardsTakeTheRegionAndResumeNoticesAChange() {
         QTemporaryDir dir;
         const QStringList base = {"render", dolly, "--animation", "--size", "40x32", "--config", "realistic", "--chunk",
                                   "2", "--warmup", "1", "--frames", "0-3", "--aovs", "none"};
-        QCOMPARE(runGlint(base + QStringList{"--out", dir.filePath("full_####.exr")}).exitCode, 0);
         QCOMPARE(runGlint(base + QStringList{"--out", dir.filePath("one_####.exr"), "--region", region}).exitCode, 0);
         const QStringList shard = base + QStringList{"--shard", "1/2", "--out", dir.filePath("part_####.exr"), "--region"};
         const CliResult first = runGlint(shard + QStringList{region});
         QVERIFY2(first.exitCode == 0, qPrintable(first.err));
         QVERIFY(!QFile::exists(dir.filePath("part_0000.exr")) && !QFile::exists(dir.filePath("part_0001.exr")));
         for (const char* n : {"0002", "0003"}) {
-            const Stored full = readStored(dir.filePath(QString("full_%1.exr").arg(n)));
             const Stored one = readStored(dir.filePath(QString("one_%1.exr").arg(n)));
             const Stored part = readStored(dir.filePath(QString("part_%1.exr").arg(n)));
-            QVERIFY(full.ok && one.ok && part.ok && part.spec.x == kX && part.spec.y == kY && part.spec.full_width == 40);
+            QVERIFY(one.ok && part.ok && part.spec.x == kX && part.spec.y == kY && part.spec.full_width == 40);
             QVERIFY2(part.pixels == one.pixels, qPrintable(QString("frame %1: the shard differs from one run").arg(n)));
-            double worst = 0.0;
-            for (int y = 0; y < kH; ++y)
-                for (int x = 0; x < kW * 4; ++x)
-                    worst = std::max(worst, double(std::abs(part.pixels[std::size_t(y * kW * 4 + x)] -
-                                                            full.pixels[std::size_t((y + kY) * 40 * 4 + kX * 4 + x)])));
-            qInfo("frame %s: max |region - full| %.3g", n, worst);
-            QVERIFY2(worst <= 1e-4, qPrintable(QString("frame %1: max |region - full| %2").arg(n).arg(worst)));
         }
         QCOMPARE(runGlint(shard + QStringList{region}).err.count(" kept: "), 2);
         const CliResult moved = runGlint(shard + QStringList{"6,9,16,12"});
