@@ -82,6 +82,7 @@ public:
     void cancelLoading(); // the load in flight and the queued ones
     bool isLoading() const { return inFlight_.has_value(); }
     LoadKind loadingKind() const { return inFlight_ ? inFlight_->kind : LoadKind::Open; }
+    int runningReads() const { return loader_.runningReads(); } // cancelled ones included
     // Where the import worker is and its limits (tests name the worker they built).
     void setImportOptions(const ImportOptions& options);
     // Asked before a finished open replaces a document edited since the open started (its

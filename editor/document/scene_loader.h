@@ -40,6 +40,8 @@ public:
     // Drops the load in flight: its result never arrives; an import's child is killed.
     void cancel();
     bool busy() const { return current_ != nullptr; }
+    // Workers still reading, cancelled reads included (a glTF parse ends on its own).
+    int runningReads() const { return pool_.activeThreadCount(); }
     // The result of the last finished(), handed over once.
     std::unique_ptr<LoadResult> take() { return std::move(ready_); }
 

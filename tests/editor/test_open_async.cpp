@@ -194,8 +194,9 @@ private slots:
         QSignalSpy loaded(&document, &Document::loaded);
         QSignalSpy cancelled(&document, &Document::loadCancelled);
 
+        QSignalSpy reading(&document, &Document::loadProgress);
         window.beginOpen(large_);
-        QTest::qWait(int(loadMs_ / 3)); // well into the load
+        QTRY_VERIFY_WITH_TIMEOUT(!reading.isEmpty(), 5000); // the worker has begun the parse
         QVERIFY(document.isLoading());
         // What a person sees meanwhile: the status bar's progress with its Cancel button.
         window.grab().save(QStringLiteral(GLINT_TEST_OUTPUT_DIR "/editor_open_progress.png"));
@@ -204,8 +205,10 @@ private slots:
         QCOMPARE(cancelled.size(), 1);
         QVERIFY(!window.loadProgress().isVisible());
         QVERIFY(DocumentState(document) == before);
-        // The worker finishes its parse and drops it: wait past its end, then look again.
-        QTest::qWait(int(loadMs_) + 500);
+        // The worker finishes its parse and drops it: wait for its end, then look again.
+        QVERIFY(document.runningReads() > 0);
+        QTRY_COMPARE_WITH_TIMEOUT(document.runningReads(), 0, 20000);
+        QTest::qWait(50); // anything it might still have posted
         QVERIFY(DocumentState(document) == before);
         QCOMPARE(window.windowTitle(), title);
         QCOMPARE(loaded.size(), 0);
@@ -327,7 +330,8 @@ private slots:
         QCOMPARE(loaded.front().at(1).toString(), cornellBox());
         QCOMPARE(cancelled.size(), 1);
         QCOMPARE(cancelled.front().at(1).toString(), large_);
-        QTest::qWait(int(loadMs_) + 500); // past the end of the superseded parse
+        QTRY_COMPARE_WITH_TIMEOUT(document.runningReads(), 0, 20000); // the superseded parse has ended
+        QTest::qWait(50);
         QCOMPARE(loaded.size(), 1);
         QCOMPARE(document.filePath(), QFileInfo(cornellBox()).absoluteFilePath());
         QCOMPARE(document.scene().nodeCount(), std::size_t{9});
