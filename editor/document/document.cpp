@@ -163,7 +163,11 @@ QString Document::saveAs(const QString& path) {
     QString target = path;
     if (!target.toLower().endsWith(".gltf") && !target.toLower().endsWith(".glb")) target += ".gltf";
     try {
-        SaveReport report = saveScene(scene_, toPath(target));
+        // Relative paths (the environment image) resolve beside the current file: a save into
+        // another folder copies what they name, as textures are copied.
+        SaveOptions options;
+        if (!path_.isEmpty()) options.sourceFolder = toPath(QFileInfo(path_).absolutePath());
+        SaveReport report = saveScene(scene_, toPath(target), options);
         reportWarnings(warningLines(report.dropped));
     } catch (const std::exception& e) {
         return QString::fromStdString(e.what());

@@ -64,6 +64,28 @@ private slots:
         QCOMPARE(iterations->value(), 5);
     }
 
+    // Save As into another folder takes the environment image along, as the command line's
+    // convert does: the saved scene renders with the same sky.
+    void saveAsCarriesTheEnvironment() {
+        QTemporaryDir from, to;
+        QVERIFY(from.isValid() && to.isValid());
+        const QString hdr = QStringLiteral(GLINT_RESOURCES_DIR "/env/studio_small_03_1k.hdr");
+        QVERIFY(QFile::copy(hdr, from.filePath("sky.hdr")));
+        {
+            Document original;
+            QCOMPARE(original.open(cornellBox()), QString());
+            original.scene().settings.environment.file = "sky.hdr";
+            QCOMPARE(original.saveAs(from.filePath("box.gltf")), QString());
+        }
+        Document document;
+        QCOMPARE(document.open(from.filePath("box.gltf")), QString());
+        QCOMPARE(document.saveAs(to.filePath("box.gltf")), QString());
+        QVERIFY2(document.lastWarnings().isEmpty(), qPrintable(document.lastWarnings().join('\n')));
+        QFile original(hdr), copy(to.filePath("sky.hdr"));
+        QVERIFY(original.open(QIODevice::ReadOnly) && copy.open(QIODevice::ReadOnly));
+        QCOMPARE(copy.readAll(), original.readAll());
+    }
+
     void activeCameraAndFrameRate() {
         Document document;
         QCOMPARE(document.open(cornellBox()), QString());
