@@ -87,7 +87,9 @@ const gl::RenderTarget& SvgfPass::atrous(const SvgfInputs& in, const SvgfSetting
                    {"uSpecular", *source, specularLobe},
                    {"uNormalDepth", in.gbuffer, normalDepthAttachment},
                    {"uObjectId", in.gbuffer, objectIdAttachment},
-                   {"uSpecularAlbedo", in.gbuffer, specularAlbedoAttachment}},
+                   {"uSpecularAlbedo", in.gbuffer, specularAlbedoAttachment},
+                   {"uHistoryLength", temporal_[current_], historyLengthAttachment},
+                   {"uAntiLag", in.antiLag, antiLagAttachment}},
                   [&](const gl::ShaderProgram& p) {
                       glUniform1i(p.uniform("uStep"), 1 << i);
                       glUniform1i(p.uniform("uIteration"), i);

@@ -5,6 +5,14 @@
 // fewer iterations (1 at r = 0, all from uSpecularFullRoughness up: a small kernel keeps a sharp
 // reflection sharp), up to 2x stricter luminance and 4x stricter normal stops, and neighbours of a
 // different roughness count less.
+// A pixel whose history restarted (disocclusion: the band a moving object leaves, the edge a pan
+// reveals; every pixel in the first frames) gets a 4x stricter luminance stop until its history is
+// 8 frames long, and a smaller kernel (steps up to 2^n px) while it is under 4. Its variance is the
+// spatial 7x7 estimate, which measures the light's spatial change (a contact shadow beside lit
+// ground) as much as noise, so the full filter blurred that change away, and the blur of the first
+// frames stayed in the filtered history. Where anti-lag shortened the history (the light changed,
+// the surface did not) the neighbours are as noisy as the pixel, and the full filter stays.
+// docs/DENOISING.md, failure modes 1 and 3.
 #include "reconstruction/common.glsl"
 
 uniform sampler2D uDiffuse;  // rgb, a = variance
@@ -12,6 +20,8 @@ uniform sampler2D uSpecular; // rgb, a = variance
 uniform sampler2D uNormalDepth;
 uniform sampler2D uObjectId; // filtering never crosses objects (an emitter would bleed onto its surroundings)
 uniform sampler2D uSpecularAlbedo; // a: roughness
+uniform sampler2D uHistoryLength;  // x: frames, 1 after a restart (svgf_reproject)
+uniform sampler2D uAntiLag;        // x: how much of that shortness anti-lag caused, 0..1
 uniform int uStep;
 uniform int uIteration;        // 0-based
 uniform int uIterations;
@@ -19,6 +29,10 @@ uniform float uSigmaLuminance; // 4 in the paper
 uniform float uSigmaNormal;    // 128
 uniform float uSigmaDepth;     // 1
 uniform float uSpecularFullRoughness;
+
+const float SMALL_KERNEL_HISTORY = 4.0;   // frames: steps up to 2^n px below it
+const float STRICT_STOP_HISTORY = 8.0;    // frames: the stricter luminance stop below it
+const float RESTARTED_LUMINANCE_STOP = 0.25; // uSigmaLuminance's scale there
 
 out vec4 outDiffuse;
 out vec4 outSpecular;
@@ -57,13 +71,18 @@ void main() {
     outDiffuse = diffuse;
     outSpecular = specular;
     if (nd.w < 0.0) return;
+    // The history's length as far as it is short for want of a surface, not of stable light.
+    float stale = texelFetch(uAntiLag, pixel, 0).x;
+    float restarted = mix(texelFetch(uHistoryLength, pixel, 0).x, STRICT_STOP_HISTORY, stale);
+    if (restarted < SMALL_KERNEL_HISTORY && float(uStep) > exp2(restarted)) return;
+    float sigmaLuminance = uSigmaLuminance * (restarted < STRICT_STOP_HISTORY ? mix(RESTARTED_LUMINANCE_STOP, 1.0, stale) : 1.0);
     float roughness = texelFetch(uSpecularAlbedo, pixel, 0).a;
     float rough = clamp(roughness / max(uSpecularFullRoughness, 1.0e-3), 0.0, 1.0);
     bool filterSpecular = uIteration < 1 + int(floor(float(uIterations - 1) * rough + 0.5));
 
     const float kernel[3] = float[3](3.0 / 8.0, 1.0 / 4.0, 1.0 / 16.0);
     vec2 lCentre = vec2(luminance(diffuse.rgb), luminance(specular.rgb));
-    vec2 lScale = uSigmaLuminance * vec2(1.0, mix(0.5, 1.0, rough)) * sqrt(max(blurredVariance(pixel, size), vec2(0.0))) + 1.0e-6;
+    vec2 lScale = sigmaLuminance * vec2(1.0, mix(0.5, 1.0, rough)) * sqrt(max(blurredVariance(pixel, size), vec2(0.0))) + 1.0e-6;
     vec2 normalExponent = uSigmaNormal * vec2(1.0, mix(4.0, 1.0, rough));
     float centre = kernel[0] * kernel[0];
     Sum d = Sum(diffuse * vec4(vec3(centre), centre * centre), centre);
