@@ -290,7 +290,9 @@ private slots:
         }
         qInfo("moving box, frames 6-12, pixels it left 2 frames ago: Full relMSE %.4f, raw 1 spp %.4f", full[0], raw[0]);
         qInfo("moving box, frames 6-12, pixels it left 4 frames ago: Full relMSE %.4f, raw 1 spp %.4f", full[1], raw[1]);
-        QVERIFY(full[1] < 2.0 * raw[1]);
+        // No trail beyond 4 frames: there the error is below one raw sample's (0.89x measured; 1.64x
+        // before restarted histories got the stricter SVGF filter, docs/DENOISING.md mode 3).
+        QVERIFY(full[1] < 1.0 * raw[1]);
     }
 };
 
