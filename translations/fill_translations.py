@@ -318,6 +318,21 @@ T = {
 "Video": ("Video", "Video", "Vidéo", "Vídeo"),
 "BVH instance boxes": ("Riquadri BVH delle istanze", "BVH-Instanzboxen", "Boîtes BVH des instances", "Cajas BVH de instancias"),
 "all, none, or a list of albedo, normal, depth, id, variance": ("all, none, oppure un elenco tra albedo, normal, depth, id, variance", "all, none oder eine Liste aus albedo, normal, depth, id, variance", "all, none, ou une liste parmi albedo, normal, depth, id, variance", "all, none, o una lista de albedo, normal, depth, id, variance"),
+"%1 (%2)": ("%1 (%2)", "%1 (%2)", "%1 (%2)", "%1 (%2)"),
+"%1, %2 s": ("%1, %2 s", "%1, %2 s", "%1, %2 s", "%1, %2 s"),
+"Cancel": ("Annulla", "Abbrechen", "Annuler", "Cancelar"),
+"Stop reading the file; the open scene stays as it is": ("Interrompe la lettura del file; la scena aperta resta com'è", "Beendet das Lesen der Datei; die offene Szene bleibt, wie sie ist", "Arrête la lecture du fichier ; la scène ouverte reste telle quelle", "Detiene la lectura del archivo; la escena abierta queda como está"),
+"Loading progress": ("Avanzamento del caricamento", "Ladefortschritt", "Progression du chargement", "Progreso de la carga"),
+"Opening %1": ("Apertura di %1", "Öffne %1", "Ouverture de %1", "Abriendo %1"),
+"Importing %1": ("Importazione di %1", "Importiere %1", "Importation de %1", "Importando %1"),
+"Recovering an untitled scene": ("Recupero di una scena senza titolo", "Stelle eine unbenannte Szene wieder her", "Récupération d'une scène sans titre", "Recuperando una escena sin título"),
+"Recovering %1": ("Recupero di %1", "Stelle %1 wieder her", "Récupération de %1", "Recuperando %1"),
+"Cannot open %1:\n%2": ("Impossibile aprire %1:\n%2", "%1 kann nicht geöffnet werden:\n%2", "Impossible d'ouvrir %1 :\n%2", "No se puede abrir %1:\n%2"),
+"Import of %1 cancelled": ("Importazione di %1 annullata", "Import von %1 abgebrochen", "Importation de %1 annulée", "Importación de %1 cancelada"),
+"Opening %1 cancelled": ("Apertura di %1 annullata", "Öffnen von %1 abgebrochen", "Ouverture de %1 annulée", "Apertura de %1 cancelada"),
+"building the click picker": ("costruzione del selettore per clic", "erstelle die Klickauswahl", "construction du sélecteur de clic", "construyendo el selector de clic"),
+"reading the glTF file": ("lettura del file glTF", "lese die glTF-Datei", "lecture du fichier glTF", "leyendo el archivo glTF"),
+"running the importer": ("esecuzione dell'importatore", "führe den Importer aus", "exécution de l'importateur", "ejecutando el importador"),
 }
 
 

@@ -304,6 +304,29 @@
     </message>
 </context>
 <context>
+    <name>glint::editor::LoadProgress</name>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>%1, %2 s</source>
+        <translation>%1, %2 s</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Stop reading the file; the open scene stays as it is</source>
+        <translation>Beendet das Lesen der Datei; die offene Szene bleibt, wie sie ist</translation>
+    </message>
+    <message>
+        <source>Loading progress</source>
+        <translation>Ladefortschritt</translation>
+    </message>
+</context>
+<context>
     <name>glint::editor::LogPanel</name>
     <message>
         <source>Log messages</source>
@@ -634,6 +657,36 @@
     <message>
         <source>Export A&amp;nimation...</source>
         <translation>A&amp;nimation exportieren...</translation>
+    </message>
+    <message>
+        <source>Opening %1</source>
+        <translation>Öffne %1</translation>
+    </message>
+    <message>
+        <source>Importing %1</source>
+        <translation>Importiere %1</translation>
+    </message>
+    <message>
+        <source>Recovering an untitled scene</source>
+        <translation>Stelle eine unbenannte Szene wieder her</translation>
+    </message>
+    <message>
+        <source>Recovering %1</source>
+        <translation>Stelle %1 wieder her</translation>
+    </message>
+    <message>
+        <source>Cannot open %1:
+%2</source>
+        <translation>%1 kann nicht geöffnet werden:
+%2</translation>
+    </message>
+    <message>
+        <source>Import of %1 cancelled</source>
+        <translation>Import von %1 abgebrochen</translation>
+    </message>
+    <message>
+        <source>Opening %1 cancelled</source>
+        <translation>Öffnen von %1 abgebrochen</translation>
     </message>
 </context>
 <context>
@@ -1393,6 +1446,21 @@
 R %3  G %4  B %5 (linear)</source>
         <translation>Pixel %1, %2
 R %3  G %4  B %5 (linear)</translation>
+    </message>
+    <message>
+        <source>building the click picker</source>
+        <translation>erstelle die Klickauswahl</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::SceneLoader</name>
+    <message>
+        <source>reading the glTF file</source>
+        <translation>lese die glTF-Datei</translation>
+    </message>
+    <message>
+        <source>running the importer</source>
+        <translation>führe den Importer aus</translation>
     </message>
 </context>
 <context>

@@ -304,6 +304,29 @@
     </message>
 </context>
 <context>
+    <name>glint::editor::LoadProgress</name>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>%1, %2 s</source>
+        <translation>%1, %2 s</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+    <message>
+        <source>Stop reading the file; the open scene stays as it is</source>
+        <translation>Detiene la lectura del archivo; la escena abierta queda como está</translation>
+    </message>
+    <message>
+        <source>Loading progress</source>
+        <translation>Progreso de la carga</translation>
+    </message>
+</context>
+<context>
     <name>glint::editor::LogPanel</name>
     <message>
         <source>Log messages</source>
@@ -634,6 +657,36 @@
     <message>
         <source>Export A&amp;nimation...</source>
         <translation>Exportar a&amp;nimación...</translation>
+    </message>
+    <message>
+        <source>Opening %1</source>
+        <translation>Abriendo %1</translation>
+    </message>
+    <message>
+        <source>Importing %1</source>
+        <translation>Importando %1</translation>
+    </message>
+    <message>
+        <source>Recovering an untitled scene</source>
+        <translation>Recuperando una escena sin título</translation>
+    </message>
+    <message>
+        <source>Recovering %1</source>
+        <translation>Recuperando %1</translation>
+    </message>
+    <message>
+        <source>Cannot open %1:
+%2</source>
+        <translation>No se puede abrir %1:
+%2</translation>
+    </message>
+    <message>
+        <source>Import of %1 cancelled</source>
+        <translation>Importación de %1 cancelada</translation>
+    </message>
+    <message>
+        <source>Opening %1 cancelled</source>
+        <translation>Apertura de %1 cancelada</translation>
     </message>
 </context>
 <context>
@@ -1393,6 +1446,21 @@
 R %3  G %4  B %5 (linear)</source>
         <translation>Píxel %1, %2
 R %3  G %4  B %5 (lineal)</translation>
+    </message>
+    <message>
+        <source>building the click picker</source>
+        <translation>construyendo el selector de clic</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::SceneLoader</name>
+    <message>
+        <source>reading the glTF file</source>
+        <translation>leyendo el archivo glTF</translation>
+    </message>
+    <message>
+        <source>running the importer</source>
+        <translation>ejecutando el importador</translation>
     </message>
 </context>
 <context>

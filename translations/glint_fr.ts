@@ -304,6 +304,29 @@
     </message>
 </context>
 <context>
+    <name>glint::editor::LoadProgress</name>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>%1, %2 s</source>
+        <translation>%1, %2 s</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Annuler</translation>
+    </message>
+    <message>
+        <source>Stop reading the file; the open scene stays as it is</source>
+        <translation>Arrête la lecture du fichier ; la scène ouverte reste telle quelle</translation>
+    </message>
+    <message>
+        <source>Loading progress</source>
+        <translation>Progression du chargement</translation>
+    </message>
+</context>
+<context>
     <name>glint::editor::LogPanel</name>
     <message>
         <source>Log messages</source>
@@ -634,6 +657,36 @@
     <message>
         <source>Export A&amp;nimation...</source>
         <translation>Exporter une a&amp;nimation...</translation>
+    </message>
+    <message>
+        <source>Opening %1</source>
+        <translation>Ouverture de %1</translation>
+    </message>
+    <message>
+        <source>Importing %1</source>
+        <translation>Importation de %1</translation>
+    </message>
+    <message>
+        <source>Recovering an untitled scene</source>
+        <translation>Récupération d&apos;une scène sans titre</translation>
+    </message>
+    <message>
+        <source>Recovering %1</source>
+        <translation>Récupération de %1</translation>
+    </message>
+    <message>
+        <source>Cannot open %1:
+%2</source>
+        <translation>Impossible d&apos;ouvrir %1 :
+%2</translation>
+    </message>
+    <message>
+        <source>Import of %1 cancelled</source>
+        <translation>Importation de %1 annulée</translation>
+    </message>
+    <message>
+        <source>Opening %1 cancelled</source>
+        <translation>Ouverture de %1 annulée</translation>
     </message>
 </context>
 <context>
@@ -1393,6 +1446,21 @@
 R %3  G %4  B %5 (linear)</source>
         <translation>Pixel %1, %2
 R %3  V %4  B %5 (linéaire)</translation>
+    </message>
+    <message>
+        <source>building the click picker</source>
+        <translation>construction du sélecteur de clic</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::SceneLoader</name>
+    <message>
+        <source>reading the glTF file</source>
+        <translation>lecture du fichier glTF</translation>
+    </message>
+    <message>
+        <source>running the importer</source>
+        <translation>exécution de l&apos;importateur</translation>
     </message>
 </context>
 <context>

@@ -304,6 +304,29 @@
     </message>
 </context>
 <context>
+    <name>glint::editor::LoadProgress</name>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>%1, %2 s</source>
+        <translation>%1, %2 s</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Annulla</translation>
+    </message>
+    <message>
+        <source>Stop reading the file; the open scene stays as it is</source>
+        <translation>Interrompe la lettura del file; la scena aperta resta com&apos;è</translation>
+    </message>
+    <message>
+        <source>Loading progress</source>
+        <translation>Avanzamento del caricamento</translation>
+    </message>
+</context>
+<context>
     <name>glint::editor::LogPanel</name>
     <message>
         <source>Log messages</source>
@@ -634,6 +657,36 @@
     <message>
         <source>Export A&amp;nimation...</source>
         <translation>Esporta a&amp;nimazione...</translation>
+    </message>
+    <message>
+        <source>Opening %1</source>
+        <translation>Apertura di %1</translation>
+    </message>
+    <message>
+        <source>Importing %1</source>
+        <translation>Importazione di %1</translation>
+    </message>
+    <message>
+        <source>Recovering an untitled scene</source>
+        <translation>Recupero di una scena senza titolo</translation>
+    </message>
+    <message>
+        <source>Recovering %1</source>
+        <translation>Recupero di %1</translation>
+    </message>
+    <message>
+        <source>Cannot open %1:
+%2</source>
+        <translation>Impossibile aprire %1:
+%2</translation>
+    </message>
+    <message>
+        <source>Import of %1 cancelled</source>
+        <translation>Importazione di %1 annullata</translation>
+    </message>
+    <message>
+        <source>Opening %1 cancelled</source>
+        <translation>Apertura di %1 annullata</translation>
     </message>
 </context>
 <context>
@@ -1393,6 +1446,21 @@
 R %3  G %4  B %5 (linear)</source>
         <translation>Pixel %1, %2
 R %3  G %4  B %5 (lineare)</translation>
+    </message>
+    <message>
+        <source>building the click picker</source>
+        <translation>costruzione del selettore per clic</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::SceneLoader</name>
+    <message>
+        <source>reading the glTF file</source>
+        <translation>lettura del file glTF</translation>
+    </message>
+    <message>
+        <source>running the importer</source>
+        <translation>esecuzione dell&apos;importatore</translation>
     </message>
 </context>
 <context>
