@@ -52,7 +52,7 @@ Node Scene::removeLeaf(NodeId id) {
     Node& n = mutableNode(id);
     if (!n.children.empty()) throw std::invalid_argument("Scene::removeLeaf: node has children");
     NodeId parent = n.parent;
-    invalidateWorld(id);
+    invalidateCaches(id);
     detach(n);
     Node removed = std::move(n);
     nodes_.erase(id);
@@ -65,7 +65,7 @@ void Scene::setParent(NodeId id, NodeId parent, std::size_t index) {
         throw std::invalid_argument("Scene::setParent: would create a cycle");
     if (parent && !contains(parent)) throw std::invalid_argument("Scene::setParent: no parent");
     Node& n = mutableNode(id);
-    invalidateWorld(id);
+    invalidateCaches(id);
     detach(n);
     attach(n, parent, index);
 }
@@ -78,27 +78,53 @@ std::size_t Scene::indexInParent(NodeId id) const {
 
 void Scene::setLocal(NodeId id, const Transform& local) {
     mutableNode(id).local = local;
-    invalidateWorld(id);
+    invalidateCaches(id);
 }
 
 void Scene::setName(NodeId id, std::string name) { mutableNode(id).name = std::move(name); }
-void Scene::setVisible(NodeId id, bool visible) { mutableNode(id).visible = visible; }
+void Scene::setVisible(NodeId id, bool visible) {
+    mutableNode(id).visible = visible;
+    invalidateCaches(id);
+}
 void Scene::setComponent(NodeId id, Component component) { mutableNode(id).component = std::move(component); }
 void Scene::setUnknown(NodeId id, nlohmann::json unknown) { mutableNode(id).unknown = std::move(unknown); }
 Component& Scene::component(NodeId id) { return mutableNode(id).component; }
 
-void Scene::invalidateWorld(NodeId id) const {
-    if (worldCache_.empty()) return;
-    for (NodeId n : subtree(id)) worldCache_.erase(n);
+void Scene::invalidateCaches(NodeId id) const {
+    if (worldCache_.empty() && visibleCache_.empty()) return;
+    for (NodeId n : subtree(id)) {
+        worldCache_.erase(n);
+        visibleCache_.erase(n);
+    }
+}
+
+// Walks up to the first node with a cached answer (or past the root), then answers down that walk.
+template <class Value, class Step>
+Value Scene::cachedDownTheHierarchy(NodeId id, std::map<NodeId, Value>& cache, Value rootValue, Step step) const {
+    std::vector<const Node*> walk;
+    Value value = rootValue;
+    for (NodeId up = id; up;) {
+        if (auto it = cache.find(up); it != cache.end()) {
+            value = it->second;
+            break;
+        }
+        walk.push_back(&at(up));
+        up = walk.back()->parent;
+    }
+    for (auto it = walk.rbegin(); it != walk.rend(); ++it) {
+        value = step(value, **it);
+        cache[(*it)->id] = value;
+    }
+    return value;
 }
 
 glm::mat4 Scene::worldFromNode(NodeId id) const {
-    if (auto it = worldCache_.find(id); it != worldCache_.end()) return it->second;
-    const Node& n = at(id);
-    glm::mat4 world = toMatrix(n.local);
-    if (n.parent) world = worldFromNode(n.parent) * world;
-    worldCache_[id] = world;
-    return world;
+    return cachedDownTheHierarchy(id, worldCache_, glm::mat4(1.0f),
+                                  [](const glm::mat4& parentWorld, const Node& n) { return parentWorld * toMatrix(n.local); });
+}
+
+bool Scene::visibleInWorld(NodeId id) const {
+    return cachedDownTheHierarchy(id, visibleCache_, true, [](bool parentVisible, const Node& n) { return parentVisible && n.visible; });
 }
 
 bool Scene::isAncestor(NodeId ancestor, NodeId id) const {

@@ -50,7 +50,10 @@ public:
     // Edit the component in place (no hierarchy or transform change, so no cache to invalidate).
     Component& component(NodeId id);
 
-    glm::mat4 worldFromNode(NodeId id) const; // cached
+    // Both cached, and computed without recursion: linear in the depth once, so a chain of a
+    // hundred thousand nodes costs no more than as many siblings.
+    glm::mat4 worldFromNode(NodeId id) const;
+    bool visibleInWorld(NodeId id) const; // the node and every ancestor are visible
     bool isAncestor(NodeId ancestor, NodeId id) const;
     std::vector<NodeId> subtree(NodeId id) const; // id first, then descendants depth-first
     std::vector<NodeId> depthFirst() const;        // every node, roots in order
@@ -77,7 +80,9 @@ public:
 
 private:
     Node& mutableNode(NodeId id);
-    void invalidateWorld(NodeId id) const;
+    void invalidateCaches(NodeId id) const; // the node's subtree
+    template <class Value, class Step>
+    Value cachedDownTheHierarchy(NodeId id, std::map<NodeId, Value>& cache, Value rootValue, Step step) const;
     void detach(Node& n);
     void attach(Node& n, NodeId parent, std::size_t index);
 
@@ -85,6 +90,7 @@ private:
     std::vector<NodeId> roots_;
     std::uint32_t nextNodeId_ = 1;
     mutable std::map<NodeId, glm::mat4> worldCache_;
+    mutable std::map<NodeId, bool> visibleCache_;
 };
 
 } // namespace glint

@@ -4,10 +4,6 @@
 
 namespace glint {
 
-inline bool visibleInWorld(const Scene& scene, const Node& node) {
-    for (const Node* n = &node; n; n = n->parent ? scene.node(n->parent) : nullptr)
-        if (!n->visible) return false;
-    return true;
-}
+inline bool visibleInWorld(const Scene& scene, const Node& node) { return scene.visibleInWorld(node.id); }
 
 } // namespace glint

@@ -91,6 +91,40 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, s.removeLeaf(a));
     }
 
+    void visibilityFollowsAncestorsAndIsInvalidated() {
+        Scene s;
+        NodeId a = s.addNode(named("a"));
+        NodeId b = s.addNode(named("b"), a);
+        NodeId c = s.addNode(named("c"), b);
+        QVERIFY(s.visibleInWorld(c));
+        s.setVisible(a, false);
+        QVERIFY(!s.visibleInWorld(c) && !s.visibleInWorld(b));
+        s.setParent(b, {});
+        QVERIFY(s.visibleInWorld(c));
+        s.setVisible(c, false);
+        QVERIFY(s.visibleInWorld(b) && !s.visibleInWorld(c));
+    }
+
+    // A chain 200000 deep (the loader accepts one): asking every node about its world transform and
+    // visibility is linear, not quadratic (that took minutes), and needs no recursion.
+    void deepChainIsAnsweredInLinearTime() {
+        constexpr int kDepth = 200000;
+        Scene s;
+        std::vector<NodeId> chain;
+        NodeId parent{};
+        for (int i = 0; i < kDepth; ++i) {
+            parent = s.addNode(named("n", {1, 0, 0}), parent); // whole metres: the sums stay exact
+            chain.push_back(parent);
+        }
+        s.setVisible(chain[1], false);
+        int visible = 0;
+        for (const NodeId id : chain) visible += s.visibleInWorld(id);
+        QCOMPARE(visible, 1);
+        const glm::mat4 leaf = s.worldFromNode(chain.back());
+        QCOMPARE(leaf[3].x, float(kDepth));
+        for (const NodeId id : chain) QVERIFY(std::isfinite(s.worldFromNode(id)[3].x));
+    }
+
     void equalityComparesContent() {
         Scene a, b;
         a.addNode(named("x"));
