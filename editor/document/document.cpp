@@ -315,6 +315,7 @@ void Document::onHistoryChanged(const ChangeSet& changes) {
 void Document::onHistoryIndex() {
     // Selections recorded for commands that no longer exist must not come back.
     selectionBefore_.erase(selectionBefore_.upper_bound(history_.count()), selectionBefore_.end());
+    emit historyIndexChanged();
     const bool clean = !isModified();
     if (clean == lastClean_) return;
     lastClean_ = clean;
@@ -334,6 +335,7 @@ void Document::replaceScene(Scene scene) {
     emit selectionChanged();
     emit timeChanged(time_);
     onHistoryIndex();
+    emit sceneReplaced();
 }
 
 void Document::pruneSelection() {

@@ -105,7 +105,11 @@ signals:
     void selectionChanged();
     void timeChanged(double seconds);
     void fileChanged();
+    // Another scene took the document's place (open, recovery, new): views start afresh.
+    void sceneReplaced();
     void cleanChanged(bool clean);
+    // The undo position moved or a macro closed: canUndo/canRedo and their labels may differ.
+    void historyIndexChanged();
     void warningsReported(const QStringList& lines);
     // Background loads. `path` is the file read (for a recovery: the file the copy stands for).
     void loadStarted(glint::editor::Document::LoadKind kind, const QString& path);

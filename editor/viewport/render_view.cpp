@@ -10,6 +10,7 @@
 #include "editor/viewport/debug_image.h"
 #include "editor/viewport/gizmo_drag.h"
 #include "editor/viewport/overlay_painter.h"
+#include "editor/viewport/initial_view.h"
 #include "editor/viewport/scene_preparer.h"
 #include "editor/viewport/scene_picker.h"
 #include "editor/viewport/view_picking.h"
@@ -90,6 +91,10 @@ RenderView::RenderView(Document& document, QWidget* parent)
         reportedWarnings_.clear(); // warnings are de-duplicated per opened file
         picking_->noteNewFile();
         update();
+    });
+    connect(&document_, &Document::sceneReplaced, this, [this] {
+        lookThrough_ = {};
+        setCamera(initialView(document_.scene(), double(width()) / std::max(1, height())));
     });
     connect(&document_, &Document::timeChanged, this, [this] {
         timeDirty_ = true;

@@ -1,5 +1,7 @@
 #include "renderer/gpu_scene/camera_setup.h"
 
+#include "scene/core/default_view.h"
+
 #include <cmath>
 #include <optional>
 #include <stdexcept>
@@ -14,9 +16,7 @@ std::optional<NodeId> findCamera(const Scene& scene, const std::string& name) {
             if (isCamera(id) && scene.at(id).name == name) return id;
         return std::nullopt;
     }
-    if (isCamera(scene.settings.activeCamera)) return scene.settings.activeCamera;
-    for (const NodeId id : scene.depthFirst())
-        if (isCamera(id)) return id;
+    if (const NodeId id = defaultCamera(scene); id.valid()) return id;
     return std::nullopt;
 }
 

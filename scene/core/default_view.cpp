@@ -13,8 +13,6 @@ namespace {
 
 constexpr float kMargin = 1.1f;
 constexpr float kEmptySceneDistance = 5.0f;
-// From the front and a little above: a flat front view hides the top of most assets.
-const glm::vec3 kFromCentre = glm::normalize(glm::vec3(0.0f, 0.35f, 1.0f));
 
 // Distance from the centre at which a sphere of `radius` fills the narrower half-angle.
 float framingDistance(float radius, float yfov, float aspect) {
@@ -24,6 +22,17 @@ float framingDistance(float radius, float yfov, float aspect) {
 }
 
 } // namespace
+
+// From the front and a little above: a flat front view hides the top of most assets.
+glm::vec3 defaultViewFromCentre() { return glm::normalize(glm::vec3(0.0f, 0.35f, 1.0f)); }
+
+NodeId defaultCamera(const Scene& scene) {
+    const auto isCamera = [&](NodeId id) { return scene.contains(id) && scene.at(id).get<Camera>() != nullptr; };
+    if (isCamera(scene.settings.activeCamera)) return scene.settings.activeCamera;
+    for (const NodeId id : scene.depthFirst())
+        if (isCamera(id)) return id;
+    return {};
+}
 
 NodeId addDefaultView(Scene& scene, float aspect) {
     Camera camera;
@@ -37,8 +46,9 @@ NodeId addDefaultView(Scene& scene, float aspect) {
     camera.focusDistance = distance;
     Node node;
     node.name = std::string(kDefaultViewName);
-    node.local.translation = centre + kFromCentre * distance;
-    node.local.rotation = glm::quatLookAt(-kFromCentre, glm::vec3(0.0f, 1.0f, 0.0f));
+    const glm::vec3 fromCentre = defaultViewFromCentre();
+    node.local.translation = centre + fromCentre * distance;
+    node.local.rotation = glm::quatLookAt(-fromCentre, glm::vec3(0.0f, 1.0f, 0.0f));
     node.component = camera;
     const NodeId id = scene.addNode(std::move(node));
     scene.settings.activeCamera = id;
