@@ -54,7 +54,8 @@ MainWindow::MainWindow(Options options, QWidget* parent) : QMainWindow(parent), 
     connect(document_, &Document::fileChanged, this, &MainWindow::updateTitle);
     connect(document_, &Document::cleanChanged, this, &MainWindow::updateTitle);
     connect(document_, &Document::changed, this, &MainWindow::updateStatus);
-    connect(document_, &Document::changed, this, &MainWindow::updateUndoActions);
+    // Changes inside a macro come while it is open (nothing to undo yet): the index signal follows its end.
+    connect(document_, &Document::historyIndexChanged, this, &MainWindow::updateUndoActions);
     connect(document_, &Document::selectionChanged, this, &MainWindow::updateStatus);
     connect(document_, &Document::selectionChanged, this, &MainWindow::updateUndoActions);
     connect(document_, &Document::warningsReported, log_, &LogPanel::warnings);

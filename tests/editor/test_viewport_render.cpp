@@ -3,6 +3,7 @@
 // restores the exact transform, navigation never dirties the file. 128x96 px, llvmpipe.
 #include "test_viewport_scene.h"
 
+#include "editor/document/edit_operations.h"
 #include "editor/viewport/render_view.h"
 #include "editor/viewport/viewport.h"
 #include "scene/history/settings_commands.h"
@@ -65,6 +66,34 @@ private slots:
               view.stats().samples, view.stats().frameMs, view.stats().paintMs, s.nonBlack, s.mean);
         QVERIFY(s.nonBlack > 0.95); // grey sky and lit shapes everywhere
         QVERIFY(s.mean > 0.15);
+    }
+
+    // Structural edits (hide, delete) need a new GPU scene: the path-traced image must come back
+    // each time, never the preview's bare clear colour.
+    void structuralEditsBringThePathTracedImageBack() {
+        RenderView& view = viewport_->view();
+        QVERIFY2(waitFor([&] { return view.stats().samples >= 4; }), "no first image");
+        const auto sphere = view.project({-1.2, 0.0, 0.0});
+        QVERIFY(sphere);
+        const auto expectImage = [&](const char* after) {
+            const int uploads = view.stats().uploads;
+            QVERIFY2(waitFor([&] { return view.stats().uploads > uploads && view.stats().samples >= 4; }), after);
+            QVERIFY2(view.stats().error.isEmpty(), qPrintable(view.stats().error));
+            const QImage image = view.grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+            int clearColour = 0;
+            for (int y = 0; y < image.height(); ++y)
+                for (int x = 0; x < image.width(); ++x)
+                    clearColour += image.pixel(x, y) == qRgb(56, 56, 61);
+            QVERIFY2(clearColour < image.width() * image.height() / 10, after);
+            const QRgb onSphere = image.pixel(sphere->toPoint() * image.width() / view.width());
+            QVERIFY2(qRed(onSphere) > 60, after); // the sphere, lit by the grey sky
+        };
+        QCOMPARE(setVisible(*document_, scene_.ground, false), QString());
+        expectImage("after hiding the ground");
+        document_->push(std::make_unique<RemoveNode>(scene_.box));
+        expectImage("after deleting the box");
+        document_->undo();
+        expectImage("after undoing the delete");
     }
 
     void rasterPreviewDrawsTheShapes() {

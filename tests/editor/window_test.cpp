@@ -8,6 +8,8 @@
 #include "editor/main_window/autosave.h"
 #include "editor/main_window/main_window.h"
 #include "editor/outliner/outliner_panel.h"
+#include "editor/viewport/render_view.h"
+#include "editor/viewport/viewport.h"
 
 #include <QAction>
 #include <QApplication>
@@ -50,6 +52,8 @@ private slots:
     void autosaveIsRecoveredAfterACrash();
     void droppedFilesOpenOrImport();
     void keymapOverridesApply();
+    void undoFollowsADelete();
+    void viewportRendersAfterStructuralEdits();
     void screenshotOfTheMainWindow();
 
 private:
@@ -145,6 +149,67 @@ void WindowTest::keymapOverridesApply() {
     MainWindow plain(panelsOnly(temp_.filePath("autosave-g")));
     for (QAction* action : plain.keymapActions())
         if (action->objectName() == "edit.duplicate") QCOMPARE(action->shortcut(), QKeySequence("Ctrl+D"));
+}
+
+// A Delete is a macro: its pushes arrive while nothing can be undone yet. The Undo action (menu,
+// toolbar, Ctrl+Z) must still be on once it closes, also when the document was already modified
+// (no clean-state change then to refresh it).
+void WindowTest::undoFollowsADelete() {
+    MainWindow window(panelsOnly(temp_.filePath("autosave-h")));
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(window.openFile(cornellBox()));
+    QAction* undo = nullptr;
+    QAction* remove = nullptr;
+    for (QAction* action : window.keymapActions()) {
+        if (action->objectName() == "edit.undo") undo = action;
+        if (action->objectName() == "edit.delete") remove = action;
+    }
+    QVERIFY(undo && remove);
+    QCOMPARE(addNode(window.document(), "lamp", defaultLight(LightType::Point)), QString());
+    QVERIFY(window.isWindowModified());
+    window.document().setSelection({nodeNamed(window.document(), "left_wall_red")});
+    QVERIFY(remove->isEnabled());
+    remove->trigger();
+    QCOMPARE(window.document().scene().nodeCount(), std::size_t{9}); // 9 + lamp - wall
+    QVERIFY(undo->isEnabled());
+    QVERIFY2(undo->text().contains("Delete"), qPrintable(undo->text()));
+    undo->trigger();
+    QCOMPARE(window.document().scene().nodeCount(), std::size_t{10});
+    QVERIFY(nodeNamed(window.document(), "left_wall_red").valid());
+}
+
+// Hiding and deleting nodes in the opened Cornell box each need a new GPU scene: the viewport must
+// come back to a path-traced picture every time, never stay on the bare clear colour.
+void WindowTest::viewportRendersAfterStructuralEdits() {
+    MainWindow::Options options;
+    options.autosaveFolder = temp_.filePath("autosave-i");
+    options.askBeforeRecovery = false;
+    MainWindow window(options);
+    window.resize(640, 420);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(window.openFile(cornellBox()));
+    QVERIFY(window.viewport());
+    RenderView& view = window.viewport()->view();
+    const auto expectPicture = [&](const char* after) {
+        const int uploads = view.stats().uploads;
+        QTRY_VERIFY2_WITH_TIMEOUT(view.stats().uploads > uploads && view.stats().samples >= 2, after, 30000);
+        QVERIFY2(view.stats().error.isEmpty(), qPrintable(view.stats().error));
+        const QImage image = view.grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+        int clearColour = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x) clearColour += image.pixel(x, y) == qRgb(56, 56, 61);
+        QVERIFY2(clearColour < image.width() * image.height() / 2, after);
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(view.stats().samples >= 2, 30000);
+    QCOMPARE(setVisible(window.document(), nodeNamed(window.document(), "floor"), false), QString());
+    expectPicture("after hiding the floor");
+    window.document().setSelection({nodeNamed(window.document(), "left_wall_red")});
+    QCOMPARE(deleteSelection(window.document()), QString());
+    expectPicture("after deleting the red wall");
+    window.document().undo();
+    expectPicture("after undoing the delete");
 }
 
 void WindowTest::screenshotOfTheMainWindow() {
