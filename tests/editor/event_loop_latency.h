@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <vector>
 
-namespace glint::editor::test {
+namespace glint::test {
 
 // Nearest-rank percentile, p in [0, 1] (1 = the worst).
 inline double percentile(std::vector<double> v, double p) {
@@ -43,4 +43,4 @@ private:
     std::vector<double> lateness_;
 };
 
-} // namespace glint::editor::test
+} // namespace glint::test

@@ -127,7 +127,7 @@ private slots:
         QStringList progress;
         connect(&document, &Document::loadProgress, this, [&] { progress << window.loadProgress().text(); });
 
-        editor::test::EventLoopLatency latency;
+        glint::test::EventLoopLatency latency;
         QElapsedTimer clock;
         clock.start();
         latency.start();
@@ -136,7 +136,7 @@ private slots:
         QAction* import = window.findChild<QAction*>("file.import");
         QVERIFY(!import->isEnabled()); // no merging into a scene about to be replaced
         QVERIFY(loaded.wait(20000)); // an event loop that sleeps until something happens, like the editor's
-        QTest::qWait(3 * editor::test::EventLoopLatency::kTickMs); // the tick after the arrival counts its stall
+        QTest::qWait(3 * glint::test::EventLoopLatency::kTickMs); // the tick after the arrival counts its stall
         latency.stop();
         const qint64 total = clock.elapsed();
 
@@ -160,13 +160,13 @@ private slots:
         Document document;
         QCOMPARE(document.open(cornellBox()), QString());
         QSignalSpy loaded(&document, &Document::loaded);
-        editor::test::EventLoopLatency latency;
+        glint::test::EventLoopLatency latency;
         QElapsedTimer clock;
         clock.start();
         latency.start();
         document.startImport(large_);
         QVERIFY(loaded.wait(20000));
-        QTest::qWait(3 * editor::test::EventLoopLatency::kTickMs);
+        QTest::qWait(3 * glint::test::EventLoopLatency::kTickMs);
         latency.stop();
         const double p95 = latency.percentile(0.95);
         qInfo("background import: %lld ms; event loop ticks %zu, lateness p50 %.1f ms, p95 %.1f ms, worst %.1f ms",

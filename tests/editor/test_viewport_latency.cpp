@@ -4,6 +4,8 @@
 // Scene: a 180,000-triangle mesh plus shapes under a grey sky; viewport 320x180 px, llvmpipe.
 #include "test_viewport_scene.h"
 
+#include "event_loop_latency.h"
+
 #include "editor/viewport/render_view.h"
 #include "editor/viewport/viewport.h"
 
@@ -19,15 +21,8 @@ using namespace glint::editor;
 
 namespace {
 
-constexpr int kTickMs = 10;
 constexpr int kMeasureMs = 4000;
 constexpr double kP95LimitMs = 100.0;
-
-double percentile(std::vector<double> v, double p) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    return v[std::min(v.size() - 1, std::size_t(p * double(v.size() - 1) + 0.5))];
-}
 
 } // namespace
 
@@ -59,21 +54,16 @@ private slots:
         QVERIFY2(view.stats().error.isEmpty(), qPrintable(view.stats().error));
         qInfo("set-up (upload, compile, first frames): %lld ms", setup.elapsed());
 
-        std::vector<double> lateness, stillFrames, movingFrames;
+        std::vector<double> stillFrames, movingFrames;
         std::vector<double> stillDivisors, movingDivisors;
-        QElapsedTimer clock, sinceTick;
+        QElapsedTimer clock;
         QObject::connect(&view, &RenderView::statsChanged, &view, [&] {
             if (view.stats().framesThisPaint == 0 || !clock.isValid()) return;
             const bool still = clock.elapsed() < kMeasureMs / 2;
             (still ? stillFrames : movingFrames).push_back(view.stats().frameMs);
             (still ? stillDivisors : movingDivisors).push_back(view.stats().divisor);
         });
-        QTimer ticker;
-        ticker.setTimerType(Qt::PreciseTimer);
-        QObject::connect(&ticker, &QTimer::timeout, &view, [&] {
-            lateness.push_back(std::max(0.0, double(sinceTick.nsecsElapsed()) / 1e6 - kTickMs));
-            sinceTick.restart();
-        });
+        test::EventLoopLatency latency;
         QTimer orbiter;
         QObject::connect(&orbiter, &QTimer::timeout, &view, [&] {
             if (clock.elapsed() < kMeasureMs / 2) return; // first half still, second half moving
@@ -83,20 +73,19 @@ private slots:
         });
         const long long paintsBefore = view.stats().paints;
         clock.start();
-        sinceTick.start();
-        ticker.start(kTickMs);
+        latency.start();
         orbiter.start(300);
         while (clock.elapsed() < kMeasureMs) QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
-        ticker.stop();
+        latency.stop();
         orbiter.stop();
 
-        const double p95 = percentile(lateness, 0.95);
-        qInfo("ticks %zu, lateness p50 %.1f ms, p95 %.1f ms, max %.1f ms; paints %lld", lateness.size(), percentile(lateness, 0.5), p95,
-              percentile(lateness, 1.0), view.stats().paints - paintsBefore);
+        const double p95 = latency.percentile(0.95);
+        qInfo("ticks %zu, lateness p50 %.1f ms, p95 %.1f ms, max %.1f ms; paints %lld", latency.ticks(), latency.percentile(0.5), p95,
+              latency.percentile(1.0), view.stats().paints - paintsBefore);
         qInfo("frame ms still: median %.1f, p95 %.1f at 1/%.0f resolution; moving: median %.1f, p95 %.1f at 1/%.0f; samples %d",
-              percentile(stillFrames, 0.5), percentile(stillFrames, 0.95), percentile(stillDivisors, 0.5), percentile(movingFrames, 0.5),
-              percentile(movingFrames, 0.95), percentile(movingDivisors, 0.5), view.stats().samples);
-        QVERIFY(lateness.size() > 20);
+              test::percentile(stillFrames, 0.5), test::percentile(stillFrames, 0.95), test::percentile(stillDivisors, 0.5), test::percentile(movingFrames, 0.5),
+              test::percentile(movingFrames, 0.95), test::percentile(movingDivisors, 0.5), view.stats().samples);
+        QVERIFY(latency.ticks() > 20);
         QVERIFY(view.stats().paints - paintsBefore > 10); // it really rendered meanwhile
         QVERIFY2(p95 < kP95LimitMs, qPrintable(QString("p95 lateness %1 ms").arg(p95)));
     }

@@ -2,6 +2,7 @@
 // answering; a newer load supersedes a preparation in flight; renderer warnings reach the log panel.
 // Scenes are generated: 24 wavy grids of 66x66 quads (209,088 triangles, 24 mesh BVHs), a grey
 // sky, and a textured quad whose texture file is missing. Viewport 160x120 px, llvmpipe, Xvfb.
+#include "event_loop_latency.h"
 #include "test_viewport_scene.h"
 
 #include "editor/log/log_panel.h"
@@ -26,16 +27,9 @@ using namespace glint::editor;
 
 namespace {
 
-constexpr int kTickMs = 10;
 constexpr double kP95LimitMs = 100.0; // the bar for a UI that never freezes
 constexpr int kGrids = 24;
 constexpr int kGridQuads = 66;
-
-double percentile(std::vector<double> v, double p) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    return v[std::min(v.size() - 1, std::size_t(p * double(v.size() - 1) + 0.5))];
-}
 
 // Adds the grids of `source` to the document, one undoable node each.
 void addMeshesOf(Document& document, const Scene& source) {
@@ -119,14 +113,8 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(view.stats().samples >= 1, 60000);
         const int uploadsBefore = view.stats().uploads;
 
-        std::vector<double> lateness;
-        QElapsedTimer sinceTick, clock;
-        QTimer ticker;
-        ticker.setTimerType(Qt::PreciseTimer);
-        QObject::connect(&ticker, &QTimer::timeout, &view, [&] {
-            lateness.push_back(std::max(0.0, double(sinceTick.nsecsElapsed()) / 1e6 - kTickMs));
-            sinceTick.restart();
-        });
+        QElapsedTimer clock;
+        test::EventLoopLatency latency;
         QStringList progress;
         QObject::connect(&view, &RenderView::statsChanged, &view, [&] {
             if (view.stats().preparing && (progress.isEmpty() || progress.back() != view.stats().preparation))
@@ -136,22 +124,21 @@ private slots:
         // at the next paint, in the event loop below.
         addMeshesOf(document, test::manyGridsScene(kGrids, kGridQuads));
         clock.start();
-        sinceTick.start();
-        ticker.start(kTickMs);
+        latency.start();
         while (view.stats().uploads == uploadsBefore && clock.elapsed() < 60000)
             QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
         QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
-        ticker.stop();
+        latency.stop();
 
-        const double p95 = percentile(lateness, 0.95);
+        const double p95 = latency.percentile(0.95);
         qInfo("209,088 triangles in %d meshes: prepared in %.0f ms on the worker, uploaded in %.1f ms; %lld ms in all",
               kGrids, view.stats().prepareMs, view.stats().uploadMs, clock.elapsed());
         qInfo("event loop: ticks %zu, lateness p50 %.1f ms, p95 %.1f ms, max %.1f ms; progress lines %lld (last '%s')",
-              lateness.size(), percentile(lateness, 0.5), p95, percentile(lateness, 1.0), qlonglong(progress.size()),
+              latency.ticks(), latency.percentile(0.5), p95, latency.percentile(1.0), qlonglong(progress.size()),
               progress.isEmpty() ? "" : qPrintable(progress.back()));
         QVERIFY2(view.stats().error.isEmpty(), qPrintable(view.stats().error));
         QCOMPARE(view.stats().uploads, uploadsBefore + 1);
-        QVERIFY(lateness.size() > 10);                             // the loop really ran meanwhile
+        QVERIFY(latency.ticks() > 10);                             // the loop really ran meanwhile
         QVERIFY(progress.filter(QStringLiteral("BVH")).size() > 1); // per-mesh progress reached the status line
         QVERIFY2(p95 < kP95LimitMs, qPrintable(QString("p95 lateness %1 ms").arg(p95)));
         QTRY_VERIFY_WITH_TIMEOUT(view.stats().samples >= 1, 60000); // and the new scene renders
