@@ -20,12 +20,14 @@ void packShape(PackedScene& out, const Shape& shape, const glm::mat4& worldFromL
     ++out.shapeCount;
 }
 
-void packLight(PackedScene& out, const Light& light, const glm::mat4& worldFromLight, LightUnits units) {
+// Texels: type, radius, node id (the id AOV of a visible lamp), 0; radiometric intensity, cos of the
+// sun's angular radius; position, cos outer cone; shine direction, cos inner cone.
+void packLight(PackedScene& out, const Light& light, const glm::mat4& worldFromLight, float objectId, LightUnits units) {
     const glm::vec3 position(worldFromLight[3]);
     const glm::vec3 shine = glm::normalize(glm::vec3(worldFromLight * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f)));
     const float cosSunRadius = light.angularDiameter > 0.0f ? std::cos(0.5f * light.angularDiameter) : 1.0f;
     const float radius = light.type == LightType::Sun ? 0.0f : std::max(light.radius, 0.0f);
-    out.lights.push_back({static_cast<float>(light.type), radius, 0.0f, 0.0f});
+    out.lights.push_back({static_cast<float>(light.type), radius, objectId, 0.0f});
     out.lights.push_back(glm::vec4(radiometricIntensity(light, units), cosSunRadius));
     out.lights.push_back(glm::vec4(position, std::cos(light.outerConeAngle)));
     out.lights.push_back(glm::vec4(shine, std::cos(light.innerConeAngle)));
@@ -68,7 +70,7 @@ PackedScene packScene(const Scene& scene, const TextureSet* textures) {
             packShape(out, *shape, scene.worldFromNode(id), static_cast<float>(id.value),
                       it == out.materialIndex.end() ? 0 : it->second);
         } else if (const auto* light = node.get<Light>()) {
-            packLight(out, *light, scene.worldFromNode(id), scene.settings.lightUnits);
+            packLight(out, *light, scene.worldFromNode(id), static_cast<float>(id.value), scene.settings.lightUnits);
         }
     }
     return out;

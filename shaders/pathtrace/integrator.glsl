@@ -119,14 +119,15 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng, OUT(LobeRadiance) l
     for (int depth = 0; depth <= maxBounces + 1; ++depth) {
         setTraceState(depth == 0, alphaKey(rng, 2u), cone);
         Hit hit = traceClosest(ray);
-        float lampT;
-        vec3 lamp = sphereLampEmission(ray, hit.t, lastBsdfPdf, lampT); // a sphere lamp in front ends the path
+        float lampT, lampId;
+        vec3 lamp = sphereLampEmission(ray, hit.t, lastBsdfPdf, lampT, lampId); // a sphere lamp in front ends the path
         if (depth == 1 && reflectedPath) lobes.reflectionDistance = min(min(hit.t, lampT), REFLECTION_AT_INFINITY);
         if (lampT < hit.t) {
             addRadiance(result.radiance, lobes, throughput * lamp, specularPath);
             if (depth == 0) {
                 result.albedo = lamp;
                 result.depth = lampT * dot(ray.direction, viewAxis);
+                result.objectId = lampId;
             }
             break;
         }

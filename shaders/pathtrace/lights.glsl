@@ -63,13 +63,16 @@ LightSample sampleLight(int light, vec3 p, vec2 u) {
 // delta lobes: weight 1), weighted against the lamp's cone sampling by the power heuristic. A spot's
 // cone applies by the direction from the lamp's centre to the ray's origin, as next-event estimation
 // applies it to the shading point: both strategies estimate the same integrand.
-vec3 sphereLampEmission(Ray ray, float tMax, float bsdfPdf, OUT(float) t) {
+// t: the distance to the nearest sphere lamp before tMax (RAY_MAX: none); objectId: its node id.
+vec3 sphereLampEmission(Ray ray, float tMax, float bsdfPdf, OUT(float) t, OUT(float) objectId) {
     int light;
     t = closestLamp(ray.origin, ray.direction, tMax, light);
+    objectId = 0.0;
     if (light < 0) {
         t = RAY_MAX;
         return vec3(0.0);
     }
+    objectId = lightTexel(light, 0).z;
     vec3 offset = lightTexel(light, 2).xyz - ray.origin;
     float distance2 = dot(offset, offset);
     float radius = lampRadius(light);

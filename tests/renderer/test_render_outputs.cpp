@@ -68,7 +68,7 @@ private slots:
     }
 
     // 8x8: an orthographic camera 2 m above a ground plane: depth 2, normal +Y, id of the ground
-    // node, albedo its base colour. The sky: depth +inf, id 0.
+    // node, albedo its base colour. The sky: depth +inf, id 0. A sphere lamp: its node's id.
     void aovsDescribeTheFirstHit() {
         Scene scene;
         const MaterialId grey = scene.materials.add(lambert({0.25f, 0.5f, 0.75f}));
@@ -84,6 +84,16 @@ private slots:
         const auto empty = render(sky(glm::vec3(1.0f)), Tonemapper::None, 0.0f);
         QVERIFY(std::isinf(empty.depth[0]) && empty.depth[0] > 0.0f);
         QCOMPARE(empty.objectId[0], 0.0f);
+        // A sphere lamp (radius 1 m, 1 m under the camera, filling the view) is a visible object
+        // too: its node's id and its depth, as a mesh or shape would give.
+        Light lamp;
+        lamp.radius = 1.0f;
+        const NodeId lampNode = addNode(scene, "lamp", lamp, {0.0f, 0.0f, 0.0f});
+        const auto lit = render(scene, Tonemapper::None, 0.0f);
+        for (std::size_t p : {std::size_t{27}, std::size_t{36}}) { // the pixels at the centre
+            QCOMPARE(lit.objectId[p], float(lampNode.value));
+            QVERIFY(lit.depth[p] > 1.0f && lit.depth[p] < 1.05f); // the lamp's top is 1 m away, its side a bit further
+        }
     }
 
     // 8x8, 2 spp: ambient occlusion (1 m) of an open ground plane is exactly 1; inside a closed box
