@@ -166,7 +166,7 @@ QString Document::saveAs(const QString& path) {
         // Relative paths (the environment image) resolve beside the current file: a save into
         // another folder copies what they name, as textures are copied.
         SaveOptions options;
-        if (!path_.isEmpty()) options.sourceFolder = toPath(QFileInfo(path_).absolutePath());
+        options.sourceFolder = folder();
         SaveReport report = saveScene(scene_, toPath(target), options);
         reportWarnings(warningLines(report.dropped));
     } catch (const std::exception& e) {
@@ -298,6 +298,10 @@ void Document::onLoadFailed(const QString& message) {
     inFlight_.reset();
     emit loadFailed(request.kind, request.shownPath(), message);
     startNext();
+}
+
+std::filesystem::path Document::folder() const {
+    return path_.isEmpty() ? std::filesystem::path() : toPath(QFileInfo(path_).absolutePath());
 }
 
 QString Document::displayName() const {

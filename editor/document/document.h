@@ -18,6 +18,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <filesystem>
 #include <functional>
 #include <map>
 #include <optional>
@@ -90,6 +91,9 @@ public:
     void setReplaceConfirmation(std::function<bool()> confirm) { confirmReplace_ = std::move(confirm); }
 
     const QString& filePath() const { return path_; }
+    // The folder the scene's relative paths (the project's environment image) resolve in: the open
+    // file's; empty while the scene is untitled.
+    std::filesystem::path folder() const;
     QString displayName() const;  // the scene name, else the file name, else "Untitled"
     bool isModified() const { return recovered_ || !history_.isClean(); }
     // Warnings of the last open, import or save, as "FILE: message" lines.

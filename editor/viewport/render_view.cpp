@@ -17,7 +17,6 @@
 #include "renderer/configuration.h"
 #include "scene/anim/scene_at_time.h"
 
-#include <QFileInfo>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
@@ -46,8 +45,8 @@ renderer::CameraSetup setupFrom(const ViewCamera& camera, int width, int height)
 
 std::filesystem::path environmentPath(const Document& document) {
     const std::string& file = document.scene().settings.environment.file;
-    if (file.empty() || document.filePath().isEmpty()) return {};
-    return std::filesystem::path(QFileInfo(document.filePath()).absolutePath().toStdString()) / file;
+    if (file.empty() || document.folder().empty()) return {};
+    return document.folder() / file;
 }
 
 } // namespace

@@ -100,9 +100,18 @@ void WindowTest::saveReopenSaveIsByteIdentical() {
 
 void WindowTest::autosaveIsRecoveredAfterACrash() {
     const QString folder = temp_.filePath("autosave-c");
+    // The scene's sky is an image beside it: the recovered scene must keep it.
+    QVERIFY(QDir().mkpath(temp_.filePath("with-sky")));
+    QVERIFY(QFile::copy(QStringLiteral(GLINT_RESOURCES_DIR "/env/studio_small_03_1k.hdr"), temp_.filePath("with-sky/sky.hdr")));
+    {
+        Document original;
+        QCOMPARE(original.open(cornellBox()), QString());
+        original.scene().settings.environment.file = "sky.hdr";
+        QCOMPARE(original.saveAs(temp_.filePath("with-sky/cornell_box.gltf")), QString());
+    }
     {
         auto* window = new MainWindow(panelsOnly(folder));
-        QVERIFY(window->openFile(cornellBox()));
+        QVERIFY(window->openFile(temp_.filePath("with-sky/cornell_box.gltf")));
         QCOMPARE(renameNode(window->document(), nodeNamed(window->document(), "floor"), "recovered floor"), QString());
         QCOMPARE(window->autosave().saveNow(), QString());
         QVERIFY(QFile::exists(window->autosave().copyPath()));
@@ -114,6 +123,8 @@ void WindowTest::autosaveIsRecoveredAfterACrash() {
     QTRY_VERIFY(nodeNamed(next.document(), "recovered floor"));
     QVERIFY(next.document().isModified()); // newer than the file until saved
     QCOMPARE(QFileInfo(next.document().filePath()).fileName(), QString("cornell_box.gltf"));
+    QCOMPARE(next.document().scene().settings.environment.file, std::string("sky.hdr"));
+    QVERIFY2(next.document().lastWarnings().filter("environment").isEmpty(), qPrintable(next.document().lastWarnings().join('\n')));
     // Saving elsewhere makes the copy obsolete: it is removed.
     QVERIFY(next.saveAs(temp_.filePath("recovered.gltf")));
     QVERIFY(!QFile::exists(next.autosave().copyPath()));
