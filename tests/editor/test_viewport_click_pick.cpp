@@ -9,6 +9,7 @@
 //   (never a wrong node) until the new picker arrives with the preparation.
 // Prints the GUI-thread cost the first click after an edit had before (a synchronous picker build
 // of 209,088 triangles) and has now (a retarget), for docs/PERFORMANCE.md.
+#include "shown_viewport.h"
 #include "test_viewport_scene.h"
 
 #include "editor/viewport/node_icons.h"
@@ -63,18 +64,6 @@ Scene mixedScene() {
     scene.setVisible(hidden, false);
     return scene;
 }
-
-struct Shown {
-    QMainWindow window;
-    Viewport* viewport = nullptr;
-    explicit Shown(Document& document) {
-        viewport = new Viewport(document, &window);
-        window.setCentralWidget(viewport);
-        window.resize(160, 120);
-        window.show();
-    }
-    RenderView& view() { return viewport->view(); }
-};
 
 QPoint pixelOf(RenderView& view, glm::dvec3 world) {
     const auto p = view.project(world);
@@ -137,7 +126,7 @@ private slots:
         const NodeId sphereLamp = addNode(scene, "sphere lamp", lamp(0.5f), {0.0f, 1.2f, 0.0f});
         const NodeId pointLight = addNode(scene, "point light", lamp(0.0f), {-1.6f, 1.3f, 0.0f});
         const NodeId camera = addNode(scene, "camera", Camera{}, {1.9f, 1.3f, 0.0f});
-        Shown shown(document);
+        test::ShownViewport shown(document);
         QVERIFY(QTest::qWaitForWindowExposed(&shown.window));
         RenderView& view = shown.view();
         QTRY_VERIFY_WITH_TIMEOUT(view.picking().current(), 60000);
@@ -184,7 +173,7 @@ private slots:
     void rasterViewsGetAPickerToo() {
         Document document;
         const test::ShapesScene shapes = test::buildShapesScene(document);
-        Shown shown(document);
+        test::ShownViewport shown(document);
         QVERIFY(QTest::qWaitForWindowExposed(&shown.window));
         RenderView& view = shown.view();
         view.setMode(ViewMode::Solid);

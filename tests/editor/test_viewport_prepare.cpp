@@ -3,6 +3,7 @@
 // Scenes are generated: 24 wavy grids of 66x66 quads (209,088 triangles, 24 mesh BVHs), a grey
 // sky, and a textured quad whose texture file is missing. Viewport 160x120 px, llvmpipe, Xvfb.
 #include "event_loop_latency.h"
+#include "shown_viewport.h"
 #include "test_viewport_scene.h"
 
 #include "editor/log/log_panel.h"
@@ -42,18 +43,6 @@ void addMeshesOf(Document& document, const Scene& source) {
         document.push(std::make_unique<AddNode>(std::move(node)));
     }
 }
-
-struct Shown {
-    QMainWindow window;
-    Viewport* viewport = nullptr;
-    explicit Shown(Document& document) {
-        viewport = new Viewport(document, &window);
-        window.setCentralWidget(viewport);
-        window.resize(160, 120);
-        window.show();
-    }
-    RenderView& view() { return viewport->view(); }
-};
 
 int countLines(const LogPanel& log, const QString& a, const QString& b) {
     int n = 0;
@@ -107,7 +96,7 @@ private slots:
         Document document;
         test::buildShapesScene(document);
         test::addGridMesh(document, 4); // the mesh shader variant compiles before the measurement
-        Shown shown(document);
+        test::ShownViewport shown(document);
         QVERIFY(QTest::qWaitForWindowExposed(&shown.window));
         RenderView& view = shown.view();
         QTRY_VERIFY_WITH_TIMEOUT(view.stats().samples >= 1, 60000);
@@ -169,7 +158,7 @@ private slots:
 
         Document document;
         test::buildShapesScene(document);
-        Shown shown(document);
+        test::ShownViewport shown(document);
         QVERIFY(QTest::qWaitForWindowExposed(&shown.window));
         RenderView& view = shown.view();
         QTRY_VERIFY_WITH_TIMEOUT(view.stats().samples >= 1, 60000);
@@ -198,7 +187,7 @@ private slots:
         Document document;
         test::buildShapesScene(document);
         addMeshesOf(document, test::manyGridsScene(kGrids, kGridQuads));
-        auto shown = std::make_unique<Shown>(document);
+        auto shown = std::make_unique<test::ShownViewport>(document);
         QVERIFY(QTest::qWaitForWindowExposed(&shown->window));
         QTRY_VERIFY_WITH_TIMEOUT(shown->view().stats().preparation.contains(QStringLiteral("BVH")), 20000);
         QVERIFY(shown->view().stats().preparing);

@@ -33,10 +33,15 @@ QByteArray readAll(const QString& path) {
     return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
 }
 
-MainWindow::Options panelsOnly(const QString& autosaveFolder) {
+MainWindow::Options withViewport(const QString& autosaveFolder) {
     MainWindow::Options options;
     options.autosaveFolder = autosaveFolder;
     options.askBeforeRecovery = false;
+    return options;
+}
+
+MainWindow::Options panelsOnly(const QString& autosaveFolder) {
+    MainWindow::Options options = withViewport(autosaveFolder);
     options.createViewport = false;
     return options;
 }
@@ -193,10 +198,7 @@ void WindowTest::undoFollowsADelete() {
 // Hiding and deleting nodes in the opened Cornell box each need a new GPU scene: the viewport must
 // come back to a path-traced picture every time, never stay on the bare clear colour.
 void WindowTest::viewportRendersAfterStructuralEdits() {
-    MainWindow::Options options;
-    options.autosaveFolder = temp_.filePath("autosave-i");
-    options.askBeforeRecovery = false;
-    MainWindow window(options);
+    MainWindow window(withViewport(temp_.filePath("autosave-i")));
     window.resize(640, 420);
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
@@ -224,10 +226,7 @@ void WindowTest::viewportRendersAfterStructuralEdits() {
 }
 
 void WindowTest::screenshotOfTheMainWindow() {
-    MainWindow::Options options;
-    options.autosaveFolder = temp_.filePath("autosave-d");
-    options.askBeforeRecovery = false;
-    MainWindow window(options);
+    MainWindow window(withViewport(temp_.filePath("autosave-d")));
     window.resize(1200, 700);
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
