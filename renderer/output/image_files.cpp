@@ -185,7 +185,9 @@ void checkOutputWritable(const std::filesystem::path& file) {
     const std::filesystem::path folder = file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
     std::error_code ec;
     if (!std::filesystem::is_directory(folder, ec))
-        throw FileError(file.string(), "no-folder", "the output folder does not exist");
+        throw FileError(file.string(), "no-folder",
+                        std::filesystem::exists(folder, ec) ? "'" + folder.string() + "' is a file, not a folder"
+                                                            : "the output folder does not exist");
     if (::access(folder.c_str(), W_OK) != 0)
         throw FileError(file.string(), "not-writable", "the output folder is not writable");
 }

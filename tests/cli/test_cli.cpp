@@ -129,7 +129,16 @@ private slots:
     void renderToUnwritableFolderFails() {
         auto r = runGlint({"render", cornell, "--out", "/proc/no-such-dir/x.png", "--size", "8x8", "--spp", "1"});
         QCOMPARE(r.exitCode, 1);
-        QVERIFY2(r.err.startsWith("glint: /proc/no-such-dir/x.png: "), qPrintable(r.err));
+        QVERIFY2(r.err.startsWith("glint: /proc/no-such-dir/x.png: the output folder does not exist"), qPrintable(r.err));
+        // A file where the folder should be is named as such.
+        QTemporaryDir dir;
+        const QString file = dir.filePath("a-file");
+        QFile plain(file);
+        QVERIFY(plain.open(QIODevice::WriteOnly));
+        plain.close();
+        r = runGlint({"render", cornell, "--out", file + "/x.png", "--size", "8x8", "--spp", "1"});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("'" + file + "' is a file, not a folder"), qPrintable(r.err));
     }
 };
 
