@@ -96,6 +96,9 @@ LoadResult importScene(const std::filesystem::path& file, const ImportOptions& o
     LoadOptions load = options.load;
     load.loadProjectFile = false;
     LoadResult result = loadGltfFromMemory(reply->glb, file.parent_path(), name, load);
+    // The transfer GLB carries bytes for every image the importer could read; the rest it named
+    // already (missing, refused, unreadable), so reading their bare URIs again says it twice.
+    std::erase_if(result.warnings, [](const Warning& w) { return w.code == "missing-texture"; });
     for (Warning& w : reply->warnings) w.file = name;
     result.warnings.insert(result.warnings.begin(), reply->warnings.begin(), reply->warnings.end());
     return result;

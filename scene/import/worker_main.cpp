@@ -124,7 +124,10 @@ glint::WorkerReply importToReply(const WorkerArguments& args) {
         glint::SaveReport report;
         reply.glb = glint::writeGlb(result.scene, &report);
         reply.warnings = std::move(result.warnings);
-        reply.warnings.insert(reply.warnings.end(), report.dropped.begin(), report.dropped.end());
+        // A missing texture was named by the importer already; that the transfer GLB then holds only
+        // its URI says nothing more to the user.
+        for (glint::Warning& w : report.dropped)
+            if (w.code != "image-bytes-missing") reply.warnings.push_back(std::move(w));
     } catch (const glint::FileError& e) {
         reply.errorCode = e.code();
         reply.errorMessage = e.message();
