@@ -333,6 +333,7 @@ T = {
 "building the click picker": ("costruzione del selettore per clic", "erstelle die Klickauswahl", "construction du sélecteur de clic", "construyendo el selector de clic"),
 "reading the glTF file": ("lettura del file glTF", "lese die glTF-Datei", "lecture du fichier glTF", "leyendo el archivo glTF"),
 "running the importer": ("esecuzione dell'importatore", "führe den Importer aus", "exécution de l'importateur", "ejecutando el importador"),
+"Nothing in the scene emits light, so the path-traced image is black: add a light or an emissive material, or give the environment a colour or an image (Scene tab).": ("Nella scena nulla emette luce, perciò l'immagine path-traced è nera: aggiungi una luce o un materiale emissivo, oppure dai all'ambiente un colore o un'immagine (scheda Scena).", "Nichts in der Szene strahlt Licht aus, daher ist das Pathtracing-Bild schwarz: Fügen Sie ein Licht oder ein emittierendes Material hinzu oder geben Sie der Umgebung eine Farbe oder ein Bild (Reiter Szene).", "Rien dans la scène n'émet de lumière, l'image en path tracing est donc noire : ajoutez une lumière ou un matériau émissif, ou donnez à l'environnement une couleur ou une image (onglet Scène).", "Nada en la escena emite luz, así que la imagen trazada es negra: añade una luz o un material emisivo, o da al entorno un color o una imagen (pestaña Escena)."),
 }
 
 

@@ -1451,6 +1451,10 @@ R %3  G %4  B %5 (linear)</translation>
         <source>building the click picker</source>
         <translation>erstelle die Klickauswahl</translation>
     </message>
+    <message>
+        <source>Nothing in the scene emits light, so the path-traced image is black: add a light or an emissive material, or give the environment a colour or an image (Scene tab).</source>
+        <translation>Nichts in der Szene strahlt Licht aus, daher ist das Pathtracing-Bild schwarz: Fügen Sie ein Licht oder ein emittierendes Material hinzu oder geben Sie der Umgebung eine Farbe oder ein Bild (Reiter Szene).</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::SceneLoader</name>

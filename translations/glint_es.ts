@@ -1451,6 +1451,10 @@ R %3  G %4  B %5 (lineal)</translation>
         <source>building the click picker</source>
         <translation>construyendo el selector de clic</translation>
     </message>
+    <message>
+        <source>Nothing in the scene emits light, so the path-traced image is black: add a light or an emissive material, or give the environment a colour or an image (Scene tab).</source>
+        <translation>Nada en la escena emite luz, así que la imagen trazada es negra: añade una luz o un material emisivo, o da al entorno un color o una imagen (pestaña Escena).</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::SceneLoader</name>

@@ -1451,6 +1451,10 @@ R %3  V %4  B %5 (linéaire)</translation>
         <source>building the click picker</source>
         <translation>construction du sélecteur de clic</translation>
     </message>
+    <message>
+        <source>Nothing in the scene emits light, so the path-traced image is black: add a light or an emissive material, or give the environment a colour or an image (Scene tab).</source>
+        <translation>Rien dans la scène n&apos;émet de lumière, l&apos;image en path tracing est donc noire : ajoutez une lumière ou un matériau émissif, ou donnez à l&apos;environnement une couleur ou une image (onglet Scène).</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::SceneLoader</name>

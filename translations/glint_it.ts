@@ -1451,6 +1451,10 @@ R %3  G %4  B %5 (lineare)</translation>
         <source>building the click picker</source>
         <translation>costruzione del selettore per clic</translation>
     </message>
+    <message>
+        <source>Nothing in the scene emits light, so the path-traced image is black: add a light or an emissive material, or give the environment a colour or an image (Scene tab).</source>
+        <translation>Nella scena nulla emette luce, perciò l&apos;immagine path-traced è nera: aggiungi una luce o un materiale emissivo, oppure dai all&apos;ambiente un colore o un&apos;immagine (scheda Scena).</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::SceneLoader</name>

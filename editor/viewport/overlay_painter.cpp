@@ -172,8 +172,8 @@ void OverlayPainter::drawRegion(const QRectF& rect) {
     painter_.drawRect(rect);
 }
 
-void OverlayPainter::drawMessage(const QString& text) {
-    painter_.setPen(QColor(255, 120, 120));
+void OverlayPainter::drawMessage(const QString& text, MessageKind kind) {
+    painter_.setPen(kind == MessageKind::Error ? QColor(255, 120, 120) : QColor(230, 230, 230));
     painter_.drawText(QRectF(8, 8, view_.width() - 16, view_.height() - 16), Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap, text);
 }
 

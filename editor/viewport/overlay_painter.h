@@ -32,7 +32,9 @@ public:
     // kIconPickRadius: a lamp with rays (a sun with a line along its light), a camera body.
     void drawNodeIcons(const std::vector<NodeIcon>& icons, NodeId lookingThrough);
     void drawGizmo(const GizmoFrame& frame, GizmoMode mode, int activeAxis);
-    void drawMessage(const QString& text);
+    // Text over the top of the image: why nothing is drawn (red), or a hint about what is drawn.
+    enum class MessageKind { Error, Hint };
+    void drawMessage(const QString& text, MessageKind kind = MessageKind::Error);
     // The top-level BVH's leaves: one world box per instance.
     void drawBoxes(const std::vector<bvh::Aabb>& boxes);
     // The BVH heat map's legend: a colour bar from 0 to `scale` (nodes + primitives per camera ray).

@@ -16,6 +16,7 @@
 #include "editor/viewport/view_picking.h"
 #include "renderer/configuration.h"
 #include "scene/anim/scene_at_time.h"
+#include "scene/core/light_sources.h"
 
 #include <QKeyEvent>
 #include <QMouseEvent>
@@ -78,6 +79,7 @@ RenderView::RenderView(Document& document, QWidget* parent)
             stats_.samples = 0;
         }
         pending_.merge(changes);
+        noteLighting();
         picking_->noteChange(changes);
         followLookThrough();
         update();
@@ -104,6 +106,7 @@ RenderView::RenderView(Document& document, QWidget* parent)
     connect(&document_, &Document::selectionChanged, this, qOverload<>(&QWidget::update));
     connect(picking_.get(), &ViewPicking::arrived, this, qOverload<>(&QWidget::update));
     sinceMotion_.start();
+    noteLighting();
 }
 
 RenderView::~RenderView() {
@@ -379,6 +382,15 @@ void RenderView::drawOverlays() {
     if (const NodeId node = document_.currentNode(); node.valid() && document_.scene().contains(node))
         overlays.drawGizmo(gizmoFrame(node), gizmoMode_, gizmoDrag_ ? gizmoDrag_->axis() : -1);
     if (!stats_.error.isEmpty()) overlays.drawMessage(stats_.error);
+    else if (!stats_.hint.isEmpty() && !showsRaster(mode_)) overlays.drawMessage(stats_.hint, OverlayPainter::MessageKind::Hint);
+}
+
+// Most glTF assets carry no light and the default environment is black: say why the image is.
+void RenderView::noteLighting() {
+    stats_.hint = hasLightSource(document_.scene())
+                      ? QString()
+                      : tr("Nothing in the scene emits light, so the path-traced image is black: add a light or an emissive "
+                           "material, or give the environment a colour or an image (Scene tab).");
 }
 
 // --- camera and modes ----------------------------------------------------------------------

@@ -55,6 +55,7 @@ struct ViewportStats {
     long long paints = 0;
     int contexts = 0;       // GL contexts this view has built its GPU scene in (re-docking makes new ones)
     QString error;          // why nothing is drawn (scene too big for the GPU, ...), or empty
+    QString hint;           // why the image is black although it is drawn (nothing emits light), or empty
     // GPU scene preparation (on a worker thread): in progress, and a line for the status bar.
     bool preparing = false;
     QString preparation;
@@ -128,6 +129,7 @@ private:
     void followLookThrough();
     void placeAtCamera(NodeId camera);
     bool syncGpuScene();
+    void noteLighting();
     void startPreparation();
     void uploadPrepared(PreparedDocument prepared);
     void paintWhilePreparing();

@@ -96,6 +96,23 @@ private slots:
         expectImage("after undoing the delete");
     }
 
+    // A scene with nothing that emits light renders black: the viewport says why over the image,
+    // and the note goes as soon as the environment has a colour again (one undo).
+    void blackSceneSaysNothingEmitsLight() {
+        RenderView& view = viewport_->view();
+        QVERIFY(view.stats().hint.isEmpty()); // the grey sky lights the shapes
+        ProjectSettings dark = document_->scene().settings;
+        dark.environment.color = glm::vec3(0.0f);
+        document_->push(std::make_unique<SetProjectSettings>(dark));
+        QVERIFY(view.stats().hint.contains("emits light"));
+        QVERIFY(waitFor([&] { return view.stats().samples >= 2; }));
+        const test::ImageStats black = test::imageStats(view.grabFramebuffer());
+        qInfo("black scene with the note: non-black %.3f, mean %.4f", black.nonBlack, black.mean);
+        QVERIFY(black.mean > 0.0 && black.mean < 0.3); // light text over black (the lit view: 0.75)
+        document_->undo();
+        QVERIFY(view.stats().hint.isEmpty());
+    }
+
     void rasterPreviewDrawsTheShapes() {
         RenderView& view = viewport_->view();
         for (QAction* action : viewport_->viewModeActions())
