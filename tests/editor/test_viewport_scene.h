@@ -86,6 +86,16 @@ struct ImageStats {
     double mean = 0.0;
 };
 
+// The share of pixels in the raster preview's clear colour (0.22, 0.22, 0.24): a viewport showing
+// only that has no picture of the scene.
+inline double clearColourShare(const QImage& image) {
+    const QImage rgb = image.convertToFormat(QImage::Format_RGB32);
+    long long n = 0;
+    for (int y = 0; y < rgb.height(); ++y)
+        for (int x = 0; x < rgb.width(); ++x) n += rgb.pixel(x, y) == qRgb(56, 56, 61);
+    return rgb.isNull() ? 1.0 : double(n) / (double(rgb.width()) * rgb.height());
+}
+
 inline ImageStats imageStats(const QImage& image) {
     ImageStats s;
     if (image.isNull()) return s;
