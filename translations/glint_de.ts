@@ -688,6 +688,10 @@
         <source>Opening %1 cancelled</source>
         <translation>Öffnen von %1 abgebrochen</translation>
     </message>
+    <message>
+        <source>This display gives no OpenGL 4.1 core context, so the editor opens without its viewport; `glint render` renders headless (EGL).</source>
+        <translation>Diese Anzeige bietet keinen OpenGL-4.1-Core-Kontext, daher öffnet sich der Editor ohne Ansicht; `glint render` rendert ohne Anzeige (EGL).</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::OutlinerModel</name>

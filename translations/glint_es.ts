@@ -688,6 +688,10 @@
         <source>Opening %1 cancelled</source>
         <translation>Apertura de %1 cancelada</translation>
     </message>
+    <message>
+        <source>This display gives no OpenGL 4.1 core context, so the editor opens without its viewport; `glint render` renders headless (EGL).</source>
+        <translation>Esta pantalla no ofrece un contexto OpenGL 4.1 core, así que el editor se abre sin su vista; `glint render` renderiza sin pantalla (EGL).</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::OutlinerModel</name>

@@ -688,6 +688,10 @@
         <source>Opening %1 cancelled</source>
         <translation>Ouverture de %1 annulée</translation>
     </message>
+    <message>
+        <source>This display gives no OpenGL 4.1 core context, so the editor opens without its viewport; `glint render` renders headless (EGL).</source>
+        <translation>Cet affichage ne fournit pas de contexte OpenGL 4.1 core : l&apos;éditeur s&apos;ouvre donc sans sa vue ; `glint render` effectue le rendu sans affichage (EGL).</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::OutlinerModel</name>

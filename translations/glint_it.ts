@@ -688,6 +688,10 @@
         <source>Opening %1 cancelled</source>
         <translation>Apertura di %1 annullata</translation>
     </message>
+    <message>
+        <source>This display gives no OpenGL 4.1 core context, so the editor opens without its viewport; `glint render` renders headless (EGL).</source>
+        <translation>Questo display non offre un contesto OpenGL 4.1 core, perciò l&apos;editor si apre senza la vista; `glint render` esegue il rendering senza display (EGL).</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::OutlinerModel</name>

@@ -2,12 +2,16 @@
 
 #include "main_window.h"
 
+#include "editor/log/log_panel.h"
 #include "editor/preferences/language.h"
 #include "editor/preferences/preferences.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QOpenGLContext>
 #include <QSurfaceFormat>
+
+#include <cstdio>
 
 namespace glint::editor {
 
@@ -27,6 +31,17 @@ void setGlDefaults() {
     format.setProfile(QSurfaceFormat::CoreProfile);
     format.setDepthBufferSize(24);
     QSurfaceFormat::setDefaultFormat(format);
+}
+
+// Whether this display gives the 4.1 core context the viewport needs: a remote session, the
+// offscreen platform or an old driver may not, and a QOpenGLWidget without a context takes the
+// whole application down at its first paint. Without one the editor opens without its viewport.
+bool viewportContextAvailable() {
+    QOpenGLContext context;
+    context.setFormat(QSurfaceFormat::defaultFormat());
+    if (!context.create()) return false;
+    const QSurfaceFormat got = context.format();
+    return got.profile() == QSurfaceFormat::CoreProfile && got.version() >= qMakePair(4, 1);
 }
 
 } // namespace
@@ -50,7 +65,16 @@ int runEditor(int argc, char** argv, const char* version) {
 
     MainWindow::Options options;
     options.systemPalette = app.palette(); // the platform's, before the theme replaces it
+    options.createViewport = viewportContextAvailable();
     MainWindow window(options);
+    if (!options.createViewport) {
+        const QString why = QCoreApplication::translate(
+            "glint::editor::MainWindow",
+            "This display gives no OpenGL 4.1 core context, so the editor opens without its viewport; `glint render` renders "
+            "headless (EGL).");
+        std::fprintf(stderr, "glint: %s\n", qPrintable(why));
+        window.log().warning(why);
+    }
     window.show();
     const bool recovered = window.offerRecovery();
     if (!recovered && !parser.positionalArguments().isEmpty()) window.beginOpen(parser.positionalArguments().first());

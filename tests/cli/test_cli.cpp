@@ -4,6 +4,7 @@
 
 #include "scene/io/scene_io.h"
 
+#include <QElapsedTimer>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -139,6 +140,34 @@ private slots:
         r = runGlint({"render", cornell, "--out", file + "/x.png", "--size", "8x8", "--spp", "1"});
         QCOMPARE(r.exitCode, 1);
         QVERIFY2(r.err.contains("'" + file + "' is a file, not a folder"), qPrintable(r.err));
+    }
+
+    // A display without an OpenGL 4.1 core context (here Qt's offscreen platform) used to crash the
+    // editor at its first paint; it now opens without its viewport and says why.
+    void editorWithoutOpenGlKeepsRunning() {
+        QTemporaryDir home;
+        QProcess editor;
+        auto env = QProcessEnvironment::systemEnvironment();
+        env.insert("QT_QPA_PLATFORM", "offscreen");
+        env.remove("DISPLAY");
+        env.remove("WAYLAND_DISPLAY");
+        env.insert("XDG_CONFIG_HOME", home.filePath("config")); // no preferences or autosave of the user's
+        env.insert("XDG_DATA_HOME", home.filePath("data"));
+        editor.setProcessEnvironment(env);
+        editor.start(QStringLiteral(GLINT_EXECUTABLE), {cornell});
+        QVERIFY(editor.waitForStarted());
+        QString err;
+        QElapsedTimer clock;
+        clock.start();
+        while (!err.contains("without its viewport") && clock.elapsed() < 30000 && editor.state() == QProcess::Running) {
+            editor.waitForReadyRead(200);
+            err += QString::fromUtf8(editor.readAllStandardError());
+        }
+        QVERIFY2(err.contains("glint: This display gives no OpenGL 4.1 core context"), qPrintable(err));
+        QTest::qWait(3000); // the window is shown and painted meanwhile
+        QCOMPARE(editor.state(), QProcess::Running);
+        editor.kill();
+        editor.waitForFinished();
     }
 };
 
