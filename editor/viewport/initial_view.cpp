@@ -25,7 +25,8 @@ double orbitDistance(const glm::dmat4& worldFromCamera, const Bounds& bounds, fl
 } // namespace
 
 ViewCamera initialView(const Scene& scene, double aspect) {
-    const Scene posed = sceneAt(scene, 0.0);
+    Scene storage;
+    const Scene& posed = posedAt(scene, 0.0, storage);
     const Bounds bounds = worldBounds(posed);
     ViewCamera view;
     if (const NodeId id = defaultCamera(posed); id.valid()) {

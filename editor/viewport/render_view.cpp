@@ -50,6 +50,15 @@ std::filesystem::path environmentPath(const Document& document) {
     return document.folder() / file;
 }
 
+// Changes after which the scene may have gained or lost its last light source (hasLightSource):
+// not transform drags, names, the timeline or the display.
+bool mayChangeLighting(const ChangeSet& changes) {
+    for (const Change c : {Change::Structure, Change::Visibility, Change::Light, Change::Geometry, Change::Material,
+                           Change::Environment, Change::Assets})
+        if (changes.has(c)) return true;
+    return false;
+}
+
 } // namespace
 
 RenderView::RenderView(Document& document, QWidget* parent)
@@ -79,7 +88,7 @@ RenderView::RenderView(Document& document, QWidget* parent)
             stats_.samples = 0;
         }
         pending_.merge(changes);
-        noteLighting();
+        if (mayChangeLighting(changes)) noteLighting();
         picking_->noteChange(changes);
         followLookThrough();
         update();
@@ -430,7 +439,8 @@ void RenderView::followLookThrough() {
 
 void RenderView::placeAtCamera(NodeId camera) {
     if (!camera.valid() || !document_.scene().contains(camera)) return;
-    const Scene posed = sceneAt(document_.scene(), document_.currentTime());
+    Scene storage;
+    const Scene& posed = posedAt(document_.scene(), document_.currentTime(), storage);
     const auto* lens = posed.at(camera).get<Camera>();
     setFromWorld(camera_, posed.worldFromNode(camera), lens ? lens->yfov : camera_.yfov);
 }

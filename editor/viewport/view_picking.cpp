@@ -19,13 +19,6 @@ bool changesMeshes(const ChangeSet& changes) {
     return changes.has(Change::Geometry) || changes.has(Change::Structure) || changes.has(Change::Visibility);
 }
 
-// The document posed at `seconds` where it animates; `storage` holds the posed copy.
-const Scene& posedAt(const Scene& document, double seconds, Scene& storage) {
-    if (!renderer::sceneAnimates(document)) return document;
-    storage = sceneAt(document, seconds);
-    return storage;
-}
-
 } // namespace
 
 struct ViewPicking::Job {
@@ -90,7 +83,7 @@ void ViewPicking::dropJob() {
 
 void ViewPicking::startJob(const Scene& document, double seconds) {
     auto job = std::make_shared<Job>();
-    job->posed = renderer::sceneAnimates(document) ? sceneAt(document, seconds) : document; // the worker's own copy
+    job->posed = sceneAnimates(document) ? sceneAt(document, seconds) : document; // the worker's own copy
     job->meshes = meshes_;
     job->poses = poses_;
     dropJob();

@@ -124,11 +124,6 @@ PreparedScene prepareScene(const Scene& scene, const std::filesystem::path& envi
     return out;
 }
 
-bool sceneAnimates(const Scene& scene) {
-    const auto [start, end] = sceneAnimationTimeSpan(scene);
-    return end > start || !scene.animations.empty();
-}
-
 Scene sceneForTime(const Scene& document, double seconds) { return sceneAnimates(document) ? sceneAt(document, seconds) : document; }
 
 } // namespace glint::renderer

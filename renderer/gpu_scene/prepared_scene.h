@@ -74,8 +74,6 @@ struct PreparationCancelled {};
 PreparedScene prepareScene(const Scene& scene, const std::filesystem::path& environmentFile, const TextureLimits& limits,
                            MeshBvhCache& meshCache, const PrepareControl& control = {}, TextureCache* textureCache = nullptr);
 
-// Whether node animations or a camera path move anything over time.
-bool sceneAnimates(const Scene& scene);
 // The document as rendered at `seconds`: posed when it animates, else the document itself.
 Scene sceneForTime(const Scene& document, double seconds);
 

@@ -39,4 +39,15 @@ Scene sceneAt(const Scene& scene, double t) {
     return posed;
 }
 
+bool sceneAnimates(const Scene& scene) {
+    const auto [start, end] = sceneAnimationTimeSpan(scene);
+    return end > start || !scene.animations.empty();
+}
+
+const Scene& posedAt(const Scene& scene, double t, Scene& storage) {
+    if (!sceneAnimates(scene)) return scene;
+    storage = sceneAt(scene, t);
+    return storage;
+}
+
 } // namespace glint

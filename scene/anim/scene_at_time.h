@@ -13,4 +13,11 @@ void poseSceneAt(Scene& scene, double t);
 // A posed copy; the document itself is never changed by time.
 Scene sceneAt(const Scene& scene, double t);
 
+// Whether node animations or a camera path move anything over time.
+bool sceneAnimates(const Scene& scene);
+
+// `scene` itself where nothing animates, else its posed copy at t held in `storage`: a pose without
+// copying the meshes of a still scene.
+const Scene& posedAt(const Scene& scene, double t, Scene& storage);
+
 } // namespace glint
