@@ -3,9 +3,6 @@
 # other Glint libraries.
 function(glint_check_layer)
   foreach(target ${ARGN})
-    if(NOT TARGET ${target})
-      continue()
-    endif()
     get_target_property(libs ${target} LINK_LIBRARIES)
     get_target_property(ilibs ${target} INTERFACE_LINK_LIBRARIES)
     foreach(lib ${libs} ${ilibs})

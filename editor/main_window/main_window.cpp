@@ -12,14 +12,10 @@
 #include "editor/preferences/retranslate.h"
 #include "editor/properties/properties_panel.h"
 
-#if defined(GLINT_HAVE_VIEWPORT)
+#include "editor/timeline/timeline_panel.h"
 #include "editor/viewport/render_view.h"
 #include "editor/viewport/view_camera.h"
 #include "editor/viewport/viewport.h"
-#endif
-#if defined(GLINT_HAVE_TIMELINE)
-#include "editor/timeline/timeline_panel.h"
-#endif
 
 #include <QApplication>
 #include <QCloseEvent>
@@ -74,13 +70,11 @@ MainWindow::~MainWindow() {
 }
 
 void MainWindow::createCentralView() {
-#if defined(GLINT_HAVE_VIEWPORT)
     if (options_.createViewport) {
         createViewport();
         return;
     }
-#endif
-    // The viewport is not part of this build (or not wanted): say so where it would be.
+    // No viewport wanted (no OpenGL 4.1, or tests of the panels alone): say so where it would be.
     auto* placeholder = new QLabel(this);
     keepTranslated(placeholder, TextRole::Text, staticMetaObject.className(), QT_TR_NOOP("The viewport is not available in this build."));
     placeholder->setAlignment(Qt::AlignCenter);
@@ -89,14 +83,12 @@ void MainWindow::createCentralView() {
 }
 
 void MainWindow::createViewport() {
-#if defined(GLINT_HAVE_VIEWPORT)
     auto* viewport = new Viewport(*document_, this);
     viewport_ = viewport;
     keepTranslated(viewport, TextRole::AccessibleName, staticMetaObject.className(), QT_TR_NOOP("Viewport"));
     viewportActions_ = viewport->allActions();
     connect(viewport, &Viewport::statusMessage, this, [this](const QString& text) { renderLabel_->setText(text); });
     setCentralWidget(viewport);
-#endif
 }
 
 QDockWidget* MainWindow::addDock(QWidget* widget, const char* title, const QString& name, Qt::DockWidgetArea area) {
@@ -120,20 +112,15 @@ void MainWindow::createDocks() {
     auto* propertiesDock = addDock(properties_, QT_TR_NOOP("Properties"), "PropertiesDock", Qt::RightDockWidgetArea);
     auto* sceneDock = addDock(sceneSettings_, QT_TR_NOOP("Scene"), "SceneDock", Qt::RightDockWidgetArea);
     auto* logDock = addDock(log_, QT_TR_NOOP("Log"), "LogDock", Qt::BottomDockWidgetArea);
-    Q_UNUSED(logDock)
-#if defined(GLINT_HAVE_TIMELINE)
     timeline_ = new TimelinePanel(*document_, this);
-#if defined(GLINT_HAVE_VIEWPORT)
     if (viewport_) {
         // New keys take the viewport's pose; a scene without a camera gets one from the view.
         timeline_->setKeySource([this](double t) { return keyFromView(viewport_->view().camera(), t); });
         timeline_->setCameraMaker([this] { return viewport_->makeSceneCamera(); });
     }
-#endif
     auto* timelineDock = addDock(timeline_, QT_TR_NOOP("Timeline"), "TimelineDock", Qt::BottomDockWidgetArea);
     tabifyDockWidget(logDock, timelineDock);
     timelineDock->raise();
-#endif
     splitDockWidget(outlinerDock, historyDock, Qt::Vertical);
     tabifyDockWidget(propertiesDock, sceneDock);
     propertiesDock->raise();

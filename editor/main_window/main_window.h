@@ -45,8 +45,8 @@ public:
     LogPanel& log() { return *log_; }
     Autosave& autosave() { return *autosave_; }
     QWidget* centralView() const { return centralWidget(); }
-    Viewport* viewport() const { return viewport_; }       // null without the viewport
-    TimelinePanel* timeline() const { return timeline_; }  // null without the timeline
+    Viewport* viewport() const { return viewport_; } // null without the viewport
+    TimelinePanel* timeline() const { return timeline_; }
 
     // Every action with a shortcut the keymap may change.
     QList<QAction*> keymapActions() const;

@@ -6,15 +6,12 @@
 
 #include "editor/document/document.h"
 #include "editor/document/edit_operations.h"
+#include "editor/export/export_dialog.h"
 #include "editor/history_view/command_labels.h"
 #include "editor/outliner/outliner_panel.h"
 #include "editor/preferences/language.h"
 #include "editor/preferences/preferences_dialog.h"
 #include "editor/preferences/retranslate.h"
-
-#if defined(GLINT_HAVE_EXPORT)
-#include "editor/export/export_dialog.h"
-#endif
 
 #include <QAction>
 #include <QActionGroup>
@@ -181,7 +178,6 @@ void MainWindow::createMenus() {
 }
 
 void MainWindow::createExportActions(QMenu* file) {
-#if defined(GLINT_HAVE_EXPORT)
     file->addSeparator();
     auto* still = makeAction("file.export_still", QT_TR_NOOP("Export &Image..."), QKeySequence(Qt::CTRL | Qt::Key_E));
     auto* animation = makeAction("file.export_animation", QT_TR_NOOP("Export A&nimation..."),
@@ -196,9 +192,6 @@ void MainWindow::createExportActions(QMenu* file) {
     connect(animation, &QAction::triggered, this, [open] { open(ExportDialog::Kind::Animation); });
     file->addAction(still);
     file->addAction(animation);
-#else
-    Q_UNUSED(file)
-#endif
 }
 
 void MainWindow::createToolBar() {
