@@ -1,7 +1,7 @@
 #include "renderer/offline_render.h"
 
 #include "renderer/gl/headless_context.h"
-#include "scene/io/project_file.h"
+#include "scene/io/project/project_file.h"
 
 #include <epoxy/gl.h>
 

@@ -1,7 +1,7 @@
 #include "scene_file.h"
 
 #include "scene/import/import.h"
-#include "scene/io/project_file.h"
+#include "scene/io/project/project_file.h"
 
 #include <algorithm>
 #include <cctype>

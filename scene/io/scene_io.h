@@ -1,6 +1,6 @@
 #pragma once
 // The public face of Glint's file I/O: load a scene (glTF + its project file), save it atomically.
-// Implemented by gltf_reader.cpp, gltf_writer.cpp, project_file.cpp and atomic_save.cpp.
+// Implemented by gltf_read/, gltf_write/, project/ and files/atomic_save.cpp.
 #include "scene/core/diagnostics.h"
 #include "scene/core/scene.h"
 

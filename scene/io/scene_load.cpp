@@ -1,6 +1,6 @@
 // loadScene: a .gltf, a .glb, or a project file (.glint.json) that names its glTF.
-#include "confined_path.h"
-#include "scene/io/project_file.h"
+#include "scene/io/files/confined_path.h"
+#include "scene/io/project/project_file.h"
 #include "scene/io/scene_io.h"
 
 #include <fstream>

@@ -1,10 +1,10 @@
 // saveScene and writeGlb: the glTF writer's output plus the project file, saved as one atomic set.
 #include "scene_io.h"
 
-#include "atomic_save.h"
-#include "environment_save.h"
-#include "gltf_writer.h"
-#include "project_file.h"
+#include "scene/io/files/atomic_save.h"
+#include "scene/io/gltf_write/gltf_writer.h"
+#include "scene/io/project/environment_save.h"
+#include "scene/io/project/project_file.h"
 
 #include <algorithm>
 #include <system_error>

@@ -1,5 +1,5 @@
 // Fuzzes the project-file parser. Exceptions are clean rejections; anything else is a bug.
-#include "scene/io/project_file.h"
+#include "scene/io/project/project_file.h"
 
 #include <cstddef>
 #include <cstdint>

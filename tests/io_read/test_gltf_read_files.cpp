@@ -2,7 +2,7 @@
 // (no `..`, no absolute paths, no symlinks out), missing and oversized images.
 #include "io_read_helpers.h"
 
-#include "scene/io/project_file.h"
+#include "scene/io/project/project_file.h"
 
 #include <QTemporaryDir>
 #include <QTest>

@@ -4,7 +4,7 @@
 #include "feature_scene.h"
 #include "io_write_helpers.h"
 
-#include "scene/io/atomic_save.h"
+#include "scene/io/files/atomic_save.h"
 #include "scene/io/scene_io.h"
 
 #include <QTemporaryDir>

@@ -3,7 +3,7 @@
 // and what cannot be kept named in the report. Saving twice gives the same bytes.
 #include "feature_scene.h"
 
-#include "scene/io/project_file.h"
+#include "scene/io/project/project_file.h"
 #include "scene/io/scene_io.h"
 
 #include <QTemporaryDir>

@@ -3,7 +3,7 @@
 #include "feature_scene.h"
 #include "io_write_helpers.h"
 
-#include "scene/io/gltf_writer.h"
+#include "scene/io/gltf_write/gltf_writer.h"
 #include "scene/io/scene_io.h"
 
 #include <QTemporaryDir>

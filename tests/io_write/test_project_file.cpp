@@ -1,7 +1,7 @@
 // The project file and the number formatting under it: shortest floats, any locale, unknown keys
 // kept, wrong types and newer schemas refused with errors that name the key.
-#include "scene/io/json_numbers.h"
-#include "scene/io/project_file.h"
+#include "scene/io/json/json_numbers.h"
+#include "scene/io/project/project_file.h"
 
 #include <QtTest>
 

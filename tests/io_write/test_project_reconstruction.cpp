@@ -3,7 +3,7 @@
 // key when out of range, and carried by the settings command's JSON (undo logs).
 #include "scene/history/settings_commands.h"
 #include "scene/history/value_json.h"
-#include "scene/io/project_file.h"
+#include "scene/io/project/project_file.h"
 
 #include <QtTest>
 

@@ -1,6 +1,6 @@
 #include "environment_save.h"
 
-#include "confined_path.h"
+#include "scene/io/files/confined_path.h"
 
 #include <algorithm>
 #include <fstream>

@@ -4,7 +4,7 @@
 #include "gltf_writer.h"
 
 #include "gltf_writer_context.h"
-#include "json_numbers.h"
+#include "scene/io/json/json_numbers.h"
 
 #include <array>
 #include <bit>

@@ -1,6 +1,6 @@
 #include "gltf_writer_buffers.h"
 
-#include "json_numbers.h"
+#include "scene/io/json/json_numbers.h"
 
 #include <algorithm>
 #include <cstring>

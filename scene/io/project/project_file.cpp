@@ -2,9 +2,9 @@
 // error naming the key), unknown keys kept with a warning, older schemas migrated step by step.
 #include "project_file.h"
 
-#include "confined_path.h"
-#include "json_numbers.h"
-#include "json_parse.h"
+#include "scene/io/files/confined_path.h"
+#include "scene/io/json/json_numbers.h"
+#include "scene/io/json/json_parse.h"
 
 #include <array>
 #include <cmath>

@@ -3,7 +3,7 @@
 // scene is written. Asset ids map to glTF indices in id order, so a saved file is ordered by id.
 #include "gltf_writer.h"
 #include "gltf_writer_buffers.h"
-#include "json_numbers.h" // mergeUnknown: `unknown` is {"extensions": {...}, "extras": ...}
+#include "scene/io/json/json_numbers.h" // mergeUnknown: `unknown` is {"extensions": {...}, "extras": ...}
 
 #include <map>
 #include <string>

@@ -1,7 +1,7 @@
 // Materials (metallic-roughness plus the KHR_materials_* extensions Glint renders), textures and
 // samplers. An extension is written only when it differs from its defaults, which are Material{}'s.
 #include "gltf_writer_context.h"
-#include "json_numbers.h"
+#include "scene/io/json/json_numbers.h"
 
 #include <glm/gtc/type_ptr.hpp>
 

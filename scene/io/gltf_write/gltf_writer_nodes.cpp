@@ -2,7 +2,7 @@
 // tessellated fallback mesh), a KHR_lights_punctual light (plus GLINT_light) or a camera (plus
 // GLINT_camera and, with a path, GLINT_camera_path). Then the default scene.
 #include "gltf_writer_context.h"
-#include "json_numbers.h"
+#include "scene/io/json/json_numbers.h"
 
 #include "scene/geometry/geometry.h"
 

@@ -1,8 +1,8 @@
 // loadGltfFromMemory: the steps of gltf_reader.h in order.
 #include "gltf_reader.h"
 
-#include "confined_fs.h"
 #include "gltf_read_json.h"
+#include "scene/io/files/confined_fs.h"
 
 namespace glint {
 

@@ -2,7 +2,7 @@
 // The project's environment image on save: the glTF writer copies textures beside the new file,
 // this does the same for the one file the project file names, so a scene saved into another folder
 // still renders (docs/FILE_FORMAT.md, "Saving the environment image").
-#include "atomic_save.h"
+#include "scene/io/files/atomic_save.h"
 
 #include "scene/core/diagnostics.h"
 #include "scene/core/settings.h"

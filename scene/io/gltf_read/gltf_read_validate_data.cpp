@@ -2,10 +2,10 @@
 // declares and no larger than the cap; every bufferView lies inside its buffer; every accessor
 // (and its sparse parts) inside its bufferView. Counts are checked before any multiplication can
 // overflow and before anything is allocated.
-#include "confined_fs.h"
 #include "gltf_read_json.h"
 #include "gltf_read_uri.h"
 #include "gltf_reader.h"
+#include "scene/io/files/confined_fs.h"
 
 #include <array>
 #include <filesystem>

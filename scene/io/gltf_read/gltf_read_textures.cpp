@@ -4,7 +4,7 @@
 #include "gltf_read_json.h"
 #include "gltf_read_uri.h"
 #include "gltf_reader.h"
-#include "image_decoder.h"
+#include "scene/io/image_decoder.h"
 
 namespace glint {
 

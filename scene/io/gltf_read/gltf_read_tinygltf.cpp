@@ -1,8 +1,8 @@
 // tinygltf loads the buffers and images of an already validated document, through Glint's confined
 // file callbacks. Its image callback decodes nothing: it keeps the encoded bytes, so that saving
 // never re-encodes and decoding can wait until (and unless) a renderer needs the pixels.
-#include "confined_fs.h"
 #include "gltf_reader.h"
+#include "scene/io/files/confined_fs.h"
 
 namespace glint {
 

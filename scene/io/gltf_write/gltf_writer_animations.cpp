@@ -2,7 +2,7 @@
 // order), a LINEAR animation baked at the project fps and marked GLINT_baked_camera_path, so other
 // tools play the same motion. Baked animations already in the scene are stale copies: re-baked.
 #include "gltf_writer_context.h"
-#include "json_numbers.h"
+#include "scene/io/json/json_numbers.h"
 
 #include "scene/anim/camera_path_sampling.h"
 

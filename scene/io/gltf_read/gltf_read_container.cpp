@@ -1,7 +1,7 @@
 // GLB container checks and the depth-capped JSON parse. Nothing here trusts a length field: every
 // chunk is checked against the bytes actually present before it is used.
 #include "gltf_reader.h"
-#include "json_parse.h"
+#include "scene/io/json/json_parse.h"
 
 #include <algorithm>
 
