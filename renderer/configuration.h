@@ -1,5 +1,5 @@
 #pragma once
-// The named render configurations of CONTRACTS.md and what each one turns on. Real-time ones render
+// The named render configurations (docs/CLI.md, --config) and what each one turns on. Real-time ones render
 // a few samples per frame and reconstruct with history (TAA, SVGF); Accumulate and Reference keep a
 // running mean instead and converge to the exact image.
 #include <optional>

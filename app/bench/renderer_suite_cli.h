@@ -24,7 +24,7 @@ std::shared_ptr<SuiteCli> addRendererSuiteOptions(CLI::App& bench);
 SuiteOptions suiteOptions(const SuiteCli& cli, const CLI::App& bench, const std::string& scene, const std::string& out,
                           int width, int height, std::optional<int> spp, std::optional<int> bounces, int referenceSpp);
 
-// Runs the suite; errors become the one-line message and exit code 1 (CONTRACTS.md).
+// Runs the suite; errors become the one-line message and exit code 1 (docs/CLI.md).
 int runRendererSuiteCommand(const SuiteOptions& options);
 
 } // namespace glint::bench

@@ -1,5 +1,5 @@
 // glint bench SCENE: for each configuration, N frames of a still view, timed per frame (median and
-// spread, finished on the GPU) and compared with a converged reference (relMSE, SSIM as CONTRACTS.md
+// spread, finished on the GPU) and compared with a converged reference (relMSE, SSIM as docs/CLI.md
 // defines them). Writes bench.csv, bench.json and the speed-vs-accuracy chart (PNG + SVG), and
 // prints the table. Scenes with a camera path or animation are also run along it
 // (bench_camera_path.h: bench_path.csv, bench_path.json, speed_accuracy_path.png/.svg, same columns).

@@ -1,5 +1,5 @@
 #pragma once
-// Options that mean the same in every subcommand (CONTRACTS.md: --size WxH, --spp, --seed, --bounces,
+// Options that mean the same in every subcommand (docs/CLI.md: --size WxH, --spp, --seed, --bounces,
 // --config, --camera, --exposure, --tonemap, --env, --out). Registered in one place so names,
 // defaults and validation never drift apart between render, bench and encode.
 #include "renderer/output/render_plan.h"

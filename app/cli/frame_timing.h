@@ -1,5 +1,5 @@
 #pragma once
-// Frame numbers and times of an animation (CONTRACTS.md "Time, frames, shards"): frame k is at
+// Frame numbers and times of an animation (docs/CLI.md, "Time and frame numbers"): frame k is at
 // t0 + k / fps, fps possibly rational (24000/1001); --frames A-B is inclusive and 0-based.
 #include "scene/core/scene.h"
 

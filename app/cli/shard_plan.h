@@ -1,5 +1,5 @@
 #pragma once
-// Which frames one shard of a farm job renders (CONTRACTS.md "Time, frames, shards"). Pure
+// Which frames one shard of a farm job renders (docs/CLI.md, "Shards and job arrays"). Pure
 // functions: the same inputs give the same plan on every node, which is what makes a frame
 // rendered on a farm identical to the same frame rendered in one run.
 #include "frame_timing.h"

@@ -1,6 +1,6 @@
 #pragma once
 // SIGINT/SIGTERM (Ctrl-C, Slurm pre-emption, Kubernetes eviction) ask a render to stop after
-// the current frame is finished or discarded (CONTRACTS.md "Command line"). The handler only
+// the current frame is finished or discarded (docs/CLI.md, "Signals"). The handler only
 // records the signal; renders poll it between samples and frames.
 #include <signal.h>
 

@@ -151,7 +151,7 @@ PropertyForm* makeProjectForm(Document& document, const Report& report, QWidget*
                                          : QStringLiteral("%1/%2").arg(t.fpsNumerator).arg(t.fpsDenominator);
         },
         [edit, report](const QString& text) {
-            // "24" or a rational rate such as "24000/1001" (CONTRACTS.md).
+            // "24" or a rational rate such as "24000/1001" (docs/CLI.md).
             const QStringList parts = text.trimmed().split('/');
             bool okN = false, okD = parts.size() == 1;
             const int numerator = parts.value(0).toInt(&okN);

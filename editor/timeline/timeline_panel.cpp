@@ -222,7 +222,7 @@ void TimelinePanel::setPlaying(bool on) {
 }
 
 void TimelinePanel::stepFrame() {
-    // Frames are t0 + k / fps exactly (CONTRACTS.md): step the frame number, not the clock.
+    // Frames are t0 + k / fps exactly (docs/CLI.md): step the frame number, not the clock.
     const double t0 = document_.scene().settings.timeline.start;
     const long long frame = std::llround((document_.currentTime() - t0) * fps()) + 1;
     double t = t0 + double(frame) / fps();

@@ -1,6 +1,6 @@
 #pragma once
-// The camera a render looks through, resolved from the scene: by name (glTF node name first, as
-// CONTRACTS.md says), else the project's active camera, else the first camera in node order.
+// The camera a render looks through, resolved from the scene: by name (the glTF node's name,
+// docs/CLI.md --camera), else the project's active camera, else the first camera in node order.
 #include "scene/core/scene.h"
 
 #include <glm/glm.hpp>

@@ -1,6 +1,6 @@
 #pragma once
 // An equirectangular environment image read through OpenImageIO as linear float RGB, row 0 at the
-// top of the image (CONTRACTS.md "Environment").
+// top of the image (docs/UNITS.md, "Environment").
 #include <filesystem>
 #include <vector>
 

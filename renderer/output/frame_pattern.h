@@ -1,5 +1,5 @@
 #pragma once
-// Output names for animation frames (CONTRACTS.md "Time, frames, shards"): one run of '#' in the
+// Output names for animation frames (docs/CLI.md, "Time and frame numbers"): one run of '#' in the
 // file name stands for the absolute frame number, zero-padded to at least that many digits.
 // "frames/shot_####.exr" -> "frames/shot_0007.exr", frame 12345 -> "frames/shot_12345.exr".
 #include <filesystem>

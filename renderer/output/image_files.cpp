@@ -200,7 +200,7 @@ void writeRenderImage(const std::filesystem::path& file, const RenderOutput& img
     if (format == ImageFormat::Exr) planes = exrPlanes(img, layers);
     OIIO::ImageSpec spec = specFor(img, format, &planes);
     for (const auto& [key, value] : metadata) {
-        // The render time is the one thing that differs between identical renders; CONTRACTS.md
+        // The render time is the one thing that differs between identical renders; docs/CLI.md
         // allows it in EXR headers only, so 8-bit files of the same render are the same bytes.
         if (key == "renderTimeMs" && format != ImageFormat::Exr) continue;
         spec.attribute("glint:" + key, value);

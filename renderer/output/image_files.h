@@ -1,5 +1,5 @@
 #pragma once
-// Writing rendered images (CONTRACTS.md "Images"):
+// Writing rendered images (docs/CLI.md, "Images"):
 // - EXR: 32-bit float, ZIP, linear Rec.709; beauty R,G,B,A (A = coverage) and AOVs albedo.R/G/B,
 //   N.X/Y/Z, Z, id in the same file, with metadata.
 // - PNG/JPEG/TIFF: the tonemapped sRGB image, 8 bits.

@@ -19,7 +19,7 @@ struct ImageSize {
     int height = 0;
 };
 
-// Unset fields keep the project's value (CONTRACTS.md: --size, --spp, --seed, --bounces, --config,
+// Unset fields keep the project's value (docs/CLI.md: --size, --spp, --seed, --bounces, --config,
 // --camera, --exposure, --tonemap, --env).
 struct RenderOverrides {
     std::optional<ImageSize> size;

@@ -1,5 +1,5 @@
 #pragma once
-// What a video file is made with (CONTRACTS.md "Images", video): H.264 in .mp4 (yuv420p, BT.709
+// What a video file is made with (docs/CLI.md, "glint encode"): H.264 in .mp4 (yuv420p, BT.709
 // tags, CRF 18), ProRes 422 HQ in .mov (yuv422p10), FFV1 in .mkv (lossless 8-bit RGB). The
 // encoder uses a fixed number of threads, because x264's output depends on it: the same frames
 // give the same bytes on every machine with the same libraries.

@@ -20,7 +20,7 @@ enum class DebugView { None, AmbientOcclusion, BvhCost, DiffuseRadiance };
 
 struct PathTraceSettings {
     std::uint32_t seed = 0;
-    int bounces = 4;        // CONTRACTS.md: 0 = emitters and direct light only
+    int bounces = 4;        // docs/CLI.md: 0 = emitters and direct light only
     float clamp = 0.0f;     // radiance clamp per sample; 0 = off
     bool independentSampler = false; // hashed uniforms instead of R2 for the pixel jitter
     DebugView view = DebugView::None;

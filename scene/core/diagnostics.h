@@ -1,5 +1,5 @@
 #pragma once
-// Errors and warnings that name the file and the problem (CONTRACTS.md: "glint: FILE: what is wrong").
+// Errors and warnings that name the file and the problem (docs/CLI.md: "glint: FILE: what is wrong").
 #include <stdexcept>
 #include <string>
 #include <vector>

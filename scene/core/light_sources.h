@@ -1,7 +1,8 @@
 #pragma once
 // Whether anything can light a scene: a light, a visible emissive surface, or an environment
 // that is not black. Without one the image is black, which the command line says, since most
-// glTF assets carry no lights and CONTRACTS.md makes the environment black by default.
+// glTF assets carry no lights and the project's environment is black by default
+// (docs/UNITS.md).
 #include "scene/core/scene.h"
 
 namespace glint {

@@ -15,7 +15,7 @@ enum class Tonemapper { None, AcesFitted, PbrNeutral };
 
 struct Environment {
     std::string file;       // relative to the project folder; empty = uniform colour
-    glm::vec3 color{0.0f};  // radiance when no file is set (black by default: CONTRACTS.md)
+    glm::vec3 color{0.0f};  // radiance when no file is set (black by default: docs/UNITS.md)
     float intensity = 1.0f; // plain multiplier
     float rotationDegrees = 0.0f; // about +Y
     friend bool operator==(const Environment&, const Environment&) = default;

@@ -1,5 +1,5 @@
 // The environment seen by rays that leave the scene: a uniform colour, or an equirectangular map
-// (CONTRACTS.md "Environment") rotated about +Y and importance-sampled by its luminance with the
+// (docs/UNITS.md, "Environment") rotated about +Y and importance-sampled by its luminance with the
 // CDF table of renderer/cpu_twin/env_sampling.h.
 #include "sampling/environment_sampling.glsl"
 

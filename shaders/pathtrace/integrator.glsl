@@ -1,6 +1,6 @@
 // The path integrator: next-event estimation at every vertex (punctual lights; emissive triangles
 // and the environment map with multiple importance sampling), BSDF sampling to continue, Russian roulette, and a bounce
-// limit with CONTRACTS.md semantics: bounces = 0 renders emitters and direct light only; each
+// limit as docs/CLI.md defines it: bounces = 0 renders emitters and direct light only; each
 // further bounce adds one indirect vertex. Shading frames use the surface's outward normal: the
 // shared BSDF reads the side of wo (wo.z < 0: inside).
 uniform int uMaxBounces;

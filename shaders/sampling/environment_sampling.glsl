@@ -1,5 +1,5 @@
 // Importance sampling of an equirectangular environment by its luminance (tables built on the CPU by
-// renderer/cpu_twin/env_sampling.h). Orientation as CONTRACTS.md "Environment": for a unit direction
+// renderer/cpu_twin/env_sampling.h). Orientation as docs/UNITS.md, "Environment": for a unit direction
 // d, u = 0.5 + atan2(d.z, d.x) / 2pi from the left edge, v = acos(d.y) / pi from the top row. The
 // caller rotates directions into the map's frame; a rotation does not change the pdf.
 #ifdef __cplusplus

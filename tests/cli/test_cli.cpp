@@ -1,4 +1,4 @@
-// glint's command line against CONTRACTS.md: exit codes 0/1/2, "glint: FILE: problem" errors,
+// glint's command line against docs/CLI.md: exit codes 0/1/2, "glint: FILE: problem" errors,
 // --help with defaults, info/convert/render outputs.
 #include "cli_runner.h"
 

@@ -1,4 +1,4 @@
-// glint render/encode against CONTRACTS.md and issue "Output": EXR layers and metadata, --time,
+// glint render/encode against docs/CLI.md and issue "Output": EXR layers and metadata, --time,
 // animations with resume, shards identical to one run, signals, bad input, and videos (ffprobe).
 #include "cli_runner.h"
 #include "image_probe.h"
@@ -89,7 +89,7 @@ private slots:
         QVERIFY(glintAttr(probeImage(other), "settingsHash") != glintAttr(image, "settingsHash"));
 
         // The render time is the only header entry that may differ between identical renders
-        // (CONTRACTS.md): no wall-clock date may leak in.
+        // (docs/CLI.md): no wall-clock date may leak in.
         std::map<std::string, std::string> first = image.attributes, second = probeImage(again).attributes;
         first.erase("glint:renderTimeMs");
         second.erase("glint:renderTimeMs");

@@ -1,5 +1,5 @@
 // The pure planning behind --animation, --frames, --fps, --shard and the job-array variables:
-// names, ranges, rates, and which shard renders which frames (CONTRACTS.md "Time, frames, shards").
+// names, ranges, rates, and which shard renders which frames (docs/CLI.md).
 #include "app/cli/frame_pattern.h"
 #include "app/cli/frame_timing.h"
 #include "app/cli/shard_plan.h"

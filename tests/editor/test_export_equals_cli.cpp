@@ -111,7 +111,7 @@ private slots:
         QCOMPARE(a.channels, b.channels);
         QVERIFY(std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)) == 0 && a.pixels.size() == b.pixels.size());
         QVERIFY(a.attributes.count("glint:renderTimeMs") && a.attributes.count("glint:settingsHash"));
-        // The render time is the one header entry allowed to differ (CONTRACTS.md).
+        // The render time is the one header entry allowed to differ (docs/CLI.md).
         a.attributes.erase("glint:renderTimeMs");
         b.attributes.erase("glint:renderTimeMs");
         for (const auto& [key, value] : a.attributes)

@@ -57,7 +57,7 @@ class TestViewportPrepare : public QObject {
 private slots:
     void initTestCase() { QVERIFY(dir_.isValid()); }
 
-    // The CPU stage gives the same bytes on the worker as on the calling thread (CONTRACTS.md: uploads
+    // The CPU stage gives the same bytes on the worker as on the calling thread (docs/CLI.md: uploads
     // do not depend on the thread): 4 grids of 20x20 quads plus a missing (checker) texture.
     void preparationIsTheSameOnAnyThread() {
         for (const Scene& scene : {test::manyGridsScene(4, 20), test::missingTextureScene()}) {

@@ -144,7 +144,7 @@ private slots:
         GLINT_EXPECT_ERROR(loadJson(doc, folder() / "scene"), "uri-escapes-folder", "'link.bin' resolves through a symlink to a place outside the scene's folder: refused");
     }
 
-    // The project file's environment image follows the glTF URI rule (CONTRACTS.md): refused at load,
+    // The project file's environment image follows the glTF URI rule (docs/FILE_FORMAT.md): refused at load,
     // naming the project file and the key.
     void environmentEscapingTheFolder_data()
     {

@@ -1,7 +1,7 @@
 #pragma once
 // Shared pieces of the reconstruction stability tests: a small lit scene with an occluder, a
 // mirror and a glass ball, a headless context with one FrameRenderer, per-frame converged
-// references, and the error measures of CONTRACTS.md (relMSE).
+// references, and the error measures of docs/CLI.md (relMSE).
 #include "renderer/frame_renderer.h"
 #include "renderer/gl/headless_context.h"
 #include "renderer/gpu_scene/camera_setup.h"
@@ -66,7 +66,7 @@ inline renderer::FrameSettings settingsFor(renderer::Configuration configuration
     return s;
 }
 
-// relMSE of CONTRACTS.md over RGB, optionally only where `mask` is true.
+// relMSE of docs/CLI.md over RGB, optionally only where `mask` is true.
 inline double relMse(const std::vector<float>& image, const std::vector<float>& reference, const std::vector<bool>& mask = {}) {
     double sum = 0.0;
     std::size_t count = 0;

@@ -1,4 +1,4 @@
-// `glint bench` end to end on the Cornell box at 16x16: the CSV has the columns of CONTRACTS.md and
+// `glint bench` end to end on the Cornell box at 16x16: the CSV has the columns of docs/CLI.md and
 // one row per requested configuration, JSON and both chart files are written, and usage errors
 // exit with 2.
 #include <QDir>

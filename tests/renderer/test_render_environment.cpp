@@ -1,4 +1,4 @@
-// The environment map: orientation as CONTRACTS.md "Environment" says, rotation, and importance
+// The environment map: orientation as docs/UNITS.md "Environment" says, rotation, and importance
 // sampling with MIS giving the irradiance integral. The HDR is tests/data/env (see its LICENSES.md).
 #include "image_stats.h"
 #include "render_scene.h"

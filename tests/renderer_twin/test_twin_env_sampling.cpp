@@ -1,6 +1,6 @@
 // Environment importance sampling: the CPU-built CDF table read through the shared GLSL sampler.
 // Sampled directions follow environmentDirectionPdf (chi-square over the image's pixels), the pdf
-// integrates to 1 over the sphere, and the orientation is CONTRACTS.md's (u = 0.25 faces -Z).
+// integrates to 1 over the sphere, and the orientation is docs/UNITS.md's (u = 0.25 faces -Z).
 #include "chi_square.h"
 #include "renderer/cpu_twin/env_sampling.h"
 #include "renderer/cpu_twin/glsl_twin.h"
@@ -81,7 +81,7 @@ private slots:
             vec2 back = equirectFromDirection(directionFromEquirect(uv));
             QVERIFY(std::abs(back.x - uv.x) < 1e-5f && std::abs(back.y - uv.y) < 1e-5f);
         }
-        // CONTRACTS.md: d = (0, 0, -1) -> u = 0.25; image centre faces +X; +Y is the top row.
+        // docs/UNITS.md: d = (0, 0, -1) -> u = 0.25; image centre faces +X; +Y is the top row.
         QVERIFY(std::abs(equirectFromDirection(vec3(0.0f, 0.0f, -1.0f)).x - 0.25f) < 1e-6f);
         QVERIFY(std::abs(equirectFromDirection(vec3(1.0f, 0.0f, 0.0f)).x - 0.5f) < 1e-6f);
         QVERIFY(equirectFromDirection(vec3(0.0f, 1.0f, 0.0f)).y < 1e-6f);

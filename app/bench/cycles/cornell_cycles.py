@@ -15,7 +15,7 @@ transform (the EXR holds linear scene radiance either way), black world (a glTF 
 Writes OUT_DIR/cycles_<N>spp.exr per sample count, OUT_DIR/cycles_reference.exr, and
 OUT_DIR/cycles_convergence.csv with columns samples,seconds,relmse,cpu_seconds: seconds is the wall time of
 bpy.ops.render.render (scene sync included; with persistent data that is a few ms), relmse against
-the reference (rendered with seed + 1) as CONTRACTS.md defines it (mean over pixels and RGB of
+the reference (rendered with seed + 1) as docs/CLI.md defines it (mean over pixels and RGB of
 (x - r)^2 / (r^2 + 0.01)); cpu_seconds the process CPU time of all threads (the steadier figure on a
 shared machine); the last row is the reference itself.
 """

@@ -1,5 +1,5 @@
 #pragma once
-// The folder check of CONTRACTS.md: a path inside a scene file may not leave the scene's folder
+// The folder check (docs/CLI.md, "Scene files"): a path inside a scene file may not leave the scene's folder
 // (no `..` out of it, no absolute paths, no symlink pointing outside). One checker for every path a
 // scene names: glTF URIs (confined_fs.h hands it to tinygltf) and the project file's environment
 // image (checked at load and again by the renderer before it opens the file).
