@@ -65,17 +65,23 @@ glm::vec3 sampledEmission(const Scene& scene, const Material& m) {
 
 EmissiveTriangles emissiveTriangles(const Scene& scene, const MeshData& data, const std::map<MaterialId, int>& materialIndex) {
     std::vector<glm::vec3> emissionOf(materialIndex.size() + 1, glm::vec3(0.0f));
+    std::vector<bool> twoSidedOf(materialIndex.size() + 1, true);
     for (const auto& [id, index] : materialIndex) {
         emissionOf[static_cast<std::size_t>(index)] = sampledEmission(scene, scene.materials.at(id));
+        twoSidedOf[static_cast<std::size_t>(index)] = scene.materials.at(id).doubleSided;
     }
     EmissiveTriangles lights;
     for (const bvh::Instance& instance : data.instances) {
         const bvh::MeshTriangles& mesh = data.bvhs[instance.target].triangles;
+        // A mirroring transform turns the winding around; the front stays where the transformed
+        // normal points (glTF), so such triangles are stored with two vertices swapped.
+        const bool mirrored = glm::determinant(glm::mat3(instance.worldFromLocal)) < 0.0f;
         for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
             const glm::vec3 emission = emissionOf.at(mesh.materials[t]);
             if (emission == glm::vec3(0.0f)) continue;
             const auto world = [&](std::uint32_t v) { return glm::vec3(instance.worldFromLocal * glm::vec4(mesh.positions[v], 1.0f)); };
-            lights.add(world(mesh.triangles[t].x), world(mesh.triangles[t].y), world(mesh.triangles[t].z), emission);
+            const glm::uvec3 v = mesh.triangles[t];
+            lights.add(world(v.x), world(mirrored ? v.z : v.y), world(mirrored ? v.y : v.z), emission, twoSidedOf.at(mesh.materials[t]));
         }
     }
     lights.finish();

@@ -1,7 +1,10 @@
 // Emissive mesh triangles as lights (renderer/gpu_scene/emissive_triangles.h): one triangle chosen
 // in proportion to its power, a uniform point on it. Since the choice is proportional to area x
 // luminance, the pdf per unit area of any emitter point is luminance / uEmissivePower, which lets
-// BSDF-sampled hits compute their MIS weight from the material alone.
+// BSDF-sampled hits compute their MIS weight from the material alone. A single-sided material emits
+// from its front face only (emissionSeen), so a point behind it gets no sample; the triangle's
+// texels hold its vertices counter-clockwise seen from the front and, in the emission's w, 1 for a
+// double-sided emitter.
 #ifdef HAS_MESHES
 uniform samplerBuffer uEmissiveTriangles; // 4 texels per triangle: p0, p1, p2, emission
 uniform samplerBuffer uEmissiveCdf;       // uEmissiveCount + 1 ascending values
@@ -55,17 +58,18 @@ bool sampleEmissiveTriangle(vec3 p, vec3 u, OUT(AreaLightSample) s) {
     vec3 p0 = texelFetch(uEmissiveTriangles, 4 * i).xyz;
     vec3 p1 = texelFetch(uEmissiveTriangles, 4 * i + 1).xyz;
     vec3 p2 = texelFetch(uEmissiveTriangles, 4 * i + 2).xyz;
-    vec3 emission = texelFetch(uEmissiveTriangles, 4 * i + 3).xyz;
+    vec4 emission = texelFetch(uEmissiveTriangles, 4 * i + 3);
     float su = sqrt(u.y);
     vec3 q = (1.0 - su) * p0 + (u.z * su) * p1 + (su - u.z * su) * p2;
     vec3 offset = q - p;
     float distance = length(offset);
     if (!(distance > 0.0)) return false;
     vec3 direction = offset / distance;
-    float cosAtLight = abs(dot(normalize(cross(p1 - p0, p2 - p0)), direction));
-    float pdf = emissiveLightPdf(emission, distance, cosAtLight);
+    float cosAtLight = -dot(normalize(cross(p1 - p0, p2 - p0)), direction); // > 0: q's front faces p
+    if (emission.w > 0.0) cosAtLight = abs(cosAtLight);
+    float pdf = emissiveLightPdf(emission.rgb, distance, cosAtLight);
     if (!(pdf > 0.0) || !isFiniteFloat(pdf)) return false;
-    s = AreaLightSample(direction, distance, emission, pdf);
+    s = AreaLightSample(direction, distance, emission.rgb, pdf);
     return true;
 #else
     return false;

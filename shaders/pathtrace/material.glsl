@@ -14,9 +14,17 @@ SurfaceMaterial fetchSurfaceMaterial(int material) {
                            specularColorThickness.w <= 0.0, attenuation.rgb, attenuation.w, specularColorThickness.w);
 }
 
-// Radiance emitted from both sides: emissiveFactor x emissiveStrength, 1:1 (no photometric scale).
+// Radiance emitted: emissiveFactor x emissiveStrength, 1:1 (no photometric scale).
 vec3 fetchEmission(int material) {
     return materialTexel(material, 1).rgb;
+}
+
+// Whether a ray along `rayDirection` sees the emission of what it hit. A mesh triangle of a
+// single-sided material (glTF doubleSided false: its back face is culled) emits from its front face
+// only, the side its normal points to; double-sided materials and analytic shapes emit from both.
+// Next-event estimation samples the same sides (emissive_lights.glsl).
+bool emissionSeen(Hit hit, vec3 rayDirection) {
+    return !hit.onMesh || materialTexel(hit.material, 5).z != 0.0 || dot(hit.geometricNormal, rayDirection) < 0.0;
 }
 
 // A hit's material after textures, and the normal it shades with.
@@ -97,7 +105,7 @@ void applyTextures(Hit hit, vec3 rayDirection, float coneWidth, INOUT(SurfaceSha
 
 // `coneWidth`: the ray cone's width at the hit, for the textures' level of detail.
 SurfaceShading shadeSurface(Hit hit, vec3 rayDirection, float coneWidth) {
-    vec3 emission = fetchEmission(hit.material);
+    vec3 emission = emissionSeen(hit, rayDirection) ? fetchEmission(hit.material) : vec3(0.0);
     SurfaceShading s = SurfaceShading(fetchSurfaceMaterial(hit.material), emission, emission, hit.shadingNormal, 0.0);
 #ifdef HAS_TEXTURES
     if (hit.triangle.x >= 0) applyTextures(hit, rayDirection, coneWidth, s);

@@ -6,7 +6,8 @@
 //   average, for camera, bounce and shadow rays alike, so shadows respect alpha).
 // - Single-sided materials (HAS_SINGLE_SIDED): camera rays pass through their back faces, as glTF's
 //   back-face culling shows them. Secondary rays see both sides (a closed single-sided object still
-//   casts shadows and refracts), and emitters, which emit from both sides, are never culled.
+//   casts shadows and refracts). Emitters are never culled; a single-sided one emits from its front
+//   face only (emissionSeen, material.glsl), so its back face shows as an unlit surface.
 float surfaceAlpha(int material, int slot, int instance, vec3 tuv, vec3 localDirection) {
     float alpha = materialTexel(material, 0).w;
 #ifdef HAS_TEXTURES

@@ -1,6 +1,7 @@
 // Triangle meshes through the BVH: they render like the analytic shapes they approximate, emissive
 // triangles sampled as lights (with MIS) agree with the same emitter found by BSDF sampling alone,
-// and the Cornell box scene renders (a PNG is left in the test's temp dir).
+// single-sided emitters light only what their front faces, and the Cornell box scene renders (a
+// PNG is left in the test's temp dir).
 #include "image_stats.h"
 #include "mesh_builder.h"
 #include "render_scene.h"
@@ -12,6 +13,7 @@
 #include <OpenImageIO/imageio.h>
 #include <QTemporaryDir>
 #include <QTest>
+#include <glm/gtc/constants.hpp>
 
 #include <cmath>
 #include <memory>
@@ -25,14 +27,28 @@ NodeId addMeshNode(Scene& scene, MeshId mesh, glm::vec3 position) {
     return addNode(scene, "mesh", MeshInstance{mesh}, position);
 }
 
-// A grey ground under a 1 m square emitter 1 m up (radiance 4), seen from the side.
-Scene squareLightOverGround(bool asMesh) {
+// How the emitter of squareLightOverGround is made: an analytic quad (emits from both sides), or a
+// mesh quad: double-sided, or single-sided (front face only) with its front up, or turned down by a
+// rotation, or by a mirroring scale (the winding turns around, the front stays the normal's side).
+enum class Emitter { Shape, MeshDoubleSided, MeshFrontUp, MeshFrontDown, MeshFrontDownMirrored };
+
+// A grey ground under a 1 m square emitter 1 m up (radiance 4), seen from the side and below.
+Scene squareLightOverGround(Emitter emitter) {
     Scene scene;
     const MaterialId grey = scene.materials.add(lambert(glm::vec3(0.5f)));
-    const MaterialId light = scene.materials.add(lambert(glm::vec3(0.0f), glm::vec3(4.0f)));
+    Material lightMaterial = lambert(glm::vec3(0.0f), glm::vec3(4.0f));
+    lightMaterial.doubleSided = emitter == Emitter::MeshDoubleSided;
+    const MaterialId light = scene.materials.add(lightMaterial);
     addShape(scene, ShapeKind::GroundPlane, grey, glm::vec3(0.0f));
-    if (asMesh) addMeshNode(scene, scene.meshes.add(quadMesh(1.0f, light)), {0.0f, 1.0f, 0.0f});
-    else addShape(scene, ShapeKind::Quad, light, {0.0f, 1.0f, 0.0f});
+    const glm::vec3 at(0.0f, 1.0f, 0.0f);
+    if (emitter == Emitter::Shape) {
+        addShape(scene, ShapeKind::Quad, light, at);
+    } else {
+        const MeshId quad = scene.meshes.add(quadMesh(1.0f, light)); // front (+Y, counter-clockwise) up
+        if (emitter == Emitter::MeshFrontDown) addNode(scene, "mesh", MeshInstance{quad}, at, glm::angleAxis(glm::pi<float>(), glm::vec3(1.0f, 0.0f, 0.0f)));
+        else if (emitter == Emitter::MeshFrontDownMirrored) addNode(scene, "mesh", MeshInstance{quad}, at, glm::quat(1.0f, 0.0f, 0.0f, 0.0f), {1.0f, -1.0f, 1.0f});
+        else addMeshNode(scene, quad, at);
+    }
     addPerspectiveCamera(scene, {0.0f, 0.6f, 3.0f}, glm::vec3(0.0f), 0.9f);
     return scene;
 }
@@ -52,11 +68,27 @@ private slots:
     void cleanupTestCase() { renderer_.reset(); }
 
     // 32x32, 256 spp, seed 31, 2 bounces. The emitter as an analytic quad (found only by BSDF
-    // sampling) and as a two-triangle mesh (light-sampled, MIS-weighted): image means within 2 %.
+    // sampling) and as a double-sided two-triangle mesh (light-sampled, MIS-weighted): image means
+    // within 2 %.
     void emissiveMeshMatchesEmissiveShape() {
-        const double shape = channelStats(render(squareLightOverGround(false), 32, 256, 31, 2).radiance, 1).mean;
-        const double mesh = channelStats(render(squareLightOverGround(true), 32, 256, 31, 2).radiance, 1).mean;
+        const double shape = channelStats(render(squareLightOverGround(Emitter::Shape), 32, 256, 31, 2).radiance, 1).mean;
+        const double mesh = channelStats(render(squareLightOverGround(Emitter::MeshDoubleSided), 32, 256, 31, 2).radiance, 1).mean;
         QVERIFY2(std::abs(mesh - shape) < 0.02 * shape, qPrintable(QString("mesh %1, shape %2").arg(mesh).arg(shape)));
+    }
+
+    // Same scene and settings. A single-sided emitter lights only what its front faces: turned down
+    // (by a rotation, or by a mirroring scale) it gives the double-sided image (everything the
+    // camera and the ground see is below it), means within 2 %; with its front up the ground and
+    // the camera get nothing from it (its back face is black: albedo 0), mean exactly 0. Light
+    // sampling and BSDF-sampled hits must agree on the side, or the MIS weights no longer sum to 1.
+    void singleSidedEmitterLightsItsFrontOnly() {
+        const double both = channelStats(render(squareLightOverGround(Emitter::MeshDoubleSided), 32, 256, 31, 2).radiance, 1).mean;
+        for (const Emitter e : {Emitter::MeshFrontDown, Emitter::MeshFrontDownMirrored}) {
+            const double front = channelStats(render(squareLightOverGround(e), 32, 256, 31, 2).radiance, 1).mean;
+            QVERIFY2(std::abs(front - both) < 0.02 * both, qPrintable(QString("front down %1, double-sided %2").arg(front).arg(both)));
+        }
+        const double up = channelStats(render(squareLightOverGround(Emitter::MeshFrontUp), 32, 256, 31, 2).radiance, 1).mean;
+        QCOMPARE(up, 0.0);
     }
 
     // 32x32, 16 spp, seed 32, 2 bounces. A 12-triangle box mesh and the analytic box it tessellates,
