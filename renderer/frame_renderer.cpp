@@ -3,6 +3,7 @@
 #include "renderer/gl/program_cache.h"
 #include "renderer/gl/render_target.h"
 #include "renderer/passes/accumulate_pass.h"
+#include "renderer/passes/mean_denoise_pass.h"
 #include "renderer/passes/reconstruction.h"
 #include "renderer/passes/reconstruction_parameters.h"
 #include "renderer/passes/region_composite.h"
@@ -131,9 +132,10 @@ std::map<NodeId, glm::mat4> instanceTransforms(const Scene& scene) {
 int framesSpp(const FrameSettings& s) { return s.spp > 0 ? s.spp : traitsOf(s.configuration).sppPerFrame; }
 int effectiveBounces(const FrameSettings& s) { return traitsOf(s.configuration).gi ? s.bounces : 0; }
 
-// Settings whose change makes a different picture (everything but exposure and tonemapper).
+// Settings whose change makes a different picture (everything but exposure, tonemapper, the
+// sample cap and how the samples are sliced into frames).
 bool sameImageSettings(const FrameSettings& a, const FrameSettings& b) {
-    return a.configuration == b.configuration && framesSpp(a) == framesSpp(b) && a.maxSamples == b.maxSamples &&
+    return a.configuration == b.configuration && framesSpp(a) == framesSpp(b) &&
            effectiveBounces(a) == effectiveBounces(b) && a.seed == b.seed && a.view == b.view && a.clamp == b.clamp &&
            a.independentSampler == b.independentSampler && a.aoDistance == b.aoDistance && a.width == b.width &&
            a.height == b.height;
@@ -153,11 +155,24 @@ struct FrameTargets {
     Reconstruction reconstruction;
 };
 
+// The low-resolution stand-in shown until the first full-resolution sample is complete
+// (FrameSettings::previewDivisor): one sample, kept as a mean so that it reads like the full one.
+struct PreviewTargets {
+    PreviewTargets(gl::ProgramCache& programs, int width, int height)
+        : sample(makeGBuffer(width, height)), mean(programs, width, height), display(width, height, {GL_RGBA8}) {}
+    gl::RenderTarget sample;
+    AccumulatePass mean;
+    gl::RenderTarget display;
+};
+
 struct FrameRenderer::State {
     gl::ProgramCache programs; // before the passes that refer to it
     PathTracePass pathTrace{programs};
     TonemapPass tonemap{programs};
+    MeanDenoisePass meanDenoise{programs};
+    MeanDenoisePass previewDenoise{programs};
     std::unique_ptr<FrameTargets> targets;
+    std::unique_ptr<PreviewTargets> preview;
 
     FrameSettings settings;
     Scene document;
@@ -182,6 +197,10 @@ struct FrameRenderer::State {
     int frames = 0;
     std::uint32_t frameSampleIndex = 0; // real-time frames' sample counter: decorrelates frames
     const gl::RenderTarget* result = nullptr; // linear radiance of the last frame (attachment 0)
+    bool previewShown = false;  // no full-resolution result yet: the preview stands for the picture
+    int nextRow = 0;            // banded Accumulate: the first row of the sample in progress not traced
+    FrameWork lastWork;
+    int denoisedSamples = 0; // the still mean's sample count when it was last filtered; 0: not since it changed
     bool regionChanged = false; // set, moved or cleared since the last frame
     RegionComposite region;     // with a render region: the image outside it stays (across resizes)
 
@@ -209,6 +228,9 @@ struct FrameRenderer::State {
         frames = 0;
         frameSampleIndex = 0;
         result = nullptr;
+        previewShown = false;
+        nextRow = 0;
+        denoisedSamples = 0;
     }
     PathTraceSettings pathTraceSettings() const {
         const ConfigurationTraits traits = traitsOf(settings.configuration);
@@ -222,7 +244,15 @@ struct FrameRenderer::State {
         return grown(regionPixels(settings.region, settings.width, settings.height), margin, settings.width, settings.height);
     }
     void renderAccumulated();
+    bool wantsPreview() const;
+    void renderPreview();
+    void traceRows();
     void renderRealTime();
+    FrameImages readPreview();
+    bool denoising() const;
+    const gl::RenderTarget& denoisedMean(bool exact);
+    const gl::RenderTarget& shown(bool exact);
+    const gl::RenderTarget& shownPreview();
     void beginRegion();
     void endRegion();
 };
@@ -261,24 +291,81 @@ void FrameRenderer::State::endRegion() {
 
 void FrameRenderer::State::renderAccumulated() {
     FrameTargets& t = *targets;
-    if (pictureChanged) t.stillMean.reset();
+    if (pictureChanged) {
+        t.stillMean.reset();
+        nextRow = 0;
+        previewShown = false;
+        denoisedSamples = 0;
+    }
     pictureChanged = false;
     const int limit = settings.maxSamples > 0 ? settings.maxSamples : std::numeric_limits<int>::max();
-    const PathTraceSettings pt = pathTraceSettings();
-    for (int i = 0; i < framesSpp(settings) && t.stillMean.sampleCount() < limit; ++i) {
-        pathTrace.render(*gpu, camera, pt, static_cast<std::uint32_t>(t.stillMean.sampleCount()), t.sample);
-        t.stillMean.add(t.sample);
+    if (wantsPreview()) {
+        renderPreview();
+    } else if (settings.rowsPerFrame > 0) {
+        if (t.stillMean.sampleCount() < limit) traceRows();
+    } else {
+        const PathTraceSettings pt = pathTraceSettings();
+        for (int i = 0; i < framesSpp(settings) && t.stillMean.sampleCount() < limit; ++i) {
+            pathTrace.render(*gpu, camera, pt, static_cast<std::uint32_t>(t.stillMean.sampleCount()), t.sample);
+            t.stillMean.add(t.sample);
+            lastWork.rows += tracedPixels().height;
+        }
     }
-    result = &t.stillMean.mean();
+    if (t.stillMean.sampleCount() > 0) previewShown = false;
+    result = t.stillMean.sampleCount() > 0 ? &t.stillMean.mean() : nullptr;
+}
+
+bool FrameRenderer::State::wantsPreview() const {
+    return settings.previewDivisor > 1 && !settings.region.active && !previewShown && nextRow == 0 &&
+           targets->stillMean.sampleCount() == 0;
+}
+
+void FrameRenderer::State::renderPreview() {
+    const int width = std::max(1, settings.width / settings.previewDivisor);
+    const int height = std::max(1, settings.height / settings.previewDivisor);
+    if (!preview || preview->sample.width() != width || preview->sample.height() != height)
+        preview = std::make_unique<PreviewTargets>(programs, width, height);
+    preview->mean.reset();
+    pathTrace.render(*gpu, camera, pathTraceSettings(), 0, preview->sample);
+    preview->mean.add(preview->sample);
+    previewShown = true;
+    lastWork.previewRows = height;
+}
+
+// One band of rows of the next sample, under a scissor inside the pixels the frame traces; the
+// sample joins the mean with its last band.
+void FrameRenderer::State::traceRows() {
+    FrameTargets& t = *targets;
+    const PixelRect traced = tracedPixels();
+    const int end = traced.y + traced.height;
+    nextRow = std::clamp(nextRow, traced.y, end);
+    const int rows = std::min(settings.rowsPerFrame, end - nextRow);
+    GLint scissor[4] = {0, 0, 0, 0};
+    glGetIntegerv(GL_SCISSOR_BOX, scissor);
+    const GLboolean scissored = glIsEnabled(GL_SCISSOR_TEST);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(traced.x, nextRow, traced.width, rows);
+    pathTrace.render(*gpu, camera, pathTraceSettings(), static_cast<std::uint32_t>(t.stillMean.sampleCount()), t.sample);
+    glScissor(scissor[0], scissor[1], scissor[2], scissor[3]);
+    if (!scissored) glDisable(GL_SCISSOR_TEST);
+    nextRow += rows;
+    lastWork.rows = rows;
+    if (nextRow < end) return;
+    t.stillMean.add(t.sample);
+    nextRow = 0;
 }
 
 void FrameRenderer::State::renderRealTime() {
     FrameTargets& t = *targets;
-    if (pictureChanged) t.stillMean.reset();
+    if (pictureChanged) {
+        t.stillMean.reset();
+        denoisedSamples = 0;
+    }
     pictureChanged = false;
     const int spp = framesSpp(settings);
     const PathTraceSettings pt = pathTraceSettings();
     if (spp > 1) t.frameMean.reset();
+    lastWork.rows = spp * tracedPixels().height;
     for (int i = 0; i < spp; ++i) {
         pathTrace.render(*gpu, camera, pt, frameSampleIndex++, t.sample);
         t.stillMean.add(t.sample);
@@ -288,7 +375,9 @@ void FrameRenderer::State::renderRealTime() {
     // target (a third of the size) would not match a scissor given in full-size pixels.
     glDisable(GL_SCISSOR_TEST);
     const gl::RenderTarget& frame = spp > 1 ? t.frameMean.mean() : t.sample;
-    ReconstructionInputs in{frame, t.stillMean.mean(), t.stillMean.sampleCount(), camera, previousCamera,
+    // The still view fades into the filtered mean, refreshed as it grows and exactly where the fade ends.
+    const gl::RenderTarget& stillMean = denoisedMean(t.stillMean.sampleCount() == convergeFadeSamples);
+    ReconstructionInputs in{frame, stillMean, t.stillMean.sampleCount(), camera, previousCamera,
                             historyValid, traitsOf(settings.configuration), {}};
     for (const auto& [id, worldFromNode] : instances) {
         const auto previous = previousInstances.find(id);
@@ -299,6 +388,53 @@ void FrameRenderer::State::renderRealTime() {
     t.reconstruction.svgf = svgfSettingsOf(document.settings.render.svgf);
     result = &t.reconstruction.run(in);
     historyValid = true;
+}
+
+// The preview's images: one accumulated sample, at its own size.
+FrameImages FrameRenderer::State::readPreview() {
+    CallerGlState guard;
+    FrameImages out;
+    const gl::RenderTarget& mean = preview->mean.mean();
+    const gl::RenderTarget& shown = shownPreview();
+    out.width = mean.width();
+    out.height = mean.height();
+    out.window = imageWindowOf(PixelRect{0, 0, out.width, out.height}, out.height);
+    tonemap.render(shown, camera.exposure + settings.exposure, settings.tonemapper.value_or(document.settings.render.tonemapper),
+                   preview->display);
+    out.tonemapped = topDown(preview->display.readRgba8(0), out.width, out.height, 4);
+    out.radiance = topDown(shown.readRgba(0), out.width, out.height, 4);
+    readGBuffer(mean, out);
+    out.variance.assign(static_cast<std::size_t>(out.width) * static_cast<std::size_t>(out.height) * 3, 0.0f);
+    return out;
+}
+
+bool FrameRenderer::State::denoising() const {
+    return settings.denoise && traitsOf(settings.configuration).accumulate && !settings.region.active;
+}
+
+// The still mean filtered. Filtering a full-resolution mean costs a few frames' worth of fill on a
+// slow GL, so unless `exact` it is refreshed only as the mean grows (every sample up to 8, then at
+// every 25 % more, and at the sample cap): a pure function of the sample count, so deterministic.
+const gl::RenderTarget& FrameRenderer::State::denoisedMean(bool exact) {
+    const int n = targets->stillMean.sampleCount();
+    const bool atCap = settings.maxSamples > 0 && n >= settings.maxSamples;
+    const bool due = denoisedSamples == 0 || n <= 8 || 4 * n >= 5 * denoisedSamples || atCap;
+    if (n > 0 && n != denoisedSamples && (exact || due)) {
+        meanDenoise.execute(targets->stillMean.mean(), n);
+        denoisedSamples = n;
+    }
+    return denoisedSamples > 0 ? meanDenoise.output() : targets->stillMean.mean();
+}
+
+// What drawTo() and readImages() show of a full-resolution frame.
+const gl::RenderTarget& FrameRenderer::State::shown(bool exact) {
+    if (!denoising() || result != &targets->stillMean.mean()) return *result;
+    return denoisedMean(exact);
+}
+
+const gl::RenderTarget& FrameRenderer::State::shownPreview() {
+    if (!denoising()) return preview->mean.mean();
+    return previewDenoise.execute(preview->mean.mean(), 1);
 }
 
 FrameRenderer::FrameRenderer() : state_(std::make_unique<State>()) {}
@@ -435,6 +571,7 @@ void FrameRenderer::renderFrame() {
         s.camera = camera;
         s.cameraSet = true;
     }
+    s.lastWork = {};
     s.beginRegion();
     if (!s.historyValid) s.previousCamera = s.camera;
     if (traitsOf(s.settings.configuration).accumulate) s.renderAccumulated();
@@ -447,10 +584,11 @@ void FrameRenderer::renderFrame() {
 
 bool FrameRenderer::drawTo(unsigned int framebuffer, int width, int height) {
     State& s = *state_;
-    if (!s.result) return false;
+    const bool preview = !s.result && s.previewShown;
+    if (!s.result && !preview) return false;
     CallerGlState guard;
-    const gl::RenderTarget& display = s.targets->display;
-    s.tonemap.render(*s.result, s.camera.exposure + s.settings.exposure,
+    const gl::RenderTarget& display = preview ? s.preview->display : s.targets->display;
+    s.tonemap.render(preview ? s.shownPreview() : s.shown(false), s.camera.exposure + s.settings.exposure,
                      s.settings.tonemapper.value_or(s.document.settings.render.tonemapper), display);
     display.bindForDrawing(); // the display target becomes the read framebuffer below
     GLint displayFbo = 0;
@@ -467,16 +605,18 @@ bool FrameRenderer::drawTo(unsigned int framebuffer, int width, int height) {
 FrameImages FrameRenderer::readImages() {
     State& s = *state_;
     FrameImages out;
+    if (!s.result && s.previewShown) return s.readPreview();
     if (!s.result) return out;
     CallerGlState guard;
     FrameTargets& t = *s.targets;
     out.width = t.sample.width();
     out.height = t.sample.height();
     out.window = imageWindowOf(regionPixels(s.settings.region, out.width, out.height), out.height);
-    s.tonemap.render(*s.result, s.camera.exposure + s.settings.exposure,
+    const gl::RenderTarget& shown = s.shown(true);
+    s.tonemap.render(shown, s.camera.exposure + s.settings.exposure,
                      s.settings.tonemapper.value_or(s.document.settings.render.tonemapper), t.display);
     out.tonemapped = topDown(t.display.readRgba8(0), out.width, out.height, 4);
-    out.radiance = topDown(s.result->readRgba(0), out.width, out.height, 4);
+    out.radiance = topDown(shown.readRgba(0), out.width, out.height, 4);
     if (traitsOf(s.settings.configuration).accumulate) {
         readGBuffer(t.stillMean.mean(), out);
         out.variance = sampleVariance(out.radiance, topDown(t.stillMean.mean().readRgba(radianceSquaredAttachment), out.width, out.height, 4),
@@ -488,7 +628,29 @@ FrameImages FrameRenderer::readImages() {
     return out;
 }
 
-int FrameRenderer::sampleCount() const { return state_->targets ? state_->targets->stillMean.sampleCount() : 0; }
+int FrameRenderer::sampleCount() const {
+    const State& s = *state_;
+    if (!s.targets || s.pictureChanged || !s.result) return 0;
+    return s.targets->stillMean.sampleCount();
+}
+
+ImageStage FrameRenderer::imageStage() const {
+    const State& s = *state_;
+    if (s.pictureChanged) return ImageStage::None;
+    if (s.nextRow > 0) return ImageStage::Refining;
+    if (s.result) return ImageStage::Complete;
+    if (s.previewShown) return ImageStage::Preview;
+    return ImageStage::None;
+}
+
+int FrameRenderer::rowsTraced() const {
+    const State& s = *state_;
+    return s.nextRow > 0 ? s.nextRow - s.tracedPixels().y : 0;
+}
+
+int FrameRenderer::rowsToTrace() const { return state_->tracedPixels().height; }
+bool FrameRenderer::previewShown() const { return !state_->result && state_->previewShown; }
+FrameWork FrameRenderer::lastFrameWork() const { return state_->lastWork; }
 int FrameRenderer::frameIndex() const { return state_->frames; }
 const FrameSettings& FrameRenderer::settings() const { return state_->settings; }
 

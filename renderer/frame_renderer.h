@@ -28,7 +28,8 @@ namespace glint::renderer {
 struct FrameSettings {
     Configuration configuration = Configuration::Accumulate;
     int spp = 0;            // samples per pixel per frame; 0 = the configuration's own (traitsOf)
-    int maxSamples = 0;     // Accumulate/Reference stop adding samples here; 0 = no limit
+    int maxSamples = 0;     // Accumulate/Reference stop adding samples here; 0 = no limit (raising it
+                            // continues the mean)
     int bounces = 4;        // the configuration may lower it (Baseline: 0)
     std::uint32_t seed = 0;
     float exposure = 0.0f;  // EV added to the camera's
@@ -45,6 +46,35 @@ struct FrameSettings {
     // margin around it as wide as their filters reach (reconstructionReach), so the filters at the
     // region's edge read this frame's samples, not the frozen image's.
     RenderRegion region;
+    // Progressive refinement on a slow GL (the viewport), Accumulate/Reference only; neither
+    // changes the picture, so changing them keeps the mean. rowsPerFrame > 0: each renderFrame()
+    // traces this many rows of the next sample (under a scissor), and the sample joins the mean
+    // when its last row is traced; the pixels equal those of whole-frame samples. previewDivisor > 1:
+    // until the first full-resolution sample is complete, one sample at 1/previewDivisor of the
+    // size stands in (one renderFrame() call; drawTo() shows it scaled up). Not with a region.
+    int rowsPerFrame = 0;
+    int previewDivisor = 1;
+    // Accumulate/Reference: drawTo() and readImages() show the mean filtered by MeanDenoisePass
+    // (guided by albedo, normal and depth, its strength falling with the mean's variance), the
+    // preview too; the mean itself stays raw. Display-only: changing it keeps the mean. (The
+    // real-time configurations always fade into the filtered mean.) Not with a region.
+    bool denoise = false;
+    friend bool operator==(const FrameSettings&, const FrameSettings&) = default;
+};
+
+// What the last renderFrame() traced: full-resolution rows (all of them for whole frames, times
+// their samples), or the preview's rows.
+struct FrameWork {
+    int rows = 0;
+    int previewRows = 0;
+};
+
+// Where the shown image stands, for a host that schedules frames (the viewport).
+enum class ImageStage {
+    None,       // nothing of the current picture yet (drawTo() draws nothing)
+    Preview,    // the low-resolution stand-in (FrameSettings::previewDivisor)
+    Refining,   // full resolution; a sample is partly traced (samples may still be 0: the preview shows)
+    Complete,   // full resolution, every sample whole
 };
 
 // Linear images read back from the last frame, rows top-down (as image files want them).
@@ -106,7 +136,15 @@ public:
     bool drawTo(unsigned int framebuffer, int width, int height);
     FrameImages readImages();
 
-    int sampleCount() const;   // samples in the running mean behind the current frame
+    // Samples in the running mean behind the current frame; 0 as soon as the picture changed (scene,
+    // camera, size, settings, time), before the next renderFrame() renders it.
+    int sampleCount() const;
+    ImageStage imageStage() const;
+    // Rows of the sample in progress already traced, of rowsToTrace() (banded Accumulate).
+    int rowsTraced() const;
+    int rowsToTrace() const;
+    bool previewShown() const; // the preview stands in for the picture (no full sample yet)
+    FrameWork lastFrameWork() const;
     int frameIndex() const;    // frames rendered since the last reset
     void resetHistory();
     const FrameSettings& settings() const;

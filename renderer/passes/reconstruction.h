@@ -13,8 +13,9 @@
 
 namespace glint::renderer {
 
-// Samples after which a still view shows exactly the accumulated mean (the filters faded out).
-inline constexpr int convergeFadeSamples = 64;
+// Samples after which a still view shows the filtered accumulated mean alone (the real-time
+// filters faded out; the mean denoiser's strength falls on with the mean's variance).
+inline constexpr int convergeFadeSamples = 16;
 
 struct ReconstructionInputs {
     const gl::RenderTarget& frame;     // this frame's G-buffer (path_trace_pass.h attachments)

@@ -1,6 +1,8 @@
 // FrameRenderer as a host sees it: it draws into the framebuffer it is given (not 0), puts the
-// caller's framebuffer, viewport, vertex array and enables back, and keeps accumulating through exposure and
-// tonemapper changes.
+// caller's framebuffer, viewport, vertex array and enables back, keeps accumulating through exposure,
+// tonemapper and sample-cap changes, says at once when the picture changed (a host that stops at a
+// sample cap must render again), and refines progressively: bands of rows give the pixels of whole
+// frames, and a preview stands in until the first full-resolution sample is whole.
 #include "reconstruction_fixture.h"
 
 #include <epoxy/gl.h>
@@ -92,6 +94,112 @@ private slots:
         h_->frames.setSettings(s);
         h_->frame(camera);
         QCOMPARE(h_->frames.sampleCount(), 1);
+    }
+
+    // Tolerance: exact counts. A host that stops at a cap (the viewport) asks sampleCount() whether
+    // the image is current: every change that makes a new picture reads 0 before the next frame.
+    void sampleCountIsZeroAfterEveryChange() {
+        const RoomScene room = makeRoom();
+        renderer::FrameSettings s = settingsFor(renderer::Configuration::Accumulate);
+        s.maxSamples = 2;
+        h_->frames.setSettings(s);
+        h_->frames.setScene(room.scene);
+        const auto camera = cameraAt(room.scene, 0.0f);
+        const auto atCap = [&] {
+            for (int i = 0; i < 3; ++i) h_->frame(camera);
+            return h_->frames.sampleCount() == 2 && h_->frames.imageStage() == renderer::ImageStage::Complete;
+        };
+        QVERIFY(atCap());
+        s.maxSamples = 5; // raising the cap continues the mean
+        h_->frames.setSettings(s);
+        QCOMPARE(h_->frames.sampleCount(), 2);
+        h_->frame(camera);
+        QCOMPARE(h_->frames.sampleCount(), 3);
+        s.maxSamples = 2;
+        h_->frames.setSettings(s);
+
+        s.width = imageSize / 2; // a resize
+        h_->frames.setSettings(s);
+        QCOMPARE(h_->frames.sampleCount(), 0);
+        QCOMPARE(h_->frames.imageStage(), renderer::ImageStage::None);
+        s.width = imageSize;
+        h_->frames.setSettings(s);
+        QVERIFY(atCap());
+
+        Scene moved = room.scene; // an edit applied in place (a transform)
+        moved.setLocal(room.occluder, [&] { Transform t = moved.at(room.occluder).local; t.translation.x += 0.2f; return t; }());
+        h_->frames.applyChanges(moved, nodeChange(Change::Transform, room.occluder));
+        QCOMPARE(h_->frames.sampleCount(), 0);
+        QVERIFY(atCap());
+
+        h_->frames.setCamera(cameraAt(room.scene, 0.3f)); // the camera
+        QCOMPARE(h_->frames.sampleCount(), 0);
+        h_->frames.setScene(room.scene); // a new GPU scene (the viewport's uploads)
+        QCOMPARE(h_->frames.sampleCount(), 0);
+        QCOMPARE(h_->frames.imageStage(), renderer::ImageStage::None);
+    }
+
+    // Tolerance: exact (bit for bit). A sample traced in bands of rows under a scissor is the
+    // sample traced whole: the per-pixel random numbers do not depend on how the frame is cut.
+    void bandsGiveTheWholeFramesPixels() {
+        const RoomScene room = makeRoom();
+        const auto camera = cameraAt(room.scene, 0.0f);
+        renderer::FrameSettings whole = settingsFor(renderer::Configuration::Accumulate);
+        h_->reference.setSettings(whole);
+        h_->reference.setScene(room.scene);
+        h_->reference.setCamera(camera);
+        for (int i = 0; i < 2; ++i) h_->reference.renderFrame();
+
+        renderer::FrameSettings banded = whole;
+        banded.rowsPerFrame = 7; // 48 rows: 7 bands, the last one 6 rows
+        h_->frames.setSettings(banded);
+        h_->frames.setScene(room.scene);
+        h_->frames.setCamera(camera);
+        for (int band = 1; band < 7; ++band) {
+            h_->frames.renderFrame();
+            QCOMPARE(h_->frames.imageStage(), renderer::ImageStage::Refining);
+            QCOMPARE(h_->frames.sampleCount(), 0);
+            QCOMPARE(h_->frames.rowsTraced(), 7 * band);
+            QVERIFY(!h_->frames.drawTo(0, imageSize, imageSize)); // nothing whole to show yet
+        }
+        h_->frames.renderFrame();
+        QCOMPARE(h_->frames.sampleCount(), 1);
+        QCOMPARE(h_->frames.imageStage(), renderer::ImageStage::Complete);
+        QCOMPARE(h_->frames.lastFrameWork().rows, 6);
+        for (int band = 0; band < 7; ++band) h_->frames.renderFrame();
+        QCOMPARE(h_->frames.sampleCount(), 2);
+        QVERIFY(h_->frames.readImages().radiance == h_->reference.readImages().radiance);
+    }
+
+    // Tolerance: exact sizes and stages. With a preview divisor the first frame after a change is a
+    // low-resolution sample that drawTo() shows until the first full-resolution one is whole.
+    void previewStandsInUntilTheFirstSample() {
+        const RoomScene room = makeRoom();
+        renderer::FrameSettings s = settingsFor(renderer::Configuration::Accumulate);
+        s.rowsPerFrame = imageSize / 2;
+        s.previewDivisor = 4;
+        h_->frames.setSettings(s);
+        h_->frames.setScene(room.scene);
+        h_->frame(cameraAt(room.scene, 0.0f));
+        QCOMPARE(h_->frames.imageStage(), renderer::ImageStage::Preview);
+        QCOMPARE(h_->frames.lastFrameWork().previewRows, imageSize / 4);
+        QVERIFY(h_->frames.previewShown());
+        QVERIFY(h_->frames.drawTo(0, imageSize, imageSize));
+        const renderer::FrameImages preview = h_->frames.readImages();
+        QCOMPARE(preview.width, imageSize / 4);
+        double sum = 0.0;
+        for (std::size_t i = 0; i < preview.radiance.size(); i += 4) sum += preview.radiance[i + 1];
+        QVERIFY2(sum > 0.0, "the preview shows the lit room");
+        h_->frames.renderFrame();
+        QCOMPARE(h_->frames.imageStage(), renderer::ImageStage::Refining);
+        QVERIFY(h_->frames.drawTo(0, imageSize, imageSize)); // still the preview
+        h_->frames.renderFrame();
+        QCOMPARE(h_->frames.imageStage(), renderer::ImageStage::Complete);
+        QVERIFY(!h_->frames.previewShown());
+        QCOMPARE(h_->frames.readImages().width, imageSize);
+        h_->frames.setCamera(cameraAt(room.scene, 0.2f)); // a change: the preview comes first again
+        h_->frames.renderFrame();
+        QCOMPARE(h_->frames.imageStage(), renderer::ImageStage::Preview);
     }
 };
 
