@@ -1,19 +1,19 @@
 #pragma once
 // Reads a scene file on a worker thread, so the editor's event loop never waits for a glTF parse
-// or an Assimp import. Same pattern as the viewport's ScenePreparer: one load is current at a
-// time; start() supersedes it and cancel() drops it, and only the current load's finished() or
-// failed() is ever emitted, on the GUI thread.
+// or an Assimp import. One load is current at a time (LatestJob, as the viewport's ScenePreparer):
+// start() supersedes it and cancel() drops it, and only the current load's finished() or failed()
+// is ever emitted, on the GUI thread.
 //
 // Cancelling an import kills its child process at once (ImportOptions::cancel). A glTF parse has
 // no way to stop half-way: a cancelled one runs on to its end on its worker and its result is
 // dropped, while the next load starts on another worker at once. The destructor cancels and waits,
 // so nothing outlives the loader (at most the rest of one glTF parse).
+#include "editor/document/latest_job.h"
 #include "scene/import/import.h"
 #include "scene/io/scene_io.h"
 
 #include <QObject>
 #include <QString>
-#include <QThreadPool>
 
 #include <memory>
 
@@ -39,9 +39,9 @@ public:
     void start(const QString& path);
     // Drops the load in flight: its result never arrives; an import's child is killed.
     void cancel();
-    bool busy() const { return current_ != nullptr; }
+    bool busy() const { return job_.busy(); }
     // Workers still reading, cancelled reads included (a glTF parse ends on its own).
-    int runningReads() const { return pool_.activeThreadCount(); }
+    int runningReads() const { return job_.running(); }
     // The result of the last finished(), handed over once.
     std::unique_ptr<LoadResult> take() { return std::move(ready_); }
 
@@ -51,14 +51,10 @@ signals:
     void failed(const QString& message);
 
 private:
-    struct Job;
-    void run(const std::shared_ptr<Job>& job);
-    void deliver(const std::shared_ptr<Job>& job);
-
-    QThreadPool pool_;
     ImportOptions importOptions_;
-    std::shared_ptr<Job> current_;
     std::unique_ptr<LoadResult> ready_;
+    // A cancelled glTF parse keeps its worker until it ends: the next load takes another one.
+    LatestJob<std::shared_ptr<LoadResult>> job_{this, 3};
 };
 
 } // namespace glint::editor

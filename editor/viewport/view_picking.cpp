@@ -3,10 +3,6 @@
 #include "renderer/gpu_scene/prepared_scene.h"
 #include "scene/anim/scene_at_time.h"
 
-#include <QMetaObject>
-
-#include <atomic>
-
 #include <utility>
 
 namespace glint::editor {
@@ -21,19 +17,9 @@ bool changesMeshes(const ChangeSet& changes) {
 
 } // namespace
 
-struct ViewPicking::Job {
-    Scene posed;
-    std::uint64_t meshes = 0, poses = 0;
-    std::atomic<bool> cancelled{false};
-    std::shared_ptr<ScenePicker> result; // written by the worker before it posts back
-};
+ViewPicking::ViewPicking(QObject* parent) : QObject(parent) {}
 
-ViewPicking::ViewPicking(QObject* parent) : QObject(parent) { pool_.setMaxThreadCount(1); }
-
-ViewPicking::~ViewPicking() {
-    dropJob();
-    pool_.waitForDone(); // at most one picker build
-}
+ViewPicking::~ViewPicking() = default; // job_ waits for at most one picker build
 
 void ViewPicking::noteChange(const ChangeSet& changes) {
     if (!affectsImage(changes) && !changes.has(Change::Visibility)) return;
@@ -59,7 +45,7 @@ void ViewPicking::adoptPrepared(std::shared_ptr<ScenePicker> picker) {
     picker_ = std::move(picker);
     pickerMeshes_ = preparedMeshes_;
     pickerPoses_ = preparedPoses_;
-    dropJob(); // a picker-only job in flight is superseded
+    job_.cancel(); // a picker-only job in flight is superseded
     emit arrived();
 }
 
@@ -72,35 +58,24 @@ const ScenePicker& ViewPicking::picker(const Scene& document, double seconds, bo
         }
         return *picker_;
     }
-    if (!preparationComing && !(job_ && job_->meshes == meshes_)) startJob(document, seconds);
+    if (!preparationComing && !(job_.busy() && jobMeshes_ == meshes_)) startJob(document, seconds);
     return empty_;
 }
 
-void ViewPicking::dropJob() {
-    if (job_) job_->cancelled = true;
-    job_.reset();
-}
-
 void ViewPicking::startJob(const Scene& document, double seconds) {
-    auto job = std::make_shared<Job>();
-    job->posed = sceneAnimates(document) ? sceneAt(document, seconds) : document; // the worker's own copy
-    job->meshes = meshes_;
-    job->poses = poses_;
-    dropJob();
-    job_ = job;
-    pool_.start([this, job] {
-        if (job->cancelled) return; // superseded while it waited
-        job->result = std::make_shared<ScenePicker>(job->posed);
-        QMetaObject::invokeMethod(this, [this, job] {
-            if (job != job_ || job->meshes != meshes_) return;
-            job_.reset();
-            picker_ = std::move(job->result);
-            pickerMeshes_ = job->meshes;
-            pickerPoses_ = job->poses;
-            ++builtHere_;
-            emit arrived();
-        }, Qt::QueuedConnection);
-    });
+    // The worker's own copy, posed.
+    auto posed = std::make_shared<Scene>(sceneAnimates(document) ? sceneAt(document, seconds) : document);
+    const std::uint64_t meshes = meshes_, poses = poses_;
+    jobMeshes_ = meshes;
+    job_.start([posed](const Ticket&) { return std::make_shared<ScenePicker>(*posed); },
+               [this, meshes, poses](std::shared_ptr<ScenePicker> picker) {
+                   if (meshes != meshes_) return; // the meshes changed meanwhile: a newer job comes
+                   picker_ = std::move(picker);
+                   pickerMeshes_ = meshes;
+                   pickerPoses_ = poses;
+                   ++builtHere_;
+                   emit arrived();
+               });
 }
 
 const std::vector<NodeIcon>& ViewPicking::icons(const Scene& document, double seconds) {

@@ -8,12 +8,12 @@
 // file) the old picker could name a wrong node, so picking reports nothing until the new one
 // arrives. The same rules as the preparation: a newer job supersedes the one in flight, whose result
 // is dropped; the destructor waits for the job in flight.
+#include "editor/document/latest_job.h"
 #include "editor/viewport/node_icons.h"
 #include "editor/viewport/scene_picker.h"
 #include "scene/history/change_set.h"
 
 #include <QObject>
-#include <QThreadPool>
 
 #include <cstdint>
 #include <memory>
@@ -48,9 +48,7 @@ signals:
     void arrived(); // a new picker is current: overlays drawn from it may change
 
 private:
-    struct Job;
     void startJob(const Scene& document, double seconds);
-    void dropJob();
 
     std::uint64_t meshes_ = 1; // bumped by changes to the meshes a picker holds
     std::uint64_t poses_ = 1;  // bumped by every change that may move something
@@ -60,9 +58,9 @@ private:
     std::vector<NodeIcon> icons_;
     std::uint64_t iconPoses_ = 0;
     ScenePicker empty_;
-    QThreadPool pool_; // one thread, for picker-only jobs
-    std::shared_ptr<Job> job_;
+    std::uint64_t jobMeshes_ = 0; // of the picker-only job in flight
     int builtHere_ = 0;
+    LatestJob<std::shared_ptr<ScenePicker>> job_{this, 1}; // picker-only jobs
 };
 
 } // namespace glint::editor
