@@ -6,6 +6,7 @@
 //
 // Files are read on a worker (SceneLoader): the document keeps its scene until the new one
 // arrives, and a failed or cancelled load leaves it untouched (scene, file path, history).
+#include "node_placement.h"
 #include "scene_loader.h"
 
 #include "scene/core/scene.h"
@@ -59,6 +60,11 @@ public:
     // --- time ------------------------------------------------------------------------------
     double currentTime() const { return time_; }
     void setCurrentTime(double seconds);
+
+    // --- where the viewport looks (editor state): new nodes land there (node_placement.h) ----
+    // The viewport provides it when asked (it looks the focus up in its picker); none: the origin.
+    ViewFocus viewFocus() const { return focusProvider_ ? focusProvider_() : ViewFocus{}; }
+    void setViewFocusProvider(std::function<ViewFocus()> provider) { focusProvider_ = std::move(provider); }
 
     // --- files: each returns an empty string on success, a message for people otherwise ----
     // open, importFile and recover read on the calling thread (tests); the editor uses the
@@ -150,6 +156,7 @@ private:
     // The selection before the command at each history index ran, restored when it is undone.
     std::map<std::size_t, std::vector<NodeId>> selectionBefore_;
     double time_ = 0.0;
+    std::function<ViewFocus()> focusProvider_;
     bool lastClean_ = true;
     bool recovered_ = false;
     QStringList warnings_;

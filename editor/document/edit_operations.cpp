@@ -1,16 +1,43 @@
 #include "edit_operations.h"
 
+#include "scene/history/asset_commands.h"
 #include "scene/history/node_commands.h"
 #include "scene/history/set_node_field.h"
 
 #include <QCoreApplication>
 
 #include <algorithm>
+#include <cstdio>
 #include <exception>
 
 namespace glint::editor {
 namespace {
 
+// A name no material of the scene has: `base`, else `base.001`, `base.002`, ... as Blender names copies.
+std::string uniqueMaterialName(const Scene& scene, const std::string& base) {
+    const auto taken = [&](const std::string& name) {
+        for (const auto& [id, material] : scene.materials)
+            if (material.name == name) return true;
+        return false;
+    };
+    if (!taken(base)) return base;
+    for (int i = 1;; ++i) {
+        char suffix[16];
+        std::snprintf(suffix, sizeof suffix, ".%03d", i);
+        if (!taken(base + suffix)) return base + suffix;
+    }
+}
+
+// A new shape's own material: glTF's defaults but a mid-grey dielectric (glTF's default material
+// is a white metal, which renders as a mirror), so it shows the light and can be edited at once.
+Material newShapeMaterial(const Scene& scene) {
+    Material m;
+    m.name = uniqueMaterialName(scene, "Material");
+    m.baseColorFactor = glm::vec4(0.8f, 0.8f, 0.8f, 1.0f);
+    m.metallicFactor = 0.0f;
+    m.roughnessFactor = 0.5f;
+    return m;
+}
 
 // The selected nodes that are not inside another selected node, in scene order.
 std::vector<NodeId> topLevelSelection(const Document& document) {
@@ -65,21 +92,30 @@ QString duplicateSelection(Document& document) {
 }
 
 QString addNode(Document& document, const QString& name, Component component) {
+    const Scene& scene = document.scene();
+    const Node* currentNode = scene.node(document.currentNode());
+    const NodeId parent = currentNode ? currentNode->parent : NodeId{};
+    Placement placed = placeNewNode(component, document.viewFocus());
     Node node;
     node.name = name.toStdString();
-    node.component = std::move(component);
-    const NodeId current = document.currentNode();
-    const Node* currentNode = document.scene().node(current);
-    const NodeId parent = currentNode ? currentNode->parent : NodeId{};
-    try {
+    node.local = placed.worldFromNode;
+    if (parent.valid()) node.local = fromMatrix(glm::inverse(scene.worldFromNode(parent)) * toMatrix(placed.worldFromNode));
+    NodeId added;
+    const QString error = inMacro(document, QCoreApplication::translate("glint::editor::EditOperations", "Add %1").arg(name), [&] {
+        if (auto* shape = std::get_if<Shape>(&placed.component)) {
+            auto material = std::make_unique<AddAsset<Material>>(newShapeMaterial(scene));
+            AddAsset<Material>* raw = material.get();
+            document.push(std::move(material));
+            shape->material = raw->id();
+        }
+        node.component = std::move(placed.component);
         auto command = std::make_unique<AddNode>(std::move(node), parent);
         AddNode* raw = command.get();
         document.push(std::move(command));
-        document.setSelection({raw->nodeId()});
-    } catch (const std::exception& e) {
-        return QString::fromStdString(e.what());
-    }
-    return {};
+        added = raw->nodeId();
+    });
+    if (error.isEmpty()) document.setSelection({added});
+    return error;
 }
 
 QString renameNode(Document& document, NodeId id, const QString& name) {

@@ -1,0 +1,37 @@
+#pragma once
+// Where a node added from the menus goes, and how big and bright it is: a new user should see it
+// at once in a scene of any size. Shapes land at the view's focus (its orbit centre), a quarter of
+// the size of what is looked at, rounded to 1, 2 or 5 x 10^k metres, with a material of their own;
+// point and spot lights hang above the focus (below the first surface over it, so not inside a
+// room's ceiling) with the irradiance at the focus that Blender's new 1000 W light gives in its
+// default scene; a new sun is Blender's (1 W/m^2) and shines down at an angle. Pure data, no Qt.
+#include "scene/core/components.h"
+#include "scene/core/transform.h"
+
+#include <glm/glm.hpp>
+
+namespace glint::editor {
+
+struct ViewFocus {
+    glm::dvec3 point{0.0};  // the view's orbit centre, world space
+    double scale = 1.0;     // metres: the size of what is looked at (the scene, else the view's distance)
+    double headroom = 1e30; // free space straight above `point` before a surface, metres
+};
+
+struct Placement {
+    Transform worldFromNode; // for a node at the root; the caller makes it local to its parent
+    Component component;
+};
+
+// `unit`: the component as the menu offers it (defaultShape, defaultLight: sized for 1 m).
+Placement placeNewNode(const Component& unit, const ViewFocus& focus);
+
+// 1, 2 or 5 x 10^k nearest below `metres` (> 0), so sizes read as round numbers.
+double roundSize(double metres);
+
+// The candela of a point or spot light at `distance` metres from what it lights, and the lux of a
+// sun, as Blender's new lights give after its glTF importer (1000 W; 1 W/m^2).
+float newPointCandela(double distance);
+inline constexpr float kNewSunLux = 683.0f;
+
+} // namespace glint::editor
