@@ -148,6 +148,7 @@ void MainWindow::applyPreferences() {
     if (auto* app = qobject_cast<QApplication*>(QCoreApplication::instance()))
         applyTheme(*app, themeFromName(preferences_.theme), options_.systemPalette);
     autosave_->setIntervalMinutes(preferences_.autosaveMinutes);
+    if (viewport_) viewport_->setSampleCap(preferences_.viewportSamples);
     for (QAction* action : keymapActions()) {
         auto it = preferences_.keymap.find(action->objectName());
         if (it != preferences_.keymap.end()) action->setShortcut(it.value());

@@ -3,6 +3,8 @@
 #include <QCoreApplication>
 #include <QSettings>
 
+#include <algorithm>
+
 namespace glint::editor {
 
 Preferences Preferences::load() {
@@ -11,6 +13,7 @@ Preferences Preferences::load() {
     p.theme = s.value("ui/theme", p.theme).toString();
     p.language = s.value("ui/language", p.language).toString();
     p.autosaveMinutes = s.value("autosave/minutes", p.autosaveMinutes).toInt();
+    p.viewportSamples = std::max(0, s.value("viewport/samples", p.viewportSamples).toInt());
     s.beginGroup("keymap");
     for (const QString& key : s.childKeys()) p.keymap[key] = QKeySequence(s.value(key).toString());
     s.endGroup();
@@ -22,6 +25,7 @@ void Preferences::save() const {
     s.setValue("ui/theme", theme);
     s.setValue("ui/language", language);
     s.setValue("autosave/minutes", autosaveMinutes);
+    s.setValue("viewport/samples", viewportSamples);
     s.remove("keymap");
     s.beginGroup("keymap");
     for (auto it = keymap.begin(); it != keymap.end(); ++it)

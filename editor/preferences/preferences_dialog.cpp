@@ -54,6 +54,14 @@ QWidget* PreferencesDialog::makeGeneralPage() {
     autosave_->setValue(initial_.autosaveMinutes);
     autosave_->setAccessibleName(tr("Autosave interval"));
     form->addRow(tr("Autosave every"), autosave_);
+
+    viewportSamples_ = new QSpinBox(page);
+    viewportSamples_->setRange(0, 1 << 20);
+    viewportSamples_->setSpecialValueText(tr("No limit"));
+    viewportSamples_->setValue(initial_.viewportSamples);
+    viewportSamples_->setAccessibleName(tr("Viewport samples"));
+    viewportSamples_->setToolTip(tr("The viewport stops adding samples per pixel here (renders use the Scene panel's samples)"));
+    form->addRow(tr("Viewport samples"), viewportSamples_);
     return page;
 }
 
@@ -103,6 +111,7 @@ Preferences PreferencesDialog::result() const {
     p.theme = theme_->currentData().toString();
     p.language = language_->currentData().toString();
     p.autosaveMinutes = autosave_->value();
+    p.viewportSamples = viewportSamples_->value();
     p.keymap.clear();
     for (int row = 0; row < actions_.size(); ++row) {
         const QKeySequence seq = static_cast<QKeySequenceEdit*>(keymap_->cellWidget(row, 1))->keySequence();

@@ -31,6 +31,7 @@ private:
     QComboBox* theme_ = nullptr;
     QComboBox* language_ = nullptr;
     QSpinBox* autosave_ = nullptr;
+    QSpinBox* viewportSamples_ = nullptr;
     QTableWidget* keymap_ = nullptr;
 };
 

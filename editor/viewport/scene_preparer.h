@@ -5,18 +5,17 @@
 // The click picker is built there too, from the same mesh BVHs (they are not built twice).
 //
 // One preparation runs at a time, on one worker, so the mesh BVH cache the worker keeps across
-// preparations is never shared. start() supersedes: the preparation in flight is cancelled at its
-// next step (between two meshes or two textures) and its result never arrives; only the newest
-// one's finished() or failed() is emitted. The destructor cancels and waits for the worker (at most
-// one step), so closing the document or the application leaves nothing running.
+// preparations is never shared. start() supersedes (LatestJob): the preparation in flight is
+// cancelled at its next step (between two meshes or two textures) and its result never arrives;
+// only the newest one's finished() or failed() is emitted. The destructor cancels and waits for the
+// worker (at most one step), so closing the document or the application leaves nothing running.
+#include "editor/document/latest_job.h"
 #include "editor/viewport/scene_picker.h"
 #include "renderer/gpu_scene/prepared_scene.h"
 
 #include <QObject>
 #include <QString>
-#include <QThreadPool>
 
-#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -46,29 +45,24 @@ public:
     void start(Scene document, double seconds, std::filesystem::path environmentFile, renderer::TextureLimits limits);
     // Cancels the preparation in flight and drops a finished result not yet taken.
     void cancel();
-    bool busy() const { return current_ != nullptr; }
+    bool busy() const { return job_.busy(); }
     bool hasResult() const { return ready_ != nullptr; } // finished, not yet taken
     std::uint64_t started() const { return generation_; } // preparations started so far
     // The result of the last finished(), handed over once.
     std::unique_ptr<PreparedDocument> take();
 
 signals:
-    // stage: "textures", "packing", "meshes", "environment" or "picking"; done of total steps of that stage.
-    void progress(const QString& stage, int done, int total);
+    // `done` of `total` steps of `stage`.
+    void progress(renderer::PreparationStage stage, int done, int total);
     void finished();
     void failed(const QString& message);
 
 private:
-    struct Job;
-    void run(const std::shared_ptr<Job>& job);
-    void deliver(const std::shared_ptr<Job>& job);
-
-    QThreadPool pool_; // one thread: preparations run one after another
     std::shared_ptr<renderer::MeshBvhCache> meshCache_;
     std::shared_ptr<renderer::TextureCache> textureCache_; // decoded images: a rebuild decodes only new image bytes
-    std::shared_ptr<Job> current_;
     std::unique_ptr<PreparedDocument> ready_;
     std::uint64_t generation_ = 0;
+    LatestJob<std::shared_ptr<PreparedDocument>> job_{this, 1}; // one thread: preparations run one after another
 };
 
 } // namespace glint::editor

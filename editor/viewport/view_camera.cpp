@@ -110,8 +110,24 @@ glm::dvec3 projectToPixels(const ViewCamera& camera, const glm::dvec3& world, in
     return {(x + 1.0) * 0.5 * width, (1.0 - y) * 0.5 * height, depth};
 }
 
-glm::mat4 clipFromWorld(const ViewCamera& camera, double aspect, double zNear, double zFar) {
-    const glm::dmat4 clipFromCamera = glm::perspective(double(camera.yfov), aspect, zNear, zFar);
+glm::dvec2 depthRange(const ViewCamera& camera, const bvh::Aabb& bounds) {
+    constexpr double kNearFraction = 1e-5; // of the far plane: 24-bit depth still separates surfaces
+    double zFar = std::max(1000.0, 4.0 * camera.distance);
+    if (!bounds.empty()) {
+        const glm::dvec3 eye = camera.position();
+        double farthest = 0.0;
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::dvec3 p((corner & 1) ? bounds.hi.x : bounds.lo.x, (corner & 2) ? bounds.hi.y : bounds.lo.y,
+                               (corner & 4) ? bounds.hi.z : bounds.lo.z);
+            farthest = std::max(farthest, glm::length(p - eye));
+        }
+        zFar = std::max(1.0, 1.01 * farthest);
+    }
+    return {std::max(1e-4, kNearFraction * zFar), zFar};
+}
+
+glm::mat4 clipFromWorld(const ViewCamera& camera, double aspect, glm::dvec2 depth) {
+    const glm::dmat4 clipFromCamera = glm::perspective(double(camera.yfov), aspect, depth.x, depth.y);
     return glm::mat4(clipFromCamera * glm::inverse(glm::dmat4(camera.worldFromCamera())));
 }
 

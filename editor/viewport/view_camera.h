@@ -2,6 +2,7 @@
 // The viewport's own camera: an orbit camera (a target, a distance and two angles) that also
 // flies. It is editor state, not document content: navigating never dirties the file until the
 // user turns the view into a scene camera. Pure math (no Qt, no GL), tested without a window.
+#include "renderer/bvh/aabb.h"
 #include "renderer/bvh/ray.h"
 #include "scene/core/camera_path.h"
 
@@ -50,7 +51,11 @@ CameraKey keyFromView(const ViewCamera& camera, double time);
 bvh::Ray pixelRay(const ViewCamera& camera, double px, double py, int width, int height);
 // Where a world point lands in the view (pixels, y down); z < 0 when it is behind the camera.
 glm::dvec3 projectToPixels(const ViewCamera& camera, const glm::dvec3& world, int width, int height);
-// OpenGL clip-from-world for raster overlays.
-glm::mat4 clipFromWorld(const ViewCamera& camera, double aspect, double zNear = 0.01, double zFar = 1000.0);
+// Near and far planes (x, y) for raster views of a scene inside `bounds`: far just beyond its
+// farthest corner from the camera, near a fixed fraction of that (depth precision); an empty box:
+// 0.01 and 1000 m, or more when the camera orbits farther out.
+glm::dvec2 depthRange(const ViewCamera& camera, const bvh::Aabb& bounds);
+// OpenGL clip-from-world for raster views and overlays; depth: near and far planes.
+glm::mat4 clipFromWorld(const ViewCamera& camera, double aspect, glm::dvec2 depth = {0.01, 1000.0});
 
 } // namespace glint::editor

@@ -34,6 +34,24 @@ const char* modeName(ViewMode mode) {
     return "";
 }
 
+// Stable ids for the keymap (preferences store shortcuts by object name).
+const char* modeId(ViewMode mode) {
+    switch (mode) {
+    case ViewMode::PathTraced: return "view.mode.pathTraced";
+    case ViewMode::Solid: return "view.mode.solid";
+    case ViewMode::Wireframe: return "view.mode.wireframe";
+    case ViewMode::Normals: return "view.mode.normals";
+    case ViewMode::Albedo: return "view.mode.albedo";
+    case ViewMode::AmbientOcclusion: return "view.mode.ambientOcclusion";
+    case ViewMode::Motion: return "view.mode.motion";
+    case ViewMode::Variance: return "view.mode.variance";
+    case ViewMode::Depth: return "view.mode.depth";
+    case ViewMode::BvhBoxes: return "view.mode.bvhBoxes";
+    case ViewMode::BvhCost: return "view.mode.bvhCost";
+    }
+    return "";
+}
+
 // An action whose text follows the language; `text` is its source in the Viewport context.
 QAction* translatedAction(QObject* parent, const char* text) {
     auto* action = new QAction(parent);
@@ -71,6 +89,7 @@ void Viewport::createActions() {
         QAction* action = checkable(this, modeName(mode), key);
         action->setChecked(mode == ViewMode::PathTraced);
         action->setData(int(mode));
+        action->setObjectName(modeId(mode));
         modes_->addAction(action);
         addAction(action);
         connect(action, &QAction::triggered, this, [this, mode] { view_->setMode(mode); });
@@ -81,14 +100,20 @@ void Viewport::createActions() {
                                                             {GizmoMode::Rotate, QT_TR_NOOP("Rotate")},
                                                             {GizmoMode::Scale, QT_TR_NOOP("Scale")}};
     const Qt::Key gizmoKeys[] = {Qt::Key_W, Qt::Key_E, Qt::Key_R};
+    const char* gizmoIds[] = {"view.gizmo.move", "view.gizmo.rotate", "view.gizmo.scale"};
     for (int i = 0; i < 3; ++i) {
         const GizmoMode mode = gizmoModes[i].first;
         QAction* action = checkable(this, gizmoModes[i].second, QKeySequence(gizmoKeys[i]));
         action->setShortcut({}); // the view handles W/E/R itself so that fly navigation can use them
         action->setChecked(i == 0);
+        action->setObjectName(gizmoIds[i]);
+        action->setData(int(mode));
         gizmos_->addAction(action);
         connect(action, &QAction::triggered, this, [this, mode] { view_->setGizmoMode(mode); });
     }
+    connect(&view_->tools(), &ViewTools::gizmoModeChanged, this, [this](GizmoMode mode) {
+        for (QAction* action : gizmos_->actions()) action->setChecked(action->data().toInt() == int(mode));
+    });
 
     frameSelection_ = translatedAction(this, QT_TR_NOOP("Frame selection"));
     frameSelection_->setShortcut(Qt::Key_F);
@@ -127,10 +152,27 @@ void Viewport::createActions() {
     addAction(clearRenderRegion_);
     connect(clearRenderRegion_, &QAction::triggered, this, [this] { view_->setRenderRegion(std::nullopt); });
 
+    pause_ = checkable(this, QT_TR_NOOP("Pause viewport rendering"), QKeySequence());
+    keepTranslated(pause_, TextRole::ToolTip, staticMetaObject.className(),
+                   QT_TR_NOOP("Stop adding samples; edits are still shown at full resolution"));
+    connect(pause_, &QAction::toggled, this, [this] { view_->setPaused(pause_->isChecked() || exportRunning_); });
+
+    denoise_ = checkable(this, QT_TR_NOOP("Denoise still image"), QKeySequence());
+    keepTranslated(denoise_, TextRole::ToolTip, staticMetaObject.className(),
+                   QT_TR_NOOP("Filter the accumulated image while it converges (off: the raw running mean; renders are never filtered)"));
+    denoise_->setChecked(true);
+    connect(denoise_, &QAction::toggled, view_, &RenderView::setDenoise);
+
     compare_ = checkable(this, QT_TR_NOOP("Compare A | B"), QKeySequence());
     compare_->setEnabled(false);
     connect(compare_, &QAction::toggled, view_, &RenderView::setComparing);
     createPickFocusAction();
+    const std::pair<QAction*, const char*> ids[] = {
+        {frameSelection_, "view.frameSelection"}, {makeSceneCamera_, "view.makeSceneCamera"}, {lookThrough_, "view.lookThrough"},
+        {snap_, "view.snap"}, {inspect_, "view.inspect"}, {snapshot_, "view.snapshot"}, {compare_, "view.compare"},
+        {renderRegion_, "view.renderRegion"}, {clearRenderRegion_, "view.clearRenderRegion"}, {pickFocus_, "view.pickFocus"},
+        {pause_, "view.pause"}, {denoise_, "view.denoise"}};
+    for (const auto& [action, id] : ids) action->setObjectName(id);
 }
 
 void Viewport::createPickFocusAction() {
@@ -162,11 +204,16 @@ QList<QAction*> Viewport::gizmoActions() const { return gizmos_->actions(); }
 QList<QAction*> Viewport::allActions() const {
     QList<QAction*> all = viewModeActions();
     all << gizmoActions() << frameSelection_ << makeSceneCamera_ << lookThrough_ << snap_ << inspect_ << snapshot_ << compare_ << renderRegion_
-        << clearRenderRegion_ << pickFocus_;
+        << clearRenderRegion_ << pickFocus_ << pause_ << denoise_;
     return all;
 }
 
-void Viewport::setPaused(bool paused) { view_->setPaused(paused); }
+void Viewport::setPaused(bool paused) {
+    exportRunning_ = paused;
+    view_->setPaused(paused || pause_->isChecked());
+}
+
+void Viewport::setSampleCap(int samples) { view_->setSampleCap(samples); }
 
 NodeId Viewport::makeSceneCamera() {
     const ViewCamera& view = view_->camera();
@@ -202,11 +249,18 @@ QString Viewport::statusText() const {
     const ViewportStats& s = view_->stats();
     if (!s.error.isEmpty()) return s.error;
     if (s.preparing) return s.preparation;
-    return tr("%1 spp  |  %2 ms/frame  |  1/%3 resolution%4")
-        .arg(s.samples)
-        .arg(s.frameMs, 0, 'f', 1)
-        .arg(s.divisor)
-        .arg(view_->paused() ? tr("  |  paused") : QString());
+    QString stage;
+    switch (s.stage) {
+    case ViewStage::Preparing: return s.preparation;
+    case ViewStage::Coarse: stage = tr("coarse (1/%1 resolution)").arg(s.divisor); break;
+    case ViewStage::Refining: stage = tr("refining to full resolution: %1%").arg(s.refinePercent); break;
+    case ViewStage::Accumulating:
+        stage = s.sampleCap > 0 ? tr("%1 / %2 spp").arg(s.samples).arg(s.sampleCap) : tr("%1 spp").arg(s.samples);
+        break;
+    case ViewStage::Converged: stage = tr("%1 spp, converged (viewport sample cap)").arg(s.samples); break;
+    case ViewStage::Paused: stage = tr("%1 spp, paused").arg(s.samples); break;
+    }
+    return tr("%1  |  %2 ms/frame").arg(stage).arg(s.frameMs, 0, 'f', 1);
 }
 
 } // namespace glint::editor

@@ -36,12 +36,17 @@ public:
     QAction* clearRenderRegionAction() const { return clearRenderRegion_; } // Ctrl+Alt+B
     // Ctrl+Shift+F, then a click: the looked-through camera focuses on the surface clicked.
     QAction* pickFocusAction() const { return pickFocus_; }
+    // Stops adding samples once the image is current and whole (edits are still shown).
+    QAction* pauseAction() const { return pause_; }
+    // The still image filtered by the preview denoiser (on), or the raw running mean.
+    QAction* denoiseAction() const { return denoise_; }
     QList<QAction*> gizmoActions() const;
     // Every action above, for a menu.
     QList<QAction*> allActions() const;
 
 public slots:
-    void setPaused(bool paused); // while an export renders
+    void setPaused(bool paused); // while an export renders (kept apart from the user's pause)
+    void setSampleCap(int samples); // the viewport's own sample count (preferences; 0: none)
     // Adds a camera node placed like the view (one undoable step) and selects it.
     NodeId makeSceneCamera();
     // Looks through the selected camera, or back through the viewport's own one.
@@ -71,6 +76,9 @@ private:
     QAction* pickFocus_ = nullptr;
     QAction* renderRegion_ = nullptr;
     QAction* clearRenderRegion_ = nullptr;
+    QAction* pause_ = nullptr;
+    QAction* denoise_ = nullptr;
+    bool exportRunning_ = false;
 };
 
 } // namespace glint::editor

@@ -29,7 +29,7 @@ private:
     void report() const {
         // Decodes can outnumber the textures counted up front (WaterBottle: 5 for 4): never report
         // more than all.
-        if (control_.progress) control_.progress("textures", std::min(done_, total_), total_);
+        if (control_.progress) control_.progress(PreparationStage::Textures, std::min(done_, total_), total_);
         ++done_;
     }
     OiioImageDecoder decoder_;
@@ -46,7 +46,7 @@ bool meshesHaveColors(const Scene& scene) {
     return false;
 }
 
-void report(const PrepareControl& control, const char* stage, std::size_t done, std::size_t total) {
+void report(const PrepareControl& control, PreparationStage stage, std::size_t done, std::size_t total) {
     if (control.progress) control.progress(stage, done, total);
 }
 
@@ -100,13 +100,13 @@ PreparedScene prepareScene(const Scene& scene, const std::filesystem::path& envi
         const ReportingDecoder decoder(control, out.texturesUsed.size());
         out.textures = buildTextureSet(scene, materials, decoder, limits, textureCache);
     }
-    report(control, "textures", out.texturesUsed.size(), out.texturesUsed.size());
+    report(control, PreparationStage::Textures, out.texturesUsed.size(), out.texturesUsed.size());
     out.warnings = textureWarnings(out.textures.warnings);
-    report(control, "packing", 0, 1);
+    report(control, PreparationStage::Packing, 0, 1);
     out.packed = packScene(scene, &out.textures);
     const bool colors = meshesHaveColors(scene);
     out.meshes = validatedMeshData(scene, out.packed.materialIndex, !out.textures.empty() || colors, meshCache,
-                               [&](std::size_t done, std::size_t total) { report(control, "meshes", done, total); });
+                               [&](std::size_t done, std::size_t total) { report(control, PreparationStage::Meshes, done, total); });
     out.features.meshes = !out.meshes.instances.empty() && !out.meshes.flat.trianglePositions.empty();
     addMeshMaterialFeatures(scene, out.features);
     out.features.textures = !out.textures.empty() || colors;
@@ -115,7 +115,7 @@ PreparedScene prepareScene(const Scene& scene, const std::filesystem::path& envi
     out.environment = scene.settings.environment;
     out.environmentFile = environmentFile;
     if (!environmentFile.empty()) {
-        report(control, "environment", 0, 1);
+        report(control, PreparationStage::Environment, 0, 1);
         PreparedEnvironment env{loadEnvironmentImage(environmentFile), {}};
         env.table = twin::buildEnvironmentSamplingTable(env.image.width, env.image.height, env.image.rgb);
         out.environmentMap = std::move(env);

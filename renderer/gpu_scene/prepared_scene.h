@@ -58,10 +58,13 @@ struct PreparedScene {
     Warnings warnings;
 };
 
-// Reports where a preparation is; `stage` is one of "meshes", "textures", "environment", "packing".
-// A callback may throw (PreparationCancelled) to stop the preparation between two steps.
+// The steps of a preparation, in the order they run (Picking is the editor's, after prepareScene).
+enum class PreparationStage { Textures, Packing, Meshes, Environment, Picking };
+
+// Reports where a preparation is. A callback may throw (PreparationCancelled) to stop the
+// preparation between two steps.
 struct PrepareControl {
-    std::function<void(const char* stage, std::size_t done, std::size_t total)> progress;
+    std::function<void(PreparationStage stage, std::size_t done, std::size_t total)> progress;
 };
 
 // Thrown out of prepareScene by a progress callback when a newer preparation supersedes it.

@@ -1,5 +1,7 @@
-// The viewport's time-slicing arithmetic: divisors rise on overrun, fall when a finer one fits,
-// moving views stay at half resolution or coarser, and paints stop adding frames at the budget.
+// The viewport's time-slicing arithmetic: moving divisors rise on overrun and fall when a finer one
+// fits (never below half resolution); still views trace full-resolution bands sized to the budget
+// from the measured cost of a row, with a preview divisor chosen so its frame fits; paints stop
+// adding frames at the budget.
 #include "editor/viewport/frame_budget.h"
 
 #include <QtTest>
@@ -9,40 +11,62 @@ using glint::editor::FrameBudget;
 class TestViewportBudget : public QObject {
     Q_OBJECT
 private slots:
-    void startsAtFullResolutionStillAndHalfMoving() {
+    void startsHalfMovingAndCautiousStill() {
         FrameBudget b(30.0);
-        QCOMPARE(b.resolutionDivisor(false), 1);
-        QCOMPARE(b.resolutionDivisor(true), 2);
+        QCOMPARE(b.movingDivisor(), 2);
+        // Nothing measured yet: a preview at 1/4 and bands of 1/16 of the image.
+        QCOMPARE(b.previewDivisor(720), FrameBudget::kFirstPreviewDivisor);
+        QCOMPARE(b.rowsPerFrame(720), 720 / FrameBudget::kFirstBands);
     }
 
-    void overrunCoarsensStepByStep() {
+    void movingOverrunCoarsensStepByStep() {
         FrameBudget b(30.0);
-        b.report(50.0, 1, false); // over 1.5x budget
-        QCOMPARE(b.resolutionDivisor(false), 2);
-        b.report(40.0, 2, false); // within 1.5x: accumulation is worth more than a finer step
-        QCOMPARE(b.resolutionDivisor(false), 2);
-        b.report(40.0, 2, true);
-        QCOMPARE(b.resolutionDivisor(true), 3);
-        QCOMPARE(b.resolutionDivisor(false), 2); // still and moving are separate
+        b.reportMoving(40.0, 2);
+        QCOMPARE(b.movingDivisor(), 3);
+        b.reportMoving(500.0, 5); // a frame at a divisor no longer in use says nothing
+        QCOMPARE(b.movingDivisor(), 3);
     }
 
-    void staleReportsAreIgnored() {
+    void movingFinerWhenItFits() {
         FrameBudget b(30.0);
-        b.report(500.0, 4, false); // a frame at a divisor no longer in use
-        QCOMPARE(b.resolutionDivisor(false), 1);
+        for (int i = 0; i < 3; ++i) b.reportMoving(100.0, b.movingDivisor());
+        QCOMPARE(b.movingDivisor(), 5);
+        b.reportMoving(5.0, 5); // 5 * 25 / 16 = 7.8 ms at 1/4: fits
+        QCOMPARE(b.movingDivisor(), 4);
+        b.reportMoving(1.0, 4);
+        b.reportMoving(1.0, 3);
+        QCOMPARE(b.movingDivisor(), 2); // never finer than half while moving
+        for (int i = 0; i < 20; ++i) b.reportMoving(1000.0, b.movingDivisor());
+        QCOMPARE(b.movingDivisor(), FrameBudget::kMaxDivisor);
     }
 
-    void finerWhenItFits() {
+    // A fast GL: a whole full-resolution frame fits, so neither bands nor a preview.
+    void wholeFramesWhereTheyFit() {
         FrameBudget b(30.0);
-        for (int i = 0; i < 3; ++i) b.report(100.0, b.resolutionDivisor(true), true);
-        QCOMPARE(b.resolutionDivisor(true), 5);
-        b.report(5.0, 5, true); // 5 * 25 / 16 = 7.8 ms at 1/4: fits
-        QCOMPARE(b.resolutionDivisor(true), 4);
-        b.report(1.0, 4, true);
-        b.report(1.0, 3, true);
-        QCOMPARE(b.resolutionDivisor(true), 2); // never finer than half while moving
-        for (int i = 0; i < 20; ++i) b.report(1000.0, b.resolutionDivisor(true), true);
-        QCOMPARE(b.resolutionDivisor(true), FrameBudget::kMaxDivisor);
+        b.reportRows(20.0, 720); // 20 ms for a whole 720-row frame
+        QCOMPARE(b.rowsPerFrame(720), 720);
+        QCOMPARE(b.previewDivisor(720), 1);
+    }
+
+    // A slow GL: 1 ms per row, a 720-row frame takes 720 ms: bands of 24 rows (80 % of 30 ms) and a
+    // preview at ceil(sqrt(720 / 24)) = 6.
+    void bandsAndPreviewOnASlowGl() {
+        FrameBudget b(30.0);
+        b.reportRows(10.0, 10);
+        QCOMPARE(b.rowsPerFrame(720), 24);
+        QCOMPARE(b.previewDivisor(720), 6);
+        // The estimate follows new measures halfway: 3 ms per row now (a heavier part of the image).
+        b.reportRows(30.0, 6);
+        QCOMPARE(b.rowsPerFrame(720), 8);
+        QCOMPARE(b.previewDivisor(720), FrameBudget::kMaxDivisor); // sqrt(2160 / 24) = 9.5, capped
+    }
+
+    // A preview frame at 1/4 with 180 rows in 45 ms: each full row costs 45 / 180 * 4 = 1 ms.
+    void previewsTeachTheRowCost() {
+        FrameBudget b(30.0);
+        b.reportPreview(45.0, 180, 4);
+        QCOMPARE(b.msPerRow(), 1.0);
+        QCOMPARE(b.rowsPerFrame(720), 24);
     }
 
     void paintsStopAtTheBudget() {
