@@ -23,15 +23,6 @@ namespace glint::editor {
 
 namespace {
 
-renderer::CameraSetup setupFrom(const ViewCamera& camera, int width, int height) {
-    renderer::CameraSetup setup;
-    setup.worldFromCamera = camera.worldFromCamera();
-    const float t = std::tan(0.5f * camera.yfov);
-    setup.halfExtent = {t * float(width) / float(std::max(1, height)), t};
-    setup.focusDistance = static_cast<float>(camera.distance);
-    return setup;
-}
-
 std::filesystem::path environmentPath(const Document& document) {
     const std::string& file = document.scene().settings.environment.file;
     if (file.empty() || document.folder().empty()) return {};
@@ -52,6 +43,13 @@ bool realTime(const ViewRequest& request) { return request.moving && request.mod
 
 double elapsedMs(const QElapsedTimer& clock) { return double(clock.nsecsElapsed()) / 1e6; }
 
+// The diagonal of what the picker knows of, else `otherwise`.
+double sceneSize(const ScenePicker& picker, double otherwise) {
+    bvh::Aabb bounds;
+    for (const bvh::Aabb& box : picker.instanceBounds()) bounds.grow(box);
+    return bounds.empty() ? otherwise : std::max(1e-6, double(glm::length(bounds.extent())));
+}
+
 // Depth planes that hold everything the picker knows of (an engine modelled in millimetres is
 // hundreds of units across: a fixed far plane cut it away).
 glm::dvec2 sceneDepthRange(const ViewCamera& camera, const ScenePicker& picker) {
@@ -61,6 +59,15 @@ glm::dvec2 sceneDepthRange(const ViewCamera& camera, const ScenePicker& picker) 
 }
 
 } // namespace
+
+renderer::CameraSetup cameraSetupOf(const ViewCamera& camera, int width, int height) {
+    renderer::CameraSetup setup;
+    setup.worldFromCamera = camera.worldFromCamera();
+    const float t = std::tan(0.5f * camera.yfov);
+    setup.halfExtent = {t * float(width) / float(std::max(1, height)), t};
+    setup.focusDistance = static_cast<float>(camera.distance);
+    return setup;
+}
 
 RenderHost::RenderHost(Document& document, QObject* parent)
     : QObject(parent), document_(document), preparer_(std::make_unique<ScenePreparer>()),
@@ -283,6 +290,8 @@ void RenderHost::configure(const ViewRequest& request) {
     s.view = request.mode == ViewMode::AmbientOcclusion ? renderer::DebugView::AmbientOcclusion
              : request.mode == ViewMode::BvhCost        ? renderer::DebugView::BvhCost
                                                         : renderer::DebugView::None;
+    // Occlusion within a tenth of the scene's size: the AO view of a model in millimetres was white.
+    if (request.mode == ViewMode::AmbientOcclusion) s.aoDistance = float(0.1 * sceneSize(picker(request.mode), 10.0));
     s.region = request.region;
     const int divisor = moving ? budget_.movingDivisor() : 1;
     stats_.divisor = divisor; // of this paint's frames (the budget may pick another for the next)
@@ -294,7 +303,7 @@ void RenderHost::configure(const ViewRequest& request) {
     if (request.lookThrough.valid() && document_.scene().contains(request.lookThrough))
         renderer_->useSceneCamera(document_.scene().at(request.lookThrough).name);
     else
-        renderer_->setCamera(setupFrom(*request.camera, s.width, s.height));
+        renderer_->setCamera(cameraSetupOf(*request.camera, s.width, s.height));
 }
 
 // Frames until this paint's budget is spent (one while moving: the next input comes first). Each

@@ -16,6 +16,7 @@
 #include "editor/viewport/frame_budget.h"
 #include "editor/viewport/view_camera.h"
 #include "editor/viewport/view_modes.h"
+#include "renderer/gpu_scene/camera_setup.h"
 #include "renderer/gpu_scene/prepared_scene.h"
 #include "renderer/gpu_scene/texture_set.h"
 #include "renderer/render_region.h"
@@ -74,6 +75,9 @@ struct ViewportStats {
     double uploadMs = 0.0;  // and its upload on the GL thread
     double inPlaceMs = 0.0; // the last edit applied in place (transforms, lights, material values)
 };
+
+// The renderer's camera for the view's own camera in a width x height image.
+renderer::CameraSetup cameraSetupOf(const ViewCamera& camera, int width, int height);
 
 // What the view asks to see in one paint.
 struct ViewRequest {

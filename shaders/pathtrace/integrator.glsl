@@ -191,11 +191,11 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng, OUT(LobeRadiance) l
 }
 
 // Debug view (the DEBUG_VIEW_AO variant): the fraction of a cosine-weighted hemisphere unoccluded
-// within uAoDistance.
+// within uAoDistance. Misses are black, so a convex object (unoccluded all over) still shows.
 uniform float uAoDistance;
 
 PathResult ambientOcclusion(Ray ray, vec3 viewAxis, INOUT(Rng) rng) {
-    PathResult result = PathResult(vec3(1.0), vec3(1.0), vec3(0.0), -1.0, 0.0, vec4(0.0, 1.0, 0.0, 0.0));
+    PathResult result = PathResult(vec3(0.0), vec3(1.0), vec3(0.0), -1.0, 0.0, vec4(0.0, 1.0, 0.0, 0.0));
     setTraceState(true, alphaKey(rng, 2u), cameraCone());
     Hit hit = traceClosest(ray);
     if (hit.material < 0) return result;
