@@ -48,7 +48,14 @@ struct BenchOptions {
     std::string camera;
     std::string env;
     int referenceSpp = 1024;
+    bool denoise = false; // Accumulate and Reference also measured through the mean denoiser
     PathBenchOptions path;
+};
+
+// One sampled frame of a row: its number, the time so far, and its errors.
+struct BenchSample {
+    int frame = 0;
+    double ms = 0, relmse = 0, ssim = 0;
 };
 
 struct BenchRow {
@@ -56,11 +63,19 @@ struct BenchRow {
     int spp = 1, bounces = 0, frames = 0;
     double msMedian = 0, msP10 = 0, msP90 = 0, relmse = 0, ssim = 0;
     bench::ChartCurve curve;
+    bool denoised = false;
+    std::vector<BenchSample> samples;
 };
+
+// "accumulate", or "accumulate+denoise" for a mean shown through the denoiser.
+std::string rowName(const BenchRow& r) {
+    return std::string(renderer::configurationName(r.config)) + (r.denoised ? "+denoise" : "");
+}
 
 using Clock = std::chrono::steady_clock;
 
-renderer::FrameSettings settingsFor(const BenchOptions& o, const Scene& scene, renderer::Configuration config) {
+renderer::FrameSettings settingsFor(const BenchOptions& o, const Scene& scene, renderer::Configuration config,
+                                    bool denoise = false) {
     renderer::FrameSettings s;
     s.configuration = config;
     s.spp = o.spp.value_or(0);
@@ -68,6 +83,7 @@ renderer::FrameSettings settingsFor(const BenchOptions& o, const Scene& scene, r
     s.seed = o.seed;
     s.width = o.size.width;
     s.height = o.size.height;
+    s.denoise = denoise;
     return s;
 }
 
@@ -86,8 +102,8 @@ std::vector<float> renderReference(renderer::FrameRenderer& frames, const BenchO
 bool sampledFrame(int frame, int last) { return frame == last || (frame & (frame - 1)) == 0; }
 
 BenchRow runConfiguration(renderer::FrameRenderer& frames, const BenchOptions& o, const Scene& scene,
-                          renderer::Configuration config, const std::vector<float>& reference) {
-    const renderer::FrameSettings s = settingsFor(o, scene, config);
+                          renderer::Configuration config, const std::vector<float>& reference, bool denoise) {
+    const renderer::FrameSettings s = settingsFor(o, scene, config, denoise);
     frames.setSettings(s);
     frames.resetHistory();
     frames.renderFrame(); // warm-up: shader compilation is not a frame time
@@ -98,7 +114,8 @@ BenchRow runConfiguration(renderer::FrameRenderer& frames, const BenchOptions& o
     row.spp = s.spp > 0 ? s.spp : renderer::traitsOf(config).sppPerFrame;
     row.bounces = renderer::traitsOf(config).gi ? s.bounces : 0;
     row.frames = o.frames;
-    row.curve.name = std::string(renderer::configurationName(config));
+    row.denoised = s.denoise;
+    row.curve.name = rowName(row);
     std::vector<double> ms;
     double total = 0.0;
     std::vector<float> last;
@@ -111,6 +128,7 @@ BenchRow runConfiguration(renderer::FrameRenderer& frames, const BenchOptions& o
         if (!sampledFrame(f, o.frames)) continue;
         last = frames.readImages().radiance;
         row.curve.points.push_back({total, bench::relMse(last, reference)});
+        row.samples.push_back({f, total, row.curve.points.back().relmse, bench::ssim(last, reference, o.size.width, o.size.height)});
     }
     row.msMedian = bench::percentile(ms, 0.5);
     row.msP10 = bench::percentile(ms, 0.1);
@@ -124,7 +142,7 @@ BenchRow runConfiguration(renderer::FrameRenderer& frames, const BenchOptions& o
 std::vector<BenchRow> benchRows(const std::vector<PathBenchRow>& path) {
     std::vector<BenchRow> rows;
     for (const PathBenchRow& p : path)
-        rows.push_back({p.config, p.spp, p.bounces, p.frames, p.msMedian, p.msP10, p.msP90, p.relmse, p.ssim, p.curve});
+        rows.push_back({p.config, p.spp, p.bounces, p.frames, p.msMedian, p.msP10, p.msP90, p.relmse, p.ssim, p.curve, false, {}});
     return rows;
 }
 
@@ -132,7 +150,7 @@ const char* yesNo(bool b) { return b ? "yes" : "no"; }
 
 std::string csvLine(const BenchRow& r) {
     const auto t = renderer::traitsOf(r.config);
-    std::string line = std::string(renderer::configurationName(r.config));
+    std::string line = rowName(r);
     for (const std::string& v : {std::to_string(r.spp), std::to_string(r.bounces), std::string(yesNo(t.gi)),
                                  std::string(yesNo(t.ao)), std::string(yesNo(t.taa)), std::string(yesNo(t.svgf)),
                                  std::to_string(r.frames), formatNumber(r.msMedian), formatNumber(r.msP10),
@@ -157,27 +175,32 @@ void writeJson(const std::filesystem::path& file, const std::vector<BenchRow>& r
     for (std::size_t i = 0; i < rows.size(); ++i) {
         const auto t = renderer::traitsOf(rows[i].config);
         const BenchRow& r = rows[i];
-        out << "  {\"config\": \"" << renderer::configurationName(r.config) << "\", \"spp\": " << r.spp
+        out << "  {\"config\": \"" << rowName(r) << "\", \"spp\": " << r.spp
             << ", \"bounces\": " << r.bounces << ", \"gi\": " << (t.gi ? "true" : "false")
             << ", \"ao\": " << (t.ao ? "true" : "false") << ", \"taa\": " << (t.taa ? "true" : "false")
             << ", \"svgf\": " << (t.svgf ? "true" : "false") << ", \"frames\": " << r.frames
             << ", \"ms_median\": " << formatNumber(r.msMedian) << ", \"ms_p10\": " << formatNumber(r.msP10)
             << ", \"ms_p90\": " << formatNumber(r.msP90) << ", \"fps\": " << formatNumber(1000.0 / r.msMedian)
-            << ", \"relmse\": " << formatNumber(r.relmse) << ", \"ssim\": " << formatNumber(r.ssim) << "}"
-            << (i + 1 < rows.size() ? ",\n" : "\n");
+            << ", \"relmse\": " << formatNumber(r.relmse) << ", \"ssim\": " << formatNumber(r.ssim) << ", \"samples\": [";
+        for (std::size_t k = 0; k < r.samples.size(); ++k) {
+            const BenchSample& p = r.samples[k];
+            out << (k ? ", " : "") << "{\"frame\": " << p.frame << ", \"ms\": " << formatNumber(p.ms)
+                << ", \"relmse\": " << formatNumber(p.relmse) << ", \"ssim\": " << formatNumber(p.ssim) << "}";
+        }
+        out << "]}" << (i + 1 < rows.size() ? ",\n" : "\n");
     }
     out << "]\n";
     if (!out) throw std::runtime_error("cannot write " + file.string());
 }
 
 void printTable(const std::vector<BenchRow>& rows) {
-    std::printf("%-11s %4s %-6s %-8s %9s %7s %9s %7s\n", "config", "spp", "GI/AO", "TAA/SVGF", "ms/frame", "fps",
+    std::printf("%-18s %4s %-6s %-8s %9s %7s %9s %7s\n", "config", "spp", "GI/AO", "TAA/SVGF", "ms/frame", "fps",
                 "relMSE", "SSIM");
     for (const BenchRow& r : rows) {
         const auto t = renderer::traitsOf(r.config);
         const std::string giAo = std::string(t.gi ? "GI" : "-") + "/" + (t.ao ? "AO" : "-");
         const std::string filters = std::string(t.taa ? "TAA" : "-") + "/" + (t.svgf ? "SVGF" : "-");
-        std::printf("%-11s %4d %-6s %-8s %9s %7s %9s %7s\n", std::string(renderer::configurationName(r.config)).c_str(),
+        std::printf("%-18s %4d %-6s %-8s %9s %7s %9s %7s\n", rowName(r).c_str(),
                     r.spp, giAo.c_str(), filters.c_str(), formatNumber(std::round(r.msMedian * 100) / 100).c_str(),
                     formatNumber(std::round(1000.0 / r.msMedian * 10) / 10).c_str(),
                     formatNumber(std::round(r.relmse * 1e5) / 1e5).c_str(), formatNumber(std::round(r.ssim * 1e4) / 1e4).c_str());
@@ -235,7 +258,8 @@ int runBench(const BenchOptions& o) {
         const std::vector<float> reference = renderReference(frames, o, scene);
         for (const renderer::Configuration c : parseConfigs(o.configs)) {
             std::fprintf(stderr, "glint: %s: %d frames\n", std::string(renderer::configurationName(c)).c_str(), o.frames);
-            rows.push_back(runConfiguration(frames, o, scene, c, reference));
+            rows.push_back(runConfiguration(frames, o, scene, c, reference, false));
+            if (o.denoise && renderer::traitsOf(c).accumulate) rows.push_back(runConfiguration(frames, o, scene, c, reference, true));
         }
         if (wantsPathBench(o.path, scene))
             path = runPathBench(frames, scene, o.path, parseConfigs(o.configs),
@@ -274,6 +298,9 @@ void addBenchCommand(CLI::App& app, Action& action) {
     cmd->add_option("--env", o->env, "Environment map (.hdr, .exr), anywhere on disk (default: the project's)");
     cmd->add_option("--reference-spp", o->referenceSpp, "Samples per pixel of the reference (default: 1024)")
         ->check(CLI::Range(1, 1 << 20));
+    cmd->add_flag("--denoise", o->denoise,
+                  "Also measure Accumulate and Reference through the mean denoiser, as the viewport shows them "
+                  "(rows 'accumulate+denoise'; default: off)");
     addPathBenchOptions(*cmd, o->path);
     const auto suite = bench::addRendererSuiteOptions(*cmd); // --suite renderer: app/bench/renderer_suite.h
     cmd->callback([&action, o, suite, cmd] {
