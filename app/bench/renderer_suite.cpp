@@ -125,12 +125,12 @@ Curves readCyclesCurves(const std::string& file) {
     if (!in) throw std::runtime_error(file + ": cannot open");
     Curves curves{{"Cycles CPU", {}}, {"Cycles CPU", {}}};
     std::string line;
-    std::getline(in, line); // header: samples,seconds,relmse,cpu_seconds
+    std::getline(in, line); // header: samples,seconds,relmse,cpu_seconds[,worst_share]
     while (std::getline(in, line)) {
         std::istringstream fields(line);
         std::string samples, seconds, error, cpuSeconds;
         if (!std::getline(fields, samples, ',') || !std::getline(fields, seconds, ',') || !std::getline(fields, error, ',') ||
-            !std::getline(fields, cpuSeconds))
+            !std::getline(fields, cpuSeconds, ',')) // a worst_share column may follow
             throw std::runtime_error(file + ": bad line '" + line + "'");
         const double relmse = std::stod(error);
         if (relmse <= 0.0) continue; // the reference itself

@@ -4,20 +4,26 @@ Usage (Blender 3.4 and python3-numpy from Debian, headless):
   blender -b --factory-startup --python app/bench/cycles/cornell_cycles.py -- \
       --scene resources/scenes/cornell_box/cornell_box.gltf --out OUT_DIR \
       [--size 512x512] [--bounces 4] [--samples 1,2,4,8,16,32,64] [--reference-samples 1024] \
-      [--threads 2] [--seed 0] [--materials imported|diffuse]
+      [--threads 2] [--seed 0] [--materials imported|diffuse] [--emission-sides gltf|both] \
+      [--reference-exr EXR]
 
 The scene comes in through Blender's own glTF importer with its default options (the light-unit
 convention Glint follows, docs/LIGHTS.md), so this also checks that Blender opens Glint's files.
 Settings match `glint render`: the same bounce limit for every kind of bounce, a 1-pixel box pixel
 filter, no denoiser, no adaptive sampling, no clamping, no light threshold, the 'Standard' view
 transform (the EXR holds linear scene radiance either way), black world (a glTF carries none).
+Emission follows Glint's sides (docs/LIGHTS.md): a single-sided glTF material (Blender's importer
+turns on backface culling for it, which Cycles ignores) emits from its front face only, a
+double-sided one from both; `--emission-sides both` keeps Cycles' two-sided mesh emission.
 
 Writes OUT_DIR/cycles_<N>spp.exr per sample count, OUT_DIR/cycles_reference.exr, and
-OUT_DIR/cycles_convergence.csv with columns samples,seconds,relmse,cpu_seconds: seconds is the wall time of
+OUT_DIR/cycles_convergence.csv with columns samples,seconds,relmse,cpu_seconds,worst_share: seconds is the wall time of
 bpy.ops.render.render (scene sync included; with persistent data that is a few ms), relmse against
 the reference (rendered with seed + 1) as docs/CLI.md defines it (mean over pixels and RGB of
 (x - r)^2 / (r^2 + 0.01)); cpu_seconds the process CPU time of all threads (the steadier figure on a
-shared machine); the last row is the reference itself.
+shared machine); worst_share the share of the relMSE held by the worst 0.1 % of pixels (fireflies
+put it there); the last row is the reference itself. `--reference-exr` judges against an existing
+reference (another seed's run of this script) instead of rendering one.
 """
 import numpy
 
@@ -42,6 +48,9 @@ def parse_args():
     p.add_argument("--reference-samples", type=int, default=1024)
     p.add_argument("--threads", type=int, default=2)
     p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--reference-exr", help="an existing reference (32-bit EXR of the same size) instead of rendering one")
+    p.add_argument("--emission-sides", choices=["gltf", "both"], default="gltf",
+                   help="gltf: single-sided materials emit from their front face only, as in Glint")
     p.add_argument("--materials", choices=["imported", "diffuse"], default="imported",
                    help="diffuse: replace each Principled BSDF by a Diffuse BSDF of its base colour "
                         "(emission kept), to separate the material model from light units")
@@ -75,6 +84,35 @@ def use_diffuse_materials():
             links.new(emission.outputs[0], add.inputs[1])
             for link in list(principled.outputs[0].links):
                 links.new(add.outputs[0], link.to_socket)
+
+
+def front_face_emission_only():
+    """Emission x (1 - Backfacing) for single-sided materials (glTF doubleSided false, which the
+    importer marks with use_backface_culling): the front face emits, the back face does not."""
+    for material in bpy.data.materials:
+        if not material.use_nodes or not material.use_backface_culling:
+            continue
+        nodes, links = material.node_tree.nodes, material.node_tree.links
+        for node in list(nodes):
+            if node.type == "BSDF_PRINCIPLED":
+                socket = node.inputs["Emission Strength"]
+            elif node.type == "EMISSION":
+                socket = node.inputs["Strength"]
+            else:
+                continue
+            geometry = nodes.new("ShaderNodeNewGeometry")
+            front = nodes.new("ShaderNodeMath")
+            front.operation = "SUBTRACT"
+            front.inputs[0].default_value = 1.0
+            links.new(geometry.outputs["Backfacing"], front.inputs[1])
+            strength = nodes.new("ShaderNodeMath")
+            strength.operation = "MULTIPLY"
+            if socket.is_linked:
+                links.new(socket.links[0].from_socket, strength.inputs[0])
+            else:
+                strength.inputs[0].default_value = socket.default_value
+            links.new(front.outputs[0], strength.inputs[1])
+            links.new(strength.outputs[0], socket)
 
 
 def configure(scene, args):
@@ -136,29 +174,45 @@ def rel_mse(image, reference):
     return float(numpy.mean((image - reference) ** 2 / (reference ** 2 + 0.01)))
 
 
+def worst_share(image, reference, fraction=0.001):
+    """Share of the relMSE sum held by the worst `fraction` of pixels (per pixel: mean over RGB)."""
+    per_pixel = numpy.sort(((image - reference) ** 2 / (reference ** 2 + 0.01)).mean(axis=1))[::-1]
+    count = max(1, int(fraction * per_pixel.size))
+    total = per_pixel.sum()
+    return float(per_pixel[:count].sum() / total) if total > 0 else 0.0
+
+
 def main():
     args = parse_args()
     os.makedirs(args.out, exist_ok=True)
     scene = import_scene(args.scene)
     if args.materials == "diffuse":
         use_diffuse_materials()
+    if args.emission_sides == "gltf":
+        front_face_emission_only()
     configure(scene, args)
     out = os.path.abspath(args.out)
     render(scene, 1, os.path.join(out, "cycles_warmup.exr"))  # first sync and BVH build: not timed
     counts = [int(s) for s in args.samples.split(",")]
     times = {n: render(scene, n, os.path.join(out, "cycles_%dspp.exr" % n)) for n in counts}
-    reference_path = os.path.join(out, "cycles_reference.exr")
-    scene.cycles.seed = args.seed + 1  # independent of the runs it judges
-    reference_seconds, reference_cpu = render(scene, args.reference_samples, reference_path)
+    if args.reference_exr:
+        reference_path, reference_seconds, reference_cpu = os.path.abspath(args.reference_exr), None, None
+    else:
+        reference_path = os.path.join(out, "cycles_reference.exr")
+        scene.cycles.seed = args.seed + 1  # independent of the runs it judges
+        reference_seconds, reference_cpu = render(scene, args.reference_samples, reference_path)
     reference = read_rgb(reference_path)
     with open(os.path.join(out, "cycles_convergence.csv"), "w") as csv:
-        csv.write("samples,seconds,relmse,cpu_seconds\n")
+        csv.write("samples,seconds,relmse,cpu_seconds,worst_share\n")
         for n in counts:
-            error = rel_mse(read_rgb(os.path.join(out, "cycles_%dspp.exr" % n)), reference)
-            csv.write("%d,%.6f,%.8g,%.6f\n" % (n, times[n][0], error, times[n][1]))
-            print("cycles: %5d spp  %9.3f s  (CPU %.3f s)  relMSE %.6g" % (n, times[n][0], times[n][1], error))
-        csv.write("%d,%.6f,0,%.6f\n" % (args.reference_samples, reference_seconds, reference_cpu))
-    print("cycles: reference %d spp  %.3f s  (CPU %.3f s)" % (args.reference_samples, reference_seconds, reference_cpu))
+            image = read_rgb(os.path.join(out, "cycles_%dspp.exr" % n))
+            error, share = rel_mse(image, reference), worst_share(image, reference)
+            csv.write("%d,%.6f,%.8g,%.6f,%.6f\n" % (n, times[n][0], error, times[n][1], share))
+            print("cycles: %5d spp  %9.3f s  (CPU %.3f s)  relMSE %.6g  worst 0.1%% share %.3f" % (n, times[n][0], times[n][1], error, share))
+        if reference_seconds is not None:
+            csv.write("%d,%.6f,0,%.6f,0\n" % (args.reference_samples, reference_seconds, reference_cpu))
+    if reference_seconds is not None:
+        print("cycles: reference %d spp  %.3f s  (CPU %.3f s)" % (args.reference_samples, reference_seconds, reference_cpu))
 
 
 main()
