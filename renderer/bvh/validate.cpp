@@ -149,4 +149,10 @@ std::optional<std::string> validateFlatScene(const FlatScene& scene)
     return checkTopLevel(scene);
 }
 
+std::optional<std::string> validateTopLevel(const FlatScene& scene)
+{
+    if (Problem problem = checkSizes(scene)) return problem;
+    return checkTopLevel(scene);
+}
+
 } // namespace glint::bvh

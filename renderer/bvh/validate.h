@@ -13,5 +13,8 @@ namespace glint::bvh {
 // too large, a level deeper than kStackSize, an instance with a bad kind or target, or buffer
 // lengths that disagree with each other.
 std::optional<std::string> validateFlatScene(const FlatScene& scene);
+// The same for the top level and the instances alone, after replaceTopLevel on a scene whose mesh
+// part was validated before (a transform edit: the mesh trees did not change).
+std::optional<std::string> validateTopLevel(const FlatScene& scene);
 
 } // namespace glint::bvh

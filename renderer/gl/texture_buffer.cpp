@@ -12,7 +12,7 @@ std::size_t maxTextureBufferTexels() {
 
 TextureBuffer::TextureBuffer(const std::string& what, GLenum format, const void* data, std::size_t texels,
                              std::size_t bytesPerTexel)
-    : buffer_(makeBuffer()), texture_(makeTexture()), texels_(texels) {
+    : buffer_(makeBuffer()), texture_(makeTexture()), texels_(texels), bytesPerTexel_(bytesPerTexel) {
     const std::size_t limit = maxTextureBufferTexels();
     if (texels > limit)
         throw std::runtime_error(what + " needs " + std::to_string(texels) + " texels in a texture buffer, but this GPU allows " +
@@ -25,6 +25,14 @@ TextureBuffer::TextureBuffer(const std::string& what, GLenum format, const void*
     glBindTexture(GL_TEXTURE_BUFFER, texture_.get());
     glTexBuffer(GL_TEXTURE_BUFFER, format, buffer_.get());
     glBindTexture(GL_TEXTURE_BUFFER, 0);
+    glBindBuffer(GL_TEXTURE_BUFFER, 0);
+}
+
+void TextureBuffer::update(std::size_t first, const void* data, std::size_t count) {
+    if (first + count > texels_ || first + count < first) throw std::logic_error("TextureBuffer::update: outside the buffer");
+    if (count == 0) return;
+    glBindBuffer(GL_TEXTURE_BUFFER, buffer_.get());
+    glBufferSubData(GL_TEXTURE_BUFFER, static_cast<GLintptr>(first * bytesPerTexel_), static_cast<GLsizeiptr>(count * bytesPerTexel_), data);
     glBindBuffer(GL_TEXTURE_BUFFER, 0);
 }
 

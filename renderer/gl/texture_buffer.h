@@ -14,6 +14,9 @@ public:
     // `format`: GL_RGBA32F, GL_RGBA32UI, GL_R32UI, ... ; `texels` of `bytesPerTexel` each.
     // Throws std::runtime_error naming `what` when the driver's limit is exceeded.
     TextureBuffer(const std::string& what, GLenum format, const void* data, std::size_t texels, std::size_t bytesPerTexel);
+    // Rewrites `count` texels from `first` on (glBufferSubData), keeping the buffer; the range must lie
+    // inside it (std::logic_error otherwise).
+    void update(std::size_t first, const void* data, std::size_t count);
     // Binds the buffer texture to `unit` and points the sampler uniform `location` at it.
     void bind(GLuint unit, GLint location) const;
     std::size_t texels() const { return texels_; }
@@ -22,6 +25,7 @@ private:
     Buffer buffer_;
     Texture texture_;
     std::size_t texels_ = 0;
+    std::size_t bytesPerTexel_ = 0;
 };
 
 std::size_t maxTextureBufferTexels();

@@ -21,8 +21,17 @@ gl::TextureBuffer upload(const char* what, GLenum format, const std::vector<T>& 
     return gl::TextureBuffer(what, format, texels.data(), texels.size(), sizeof(T));
 }
 
-void validate(const bvh::FlatScene& flat) {
-    if (const auto problem = bvh::validateFlatScene(flat)) throw std::runtime_error("invalid BVH: " + *problem);
+void checkTopLevel(const bvh::FlatScene& flat) {
+    if (const auto problem = bvh::validateTopLevel(flat)) throw std::runtime_error("invalid BVH: " + *problem);
+}
+
+// Rewrites the texels from `first` on where the buffer keeps its length, else uploads it anew.
+template <class T>
+void replaceTail(gl::TextureBuffer& buffer, const char* what, GLenum format, const std::vector<T>& texels, std::size_t first) {
+    if (buffer.texels() == texels.size() && first <= texels.size())
+        buffer.update(first, texels.data() + first, texels.size() - first);
+    else
+        buffer = upload(what, format, texels);
 }
 
 void checkSizes(const bvh::FlatScene& flat) {
@@ -52,16 +61,22 @@ GpuMeshes::~GpuMeshes() = default;
 
 void GpuMeshes::updateTransforms(const Scene& scene, const std::map<MaterialId, int>& materialIndex) {
     if (!buffers_) return;
+    const bool hadEmitters = !data_.lights.texels.empty();
     updateMeshTransforms(data_, scene, materialIndex);
-    validate(data_.flat);
+    // The mesh trees did not change (validated when they were prepared): only the top level is
+    // checked and rewritten, after the mesh nodes in the node buffers (glBufferSubData). Checking
+    // and re-sending every mesh node cost 100 ms per gizmo-drag frame on 1.1 M unique triangles.
+    checkTopLevel(data_.flat);
     checkSizes(data_.flat);
-    // The node buffers hold the mesh nodes too; re-sending them is a copy, not a BVH build.
     Buffers& b = *buffers_;
-    b.nodeBounds = upload("uBvhNodeBounds", GL_RGBA32F, data_.flat.nodeBounds);
-    b.nodeLinks = upload("uBvhNodeLinks", GL_RGBA32UI, data_.flat.nodeLinks);
-    b.instances = upload("uBvhInstances", GL_RGBA32UI, data_.flat.instances);
-    b.emissiveTriangles = upload("the emissive triangles", GL_RGBA32F, data_.lights.texels);
-    b.emissiveCdf = upload("the emissive CDF", GL_R32F, data_.lights.cdf);
+    const std::size_t meshNodes = data_.flat.meshNodeCount;
+    replaceTail(b.nodeBounds, "uBvhNodeBounds", GL_RGBA32F, data_.flat.nodeBounds, bvh::kNodeBoundsTexels * meshNodes);
+    replaceTail(b.nodeLinks, "uBvhNodeLinks", GL_RGBA32UI, data_.flat.nodeLinks, meshNodes);
+    replaceTail(b.instances, "uBvhInstances", GL_RGBA32UI, data_.flat.instances, 0);
+    if (hadEmitters || !data_.lights.texels.empty()) {
+        b.emissiveTriangles = upload("the emissive triangles", GL_RGBA32F, data_.lights.texels);
+        b.emissiveCdf = upload("the emissive CDF", GL_R32F, data_.lights.cdf);
+    }
     setCounts();
 }
 
