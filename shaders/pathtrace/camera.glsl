@@ -1,6 +1,7 @@
-// Primary rays: one sub-pixel jitter per sample from the R2 low-discrepancy sequence, rotated per
-// pixel (Cranley-Patterson) so neighbouring pixels do not share a pattern; a box pixel filter; a thin
-// lens for depth of field (sampling/warp.glsl). The independent sampler mode replaces R2 by plain hashed uniforms.
+// Primary rays: a sub-pixel position from the path's first draw (common/rng.glsl: in the
+// low-discrepancy stream, dimensions 0 and 1 of the pixel's Owen-scrambled Sobol' sequence, so the
+// first 2^k samples cover the pixel as a (0,k,2)-net), a box pixel filter, and a thin lens for depth
+// of field from the second draw (sampling/warp.glsl). uIndependentSampler picks the stream (main.frag.glsl).
 uniform mat4 uWorldFromCamera;
 uniform int uOrthographic;   // 0: perspective, 1: orthographic
 uniform vec2 uHalfExtent;    // tan(fov/2) per axis (perspective) or half extents in metres (orthographic)
@@ -9,21 +10,8 @@ uniform float uFocusDistance;
 uniform vec2 uResolution;
 uniform int uIndependentSampler;
 
-// R2 in 0.32 fixed point: exact for any sample index (floats would lose the fraction).
-vec2 r2Jitter(uint sampleIndex, uvec2 rotation) {
-    uvec2 point = uvec2(3242174889u, 2447445413u) * sampleIndex + rotation;
-    return vec2(unitFloatFromBits(point.x), unitFloatFromBits(point.y));
-}
-
-// The rotation is keyed on the pixel and seed only (sample index 0xffffffff is never rendered).
-vec2 pixelJitter(uvec2 pixel, uint sampleIndex, uint seed, INOUT(Rng) rng) {
-    if (uIndependentSampler != 0) return rand2(rng);
-    Rng pixelStream = rngStart(pixel, 0xffffffffu, seed);
-    return r2Jitter(sampleIndex, rngBits(pixelStream.key, 0u).xy);
-}
-
-Ray cameraRay(uvec2 pixel, uint sampleIndex, uint seed, INOUT(Rng) rng) {
-    vec2 film = (vec2(pixel) + pixelJitter(pixel, sampleIndex, seed, rng)) / uResolution * 2.0 - 1.0;
+Ray cameraRay(uvec2 pixel, INOUT(Rng) rng) {
+    vec2 film = (vec2(pixel) + rand2(rng)) / uResolution * 2.0 - 1.0;
     vec3 origin = vec3(0.0);
     vec3 direction = vec3(film * uHalfExtent, -1.0);
     if (uOrthographic != 0) {

@@ -41,8 +41,10 @@ out vec4 outSpecularRadiance;
 
 void main() {
     uvec2 pixel = uvec2(gl_FragCoord.xy);
-    Rng rng = rngStart(pixel, uSampleIndex, uSeed);
-    Ray ray = cameraRay(pixel, uSampleIndex, uSeed, rng);
+    // Owen-scrambled Sobol' points per pixel (common/rng.glsl); the independent sampler (statistical
+    // tests: every sample independent) hashes each draw.
+    Rng rng = uIndependentSampler != 0 ? rngStart(pixel, uSampleIndex, uSeed) : rngStartLowDiscrepancy(pixel, uSampleIndex, uSeed);
+    Ray ray = cameraRay(pixel, rng);
     LobeRadiance lobes = noLobeRadiance();
 #if defined(DEBUG_VIEW_BVH_COST)
     PathResult path = bvhCost(ray, cameraForward(), rng);

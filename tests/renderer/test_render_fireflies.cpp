@@ -4,7 +4,9 @@
 // few per cent of the relMSE in the worst 0.1 % of pixels; fireflies put it there (23 % when the
 // light's back face still emitted into the 0.1 mm gap under the ceiling: docs/PERFORMANCE.md,
 // "Fireflies"). Also checks that the image mean agrees with the reference (no bias) and bounds the
-// relMSE itself, so that a noisier estimator cannot pass by spreading its noise.
+// relMSE itself, so that a noisier estimator cannot pass by spreading its noise: within 1.2x of
+// Blender Cycles' at the same spp on the same file (0.0024, against its own converged image;
+// docs/PERFORMANCE.md, "Samplers"), which the former R2 + hashed sampler missed (0.0029-0.0030).
 #include "error_share.h"
 #include "render_scene.h"
 
@@ -23,7 +25,8 @@ class TestRenderFireflies : public QObject {
     Q_OBJECT
 private slots:
     // 128x128, 64 spp, 4 bounces, seeds 0 and 1 (each against the same reference): worst 0.1 % (16
-    // pixels) hold at most 10 % of the relMSE; relMSE below 0.0035; mean luminance within 1 %.
+    // pixels) hold at most 10 % of the relMSE (measured 3.9 % and 4.0 %); relMSE below 0.0029 (1.2 x
+    // 0.0024; measured 0.00195 and 0.00194); mean luminance within 1 %.
     void cornellBoxErrorIsSpread() {
         int width = 0, height = 0;
         const std::string file = std::string(GLINT_TEST_DATA_DIR) + "/renderer/cornell_box_128_4b.exr";
@@ -39,7 +42,7 @@ private slots:
             qInfo("%s", qPrintable(figures));
             QCOMPARE(e.worstPixels, std::size_t(16));
             QVERIFY2(e.worstShare <= 0.10, qPrintable(figures));
-            QVERIFY2(e.relMse < 0.0035, qPrintable(figures));
+            QVERIFY2(e.relMse < 0.0029, qPrintable(figures));
             QVERIFY2(std::abs(e.meanLuminance - e.referenceLuminance) < 0.01 * e.referenceLuminance, qPrintable(figures));
         }
     }
