@@ -124,6 +124,8 @@ public:
     void setDenoise(bool on);
     bool denoise() const { return denoise_; }
     FrameBudget& budget() { return budget_; }
+    // Sets the hint of a scene that nothing lights (stats().hint) again, in the language of the moment.
+    void noteLighting();
 
 signals:
     void paintRequested(); // the view should paint again
@@ -143,7 +145,6 @@ private:
     void finishPaint();
     void showPreparationProgress(renderer::PreparationStage stage, int done, int total);
     void reportRendererWarnings();
-    void noteLighting();
     void onDocumentChanged(const ChangeSet& changes);
     void onFileChanged();
 

@@ -238,4 +238,12 @@ void RenderView::focusOutEvent(QFocusEvent* event) {
     QOpenGLWidget::focusOutEvent(event);
 }
 
+void RenderView::changeEvent(QEvent* event) {
+    QOpenGLWidget::changeEvent(event);
+    if (event->type() != QEvent::LanguageChange) return;
+    host_.noteLighting();
+    emit statsChanged();
+    update();
+}
+
 } // namespace glint::editor

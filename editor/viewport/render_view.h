@@ -100,6 +100,7 @@ protected:
     void keyPressEvent(QKeyEvent* event) override;
     void keyReleaseEvent(QKeyEvent* event) override;
     void focusOutEvent(QFocusEvent* event) override;
+    void changeEvent(QEvent* event) override; // a language change: the hint and status texts follow
 
 private:
     void releaseGl();
