@@ -44,6 +44,10 @@
         <source>Choose a colour</source>
         <translation>Farbe wählen</translation>
     </message>
+    <message>
+        <source>%1 (sRGB); stored linear: %2, %3, %4</source>
+        <translation>%1 (sRGB); linear gespeichert: %2, %3, %4</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::CommandLabels</name>
@@ -145,6 +149,33 @@
     </message>
 </context>
 <context>
+    <name>glint::editor::Configurations</name>
+    <message>
+        <source>Baseline</source>
+        <translation>Baseline</translation>
+    </message>
+    <message>
+        <source>Realistic</source>
+        <translation>Realistic</translation>
+    </message>
+    <message>
+        <source>Full</source>
+        <translation>Full</translation>
+    </message>
+    <message>
+        <source>Heavy</source>
+        <translation>Heavy</translation>
+    </message>
+    <message>
+        <source>Accumulate</source>
+        <translation>Accumulate</translation>
+    </message>
+    <message>
+        <source>Reference</source>
+        <translation>Reference</translation>
+    </message>
+</context>
+<context>
     <name>glint::editor::Document</name>
     <message>
         <source>The scene has no file name yet: use Save As.</source>
@@ -184,6 +215,10 @@
     <message>
         <source>Reparent</source>
         <translation>Neu zuordnen</translation>
+    </message>
+    <message>
+        <source>Add %1</source>
+        <translation>%1 hinzufügen</translation>
     </message>
 </context>
 <context>
@@ -409,10 +444,6 @@
             <numerusform>%n Knoten ausgewählt</numerusform>
             <numerusform>%n Knoten ausgewählt</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>%1 nodes, %2 triangles, configuration: %3</source>
-        <translation>%1 Knoten, %2 Dreiecke, Konfiguration: %3</translation>
     </message>
     <message>
         <source>Selection</source>
@@ -692,6 +723,75 @@
         <source>This display gives no OpenGL 4.1 core context, so the editor opens without its viewport; `glint render` renders headless (EGL).</source>
         <translation>Diese Anzeige bietet keinen OpenGL-4.1-Core-Kontext, daher öffnet sich der Editor ohne Ansicht; `glint render` rendert ohne Anzeige (EGL).</translation>
     </message>
+    <message>
+        <source>%1, %2, configuration: %3</source>
+        <translation>%1, %2, Konfiguration: %3</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n nodes</source>
+        <translation>
+            <numerusform>%n Knoten</numerusform>
+            <numerusform>%n Knoten</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n triangles</source>
+        <translation>
+            <numerusform>%n Dreieck</numerusform>
+            <numerusform>%n Dreiecke</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::NodeNames</name>
+    <message>
+        <source>Sphere %1</source>
+        <translation>Kugel %1</translation>
+    </message>
+    <message>
+        <source>Quad %1</source>
+        <translation>Viereck %1</translation>
+    </message>
+    <message>
+        <source>Disk %1</source>
+        <translation>Scheibe %1</translation>
+    </message>
+    <message>
+        <source>Box %1</source>
+        <translation>Quader %1</translation>
+    </message>
+    <message>
+        <source>Cylinder %1</source>
+        <translation>Zylinder %1</translation>
+    </message>
+    <message>
+        <source>Ground plane %1</source>
+        <translation>Bodenebene %1</translation>
+    </message>
+    <message>
+        <source>Node %1</source>
+        <translation>Knoten %1</translation>
+    </message>
+    <message>
+        <source>Sun %1</source>
+        <translation>Sonne %1</translation>
+    </message>
+    <message>
+        <source>Point light %1</source>
+        <translation>Punktlicht %1</translation>
+    </message>
+    <message>
+        <source>Spot light %1</source>
+        <translation>Spotlicht %1</translation>
+    </message>
+    <message>
+        <source>Mesh %1</source>
+        <translation>Mesh %1</translation>
+    </message>
+    <message>
+        <source>Camera %1</source>
+        <translation>Kamera %1</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::OutlinerModel</name>
@@ -734,6 +834,10 @@
     <message>
         <source>Name</source>
         <translation>Name</translation>
+    </message>
+    <message>
+        <source>%1 (%2; the file gives it no name)</source>
+        <translation>%1 (%2; die Datei gibt ihm keinen Namen)</translation>
     </message>
 </context>
 <context>
@@ -899,6 +1003,26 @@
     <message>
         <source>%1 is used by both &quot;%2&quot; and &quot;%3&quot;.</source>
         <translation>%1 wird von &quot;%2&quot; und &quot;%3&quot; verwendet.</translation>
+    </message>
+    <message>
+        <source>No limit</source>
+        <translation>Keine Grenze</translation>
+    </message>
+    <message>
+        <source>Viewport samples</source>
+        <translation>Samples der Ansicht</translation>
+    </message>
+    <message>
+        <source>The viewport stops adding samples per pixel here (renders use the Scene panel&apos;s samples)</source>
+        <translation>Die Ansicht hört hier auf, Samples pro Pixel hinzuzufügen (Renderings verwenden die Samples des Szene-Panels)</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Standard</translation>
+    </message>
+    <message>
+        <source>Reset all to defaults</source>
+        <translation>Alle auf Standard zurücksetzen</translation>
     </message>
 </context>
 <context>
@@ -1404,30 +1528,30 @@
     </message>
 </context>
 <context>
-    <name>glint::editor::RenderView</name>
-    <message>
-        <source>Viewport</source>
-        <translation>Ansicht</translation>
-    </message>
+    <name>glint::editor::RenderHost</name>
     <message>
         <source>Preparing the scene</source>
         <translation>Szene wird vorbereitet</translation>
     </message>
     <message>
         <source>building mesh BVHs</source>
-        <translation>Mesh-BVHs werden gebaut</translation>
+        <translation>erstelle Mesh-BVHs</translation>
     </message>
     <message>
         <source>decoding textures</source>
-        <translation>Texturen werden dekodiert</translation>
+        <translation>dekodiere Texturen</translation>
     </message>
     <message>
         <source>loading the environment</source>
-        <translation>Umgebung wird geladen</translation>
+        <translation>lade die Umgebung</translation>
     </message>
     <message>
         <source>packing the scene</source>
-        <translation>Szene wird gepackt</translation>
+        <translation>packe die Szene</translation>
+    </message>
+    <message>
+        <source>building the click picker</source>
+        <translation>erstelle die Klickauswahl</translation>
     </message>
     <message>
         <source>Preparing the scene: %1 %2/%3</source>
@@ -1436,6 +1560,17 @@
     <message>
         <source>Preparing the scene: %1</source>
         <translation>Szene wird vorbereitet: %1</translation>
+    </message>
+    <message>
+        <source>Nothing in the scene emits light, so the path-traced image is black: add a light or an emissive material, or give the environment a colour or an image (Scene tab).</source>
+        <translation>Nichts in der Szene strahlt Licht aus, daher ist das Pathtracing-Bild schwarz: Fügen Sie ein Licht oder ein emittierendes Material hinzu oder geben Sie der Umgebung eine Farbe oder ein Bild (Reiter Szene).</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::RenderView</name>
+    <message>
+        <source>Viewport</source>
+        <translation>Ansicht</translation>
     </message>
     <message>
         <source>A</source>
@@ -1450,14 +1585,6 @@
 R %3  G %4  B %5 (linear)</source>
         <translation>Pixel %1, %2
 R %3  G %4  B %5 (linear)</translation>
-    </message>
-    <message>
-        <source>building the click picker</source>
-        <translation>erstelle die Klickauswahl</translation>
-    </message>
-    <message>
-        <source>Nothing in the scene emits light, so the path-traced image is black: add a light or an emissive material, or give the environment a colour or an image (Scene tab).</source>
-        <translation>Nichts in der Szene strahlt Licht aus, daher ist das Pathtracing-Bild schwarz: Fügen Sie ein Licht oder ein emittierendes Material hinzu oder geben Sie der Umgebung eine Farbe oder ein Bild (Reiter Szene).</translation>
     </message>
 </context>
 <context>
@@ -1557,7 +1684,7 @@ R %3  G %4  B %5 (linear)</translation>
     </message>
     <message>
         <source>Solid</source>
-        <translation>Volumen</translation>
+        <translation>Solid</translation>
     </message>
     <message>
         <source>Wireframe</source>
@@ -1668,12 +1795,48 @@ R %3  G %4  B %5 (linear)</translation>
         <translation>Klicken Sie auf die Oberfläche, auf die fokussiert werden soll (Esc bricht ab).</translation>
     </message>
     <message>
-        <source>%1 spp  |  %2 ms/frame  |  1/%3 resolution%4</source>
-        <translation>%1 spp  |  %2 ms/Bild  |  1/%3 Auflösung%4</translation>
+        <source>Pause viewport rendering</source>
+        <translation>Rendern der Ansicht anhalten</translation>
     </message>
     <message>
-        <source>  |  paused</source>
-        <translation>  |  angehalten</translation>
+        <source>Stop adding samples; edits are still shown at full resolution</source>
+        <translation>Keine Samples mehr hinzufügen; Änderungen werden weiterhin in voller Auflösung gezeigt</translation>
+    </message>
+    <message>
+        <source>Denoise still image</source>
+        <translation>Standbild entrauschen</translation>
+    </message>
+    <message>
+        <source>Filter the accumulated image while it converges (off: the raw running mean; renders are never filtered)</source>
+        <translation>Das akkumulierte Bild filtern, während es konvergiert (aus: der rohe laufende Mittelwert; Renderings werden nie gefiltert)</translation>
+    </message>
+    <message>
+        <source>coarse (1/%1 resolution)</source>
+        <translation>grob (1/%1 Auflösung)</translation>
+    </message>
+    <message>
+        <source>refining to full resolution: %1%</source>
+        <translation>Verfeinerung auf volle Auflösung: %1%</translation>
+    </message>
+    <message>
+        <source>%1 / %2 spp</source>
+        <translation>%1 / %2 spp</translation>
+    </message>
+    <message>
+        <source>%1 spp</source>
+        <translation>%1 spp</translation>
+    </message>
+    <message>
+        <source>%1 spp, converged (viewport sample cap)</source>
+        <translation>%1 spp, konvergiert (Sample-Grenze der Ansicht)</translation>
+    </message>
+    <message>
+        <source>%1 spp, paused</source>
+        <translation>%1 spp, angehalten</translation>
+    </message>
+    <message>
+        <source>%1  |  %2 ms/frame</source>
+        <translation>%1  |  %2 ms/Bild</translation>
     </message>
 </context>
 </TS>

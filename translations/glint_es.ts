@@ -44,6 +44,10 @@
         <source>Choose a colour</source>
         <translation>Elegir un color</translation>
     </message>
+    <message>
+        <source>%1 (sRGB); stored linear: %2, %3, %4</source>
+        <translation>%1 (sRGB); guardado en lineal: %2, %3, %4</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::CommandLabels</name>
@@ -145,6 +149,33 @@
     </message>
 </context>
 <context>
+    <name>glint::editor::Configurations</name>
+    <message>
+        <source>Baseline</source>
+        <translation>Baseline</translation>
+    </message>
+    <message>
+        <source>Realistic</source>
+        <translation>Realistic</translation>
+    </message>
+    <message>
+        <source>Full</source>
+        <translation>Full</translation>
+    </message>
+    <message>
+        <source>Heavy</source>
+        <translation>Heavy</translation>
+    </message>
+    <message>
+        <source>Accumulate</source>
+        <translation>Accumulate</translation>
+    </message>
+    <message>
+        <source>Reference</source>
+        <translation>Reference</translation>
+    </message>
+</context>
+<context>
     <name>glint::editor::Document</name>
     <message>
         <source>The scene has no file name yet: use Save As.</source>
@@ -184,6 +215,10 @@
     <message>
         <source>Reparent</source>
         <translation>Cambiar padre</translation>
+    </message>
+    <message>
+        <source>Add %1</source>
+        <translation>Añadir %1</translation>
     </message>
 </context>
 <context>
@@ -409,10 +444,6 @@
             <numerusform>%n nodo seleccionado</numerusform>
             <numerusform>%n nodos seleccionados</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>%1 nodes, %2 triangles, configuration: %3</source>
-        <translation>%1 nodos, %2 triángulos, configuración: %3</translation>
     </message>
     <message>
         <source>Selection</source>
@@ -692,6 +723,75 @@
         <source>This display gives no OpenGL 4.1 core context, so the editor opens without its viewport; `glint render` renders headless (EGL).</source>
         <translation>Esta pantalla no ofrece un contexto OpenGL 4.1 core, así que el editor se abre sin su vista; `glint render` renderiza sin pantalla (EGL).</translation>
     </message>
+    <message>
+        <source>%1, %2, configuration: %3</source>
+        <translation>%1, %2, configuración: %3</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n nodes</source>
+        <translation>
+            <numerusform>%n nodo</numerusform>
+            <numerusform>%n nodos</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n triangles</source>
+        <translation>
+            <numerusform>%n triángulo</numerusform>
+            <numerusform>%n triángulos</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::NodeNames</name>
+    <message>
+        <source>Sphere %1</source>
+        <translation>Esfera %1</translation>
+    </message>
+    <message>
+        <source>Quad %1</source>
+        <translation>Quad %1</translation>
+    </message>
+    <message>
+        <source>Disk %1</source>
+        <translation>Disco %1</translation>
+    </message>
+    <message>
+        <source>Box %1</source>
+        <translation>Caja %1</translation>
+    </message>
+    <message>
+        <source>Cylinder %1</source>
+        <translation>Cilindro %1</translation>
+    </message>
+    <message>
+        <source>Ground plane %1</source>
+        <translation>Plano del suelo %1</translation>
+    </message>
+    <message>
+        <source>Node %1</source>
+        <translation>Nodo %1</translation>
+    </message>
+    <message>
+        <source>Sun %1</source>
+        <translation>Sol %1</translation>
+    </message>
+    <message>
+        <source>Point light %1</source>
+        <translation>Luz puntual %1</translation>
+    </message>
+    <message>
+        <source>Spot light %1</source>
+        <translation>Foco %1</translation>
+    </message>
+    <message>
+        <source>Mesh %1</source>
+        <translation>Malla %1</translation>
+    </message>
+    <message>
+        <source>Camera %1</source>
+        <translation>Cámara %1</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::OutlinerModel</name>
@@ -734,6 +834,10 @@
     <message>
         <source>Name</source>
         <translation>Nombre</translation>
+    </message>
+    <message>
+        <source>%1 (%2; the file gives it no name)</source>
+        <translation>%1 (%2; el archivo no le da nombre)</translation>
     </message>
 </context>
 <context>
@@ -899,6 +1003,26 @@
     <message>
         <source>%1 is used by both &quot;%2&quot; and &quot;%3&quot;.</source>
         <translation>%1 lo usan tanto &quot;%2&quot; como &quot;%3&quot;.</translation>
+    </message>
+    <message>
+        <source>No limit</source>
+        <translation>Sin límite</translation>
+    </message>
+    <message>
+        <source>Viewport samples</source>
+        <translation>Muestras de la vista</translation>
+    </message>
+    <message>
+        <source>The viewport stops adding samples per pixel here (renders use the Scene panel&apos;s samples)</source>
+        <translation>La vista deja de añadir muestras por píxel aquí (los renders usan las muestras del panel Escena)</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Predeterminado</translation>
+    </message>
+    <message>
+        <source>Reset all to defaults</source>
+        <translation>Restablecer todo a lo predeterminado</translation>
     </message>
 </context>
 <context>
@@ -1404,11 +1528,7 @@
     </message>
 </context>
 <context>
-    <name>glint::editor::RenderView</name>
-    <message>
-        <source>Viewport</source>
-        <translation>Vista</translation>
-    </message>
+    <name>glint::editor::RenderHost</name>
     <message>
         <source>Preparing the scene</source>
         <translation>Preparando la escena</translation>
@@ -1419,7 +1539,7 @@
     </message>
     <message>
         <source>decoding textures</source>
-        <translation>decodificando las texturas</translation>
+        <translation>decodificando texturas</translation>
     </message>
     <message>
         <source>loading the environment</source>
@@ -1430,12 +1550,27 @@
         <translation>empaquetando la escena</translation>
     </message>
     <message>
+        <source>building the click picker</source>
+        <translation>construyendo el selector de clic</translation>
+    </message>
+    <message>
         <source>Preparing the scene: %1 %2/%3</source>
         <translation>Preparando la escena: %1 %2/%3</translation>
     </message>
     <message>
         <source>Preparing the scene: %1</source>
         <translation>Preparando la escena: %1</translation>
+    </message>
+    <message>
+        <source>Nothing in the scene emits light, so the path-traced image is black: add a light or an emissive material, or give the environment a colour or an image (Scene tab).</source>
+        <translation>Nada en la escena emite luz, así que la imagen trazada es negra: añade una luz o un material emisivo, o da al entorno un color o una imagen (pestaña Escena).</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::RenderView</name>
+    <message>
+        <source>Viewport</source>
+        <translation>Vista</translation>
     </message>
     <message>
         <source>A</source>
@@ -1450,14 +1585,6 @@
 R %3  G %4  B %5 (linear)</source>
         <translation>Píxel %1, %2
 R %3  G %4  B %5 (lineal)</translation>
-    </message>
-    <message>
-        <source>building the click picker</source>
-        <translation>construyendo el selector de clic</translation>
-    </message>
-    <message>
-        <source>Nothing in the scene emits light, so the path-traced image is black: add a light or an emissive material, or give the environment a colour or an image (Scene tab).</source>
-        <translation>Nada en la escena emite luz, así que la imagen trazada es negra: añade una luz o un material emisivo, o da al entorno un color o una imagen (pestaña Escena).</translation>
     </message>
 </context>
 <context>
@@ -1561,7 +1688,7 @@ R %3  G %4  B %5 (lineal)</translation>
     </message>
     <message>
         <source>Wireframe</source>
-        <translation>Alambre</translation>
+        <translation>Estructura de alambre</translation>
     </message>
     <message>
         <source>Normals</source>
@@ -1668,12 +1795,48 @@ R %3  G %4  B %5 (lineal)</translation>
         <translation>Haz clic en la superficie que quieres enfocar (Esc cancela).</translation>
     </message>
     <message>
-        <source>%1 spp  |  %2 ms/frame  |  1/%3 resolution%4</source>
-        <translation>%1 spp  |  %2 ms/fotograma  |  resolución 1/%3%4</translation>
+        <source>Pause viewport rendering</source>
+        <translation>Pausar el render de la vista</translation>
     </message>
     <message>
-        <source>  |  paused</source>
-        <translation>  |  en pausa</translation>
+        <source>Stop adding samples; edits are still shown at full resolution</source>
+        <translation>Deja de añadir muestras; las ediciones se siguen mostrando a resolución completa</translation>
+    </message>
+    <message>
+        <source>Denoise still image</source>
+        <translation>Eliminar ruido de la imagen fija</translation>
+    </message>
+    <message>
+        <source>Filter the accumulated image while it converges (off: the raw running mean; renders are never filtered)</source>
+        <translation>Filtrar la imagen acumulada mientras converge (desactivado: la media sin filtrar; los renders nunca se filtran)</translation>
+    </message>
+    <message>
+        <source>coarse (1/%1 resolution)</source>
+        <translation>aproximada (resolución 1/%1)</translation>
+    </message>
+    <message>
+        <source>refining to full resolution: %1%</source>
+        <translation>refinando a resolución completa: %1%</translation>
+    </message>
+    <message>
+        <source>%1 / %2 spp</source>
+        <translation>%1 / %2 spp</translation>
+    </message>
+    <message>
+        <source>%1 spp</source>
+        <translation>%1 spp</translation>
+    </message>
+    <message>
+        <source>%1 spp, converged (viewport sample cap)</source>
+        <translation>%1 spp, convergida (límite de muestras de la vista)</translation>
+    </message>
+    <message>
+        <source>%1 spp, paused</source>
+        <translation>%1 spp, en pausa</translation>
+    </message>
+    <message>
+        <source>%1  |  %2 ms/frame</source>
+        <translation>%1  |  %2 ms/fotograma</translation>
     </message>
 </context>
 </TS>

@@ -44,6 +44,10 @@
         <source>Choose a colour</source>
         <translation>Choisir une couleur</translation>
     </message>
+    <message>
+        <source>%1 (sRGB); stored linear: %2, %3, %4</source>
+        <translation>%1 (sRGB) ; stocké en linéaire : %2, %3, %4</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::CommandLabels</name>
@@ -145,6 +149,33 @@
     </message>
 </context>
 <context>
+    <name>glint::editor::Configurations</name>
+    <message>
+        <source>Baseline</source>
+        <translation>Baseline</translation>
+    </message>
+    <message>
+        <source>Realistic</source>
+        <translation>Realistic</translation>
+    </message>
+    <message>
+        <source>Full</source>
+        <translation>Full</translation>
+    </message>
+    <message>
+        <source>Heavy</source>
+        <translation>Heavy</translation>
+    </message>
+    <message>
+        <source>Accumulate</source>
+        <translation>Accumulate</translation>
+    </message>
+    <message>
+        <source>Reference</source>
+        <translation>Reference</translation>
+    </message>
+</context>
+<context>
     <name>glint::editor::Document</name>
     <message>
         <source>The scene has no file name yet: use Save As.</source>
@@ -184,6 +215,10 @@
     <message>
         <source>Reparent</source>
         <translation>Changer de parent</translation>
+    </message>
+    <message>
+        <source>Add %1</source>
+        <translation>Ajouter %1</translation>
     </message>
 </context>
 <context>
@@ -409,10 +444,6 @@
             <numerusform>%n nœud sélectionné</numerusform>
             <numerusform>%n nœuds sélectionnés</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>%1 nodes, %2 triangles, configuration: %3</source>
-        <translation>%1 nœuds, %2 triangles, configuration : %3</translation>
     </message>
     <message>
         <source>Selection</source>
@@ -692,6 +723,75 @@
         <source>This display gives no OpenGL 4.1 core context, so the editor opens without its viewport; `glint render` renders headless (EGL).</source>
         <translation>Cet affichage ne fournit pas de contexte OpenGL 4.1 core : l&apos;éditeur s&apos;ouvre donc sans sa vue ; `glint render` effectue le rendu sans affichage (EGL).</translation>
     </message>
+    <message>
+        <source>%1, %2, configuration: %3</source>
+        <translation>%1, %2, configuration : %3</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n nodes</source>
+        <translation>
+            <numerusform>%n nœud</numerusform>
+            <numerusform>%n nœuds</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n triangles</source>
+        <translation>
+            <numerusform>%n triangle</numerusform>
+            <numerusform>%n triangles</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::NodeNames</name>
+    <message>
+        <source>Sphere %1</source>
+        <translation>Sphère %1</translation>
+    </message>
+    <message>
+        <source>Quad %1</source>
+        <translation>Quad %1</translation>
+    </message>
+    <message>
+        <source>Disk %1</source>
+        <translation>Disque %1</translation>
+    </message>
+    <message>
+        <source>Box %1</source>
+        <translation>Boîte %1</translation>
+    </message>
+    <message>
+        <source>Cylinder %1</source>
+        <translation>Cylindre %1</translation>
+    </message>
+    <message>
+        <source>Ground plane %1</source>
+        <translation>Plan du sol %1</translation>
+    </message>
+    <message>
+        <source>Node %1</source>
+        <translation>Nœud %1</translation>
+    </message>
+    <message>
+        <source>Sun %1</source>
+        <translation>Soleil %1</translation>
+    </message>
+    <message>
+        <source>Point light %1</source>
+        <translation>Lumière ponctuelle %1</translation>
+    </message>
+    <message>
+        <source>Spot light %1</source>
+        <translation>Projecteur %1</translation>
+    </message>
+    <message>
+        <source>Mesh %1</source>
+        <translation>Maillage %1</translation>
+    </message>
+    <message>
+        <source>Camera %1</source>
+        <translation>Caméra %1</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::OutlinerModel</name>
@@ -734,6 +834,10 @@
     <message>
         <source>Name</source>
         <translation>Nom</translation>
+    </message>
+    <message>
+        <source>%1 (%2; the file gives it no name)</source>
+        <translation>%1 (%2 ; le fichier ne lui donne pas de nom)</translation>
     </message>
 </context>
 <context>
@@ -899,6 +1003,26 @@
     <message>
         <source>%1 is used by both &quot;%2&quot; and &quot;%3&quot;.</source>
         <translation>%1 est utilisé par « %2 » et « %3 ».</translation>
+    </message>
+    <message>
+        <source>No limit</source>
+        <translation>Aucune limite</translation>
+    </message>
+    <message>
+        <source>Viewport samples</source>
+        <translation>Échantillons de la vue</translation>
+    </message>
+    <message>
+        <source>The viewport stops adding samples per pixel here (renders use the Scene panel&apos;s samples)</source>
+        <translation>La vue cesse d&apos;ajouter des échantillons par pixel ici (les rendus utilisent les échantillons du panneau Scène)</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Par défaut</translation>
+    </message>
+    <message>
+        <source>Reset all to defaults</source>
+        <translation>Tout réinitialiser par défaut</translation>
     </message>
 </context>
 <context>
@@ -1404,11 +1528,7 @@
     </message>
 </context>
 <context>
-    <name>glint::editor::RenderView</name>
-    <message>
-        <source>Viewport</source>
-        <translation>Vue</translation>
-    </message>
+    <name>glint::editor::RenderHost</name>
     <message>
         <source>Preparing the scene</source>
         <translation>Préparation de la scène</translation>
@@ -1430,12 +1550,27 @@
         <translation>empaquetage de la scène</translation>
     </message>
     <message>
+        <source>building the click picker</source>
+        <translation>construction du sélecteur de clic</translation>
+    </message>
+    <message>
         <source>Preparing the scene: %1 %2/%3</source>
         <translation>Préparation de la scène : %1 %2/%3</translation>
     </message>
     <message>
         <source>Preparing the scene: %1</source>
         <translation>Préparation de la scène : %1</translation>
+    </message>
+    <message>
+        <source>Nothing in the scene emits light, so the path-traced image is black: add a light or an emissive material, or give the environment a colour or an image (Scene tab).</source>
+        <translation>Rien dans la scène n&apos;émet de lumière, l&apos;image en path tracing est donc noire : ajoutez une lumière ou un matériau émissif, ou donnez à l&apos;environnement une couleur ou une image (onglet Scène).</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::RenderView</name>
+    <message>
+        <source>Viewport</source>
+        <translation>Vue</translation>
     </message>
     <message>
         <source>A</source>
@@ -1450,14 +1585,6 @@
 R %3  G %4  B %5 (linear)</source>
         <translation>Pixel %1, %2
 R %3  V %4  B %5 (linéaire)</translation>
-    </message>
-    <message>
-        <source>building the click picker</source>
-        <translation>construction du sélecteur de clic</translation>
-    </message>
-    <message>
-        <source>Nothing in the scene emits light, so the path-traced image is black: add a light or an emissive material, or give the environment a colour or an image (Scene tab).</source>
-        <translation>Rien dans la scène n&apos;émet de lumière, l&apos;image en path tracing est donc noire : ajoutez une lumière ou un matériau émissif, ou donnez à l&apos;environnement une couleur ou une image (onglet Scène).</translation>
     </message>
 </context>
 <context>
@@ -1668,12 +1795,48 @@ R %3  V %4  B %5 (linéaire)</translation>
         <translation>Cliquez sur la surface à mettre au point (Échap annule).</translation>
     </message>
     <message>
-        <source>%1 spp  |  %2 ms/frame  |  1/%3 resolution%4</source>
-        <translation>%1 spp  |  %2 ms/image  |  résolution 1/%3%4</translation>
+        <source>Pause viewport rendering</source>
+        <translation>Mettre en pause le rendu de la vue</translation>
     </message>
     <message>
-        <source>  |  paused</source>
-        <translation>  |  en pause</translation>
+        <source>Stop adding samples; edits are still shown at full resolution</source>
+        <translation>Cesse d&apos;ajouter des échantillons ; les modifications restent affichées en pleine résolution</translation>
+    </message>
+    <message>
+        <source>Denoise still image</source>
+        <translation>Débruiter l&apos;image fixe</translation>
+    </message>
+    <message>
+        <source>Filter the accumulated image while it converges (off: the raw running mean; renders are never filtered)</source>
+        <translation>Filtrer l&apos;image accumulée pendant qu&apos;elle converge (désactivé : la moyenne brute ; les rendus ne sont jamais filtrés)</translation>
+    </message>
+    <message>
+        <source>coarse (1/%1 resolution)</source>
+        <translation>grossier (résolution 1/%1)</translation>
+    </message>
+    <message>
+        <source>refining to full resolution: %1%</source>
+        <translation>affinage en pleine résolution : %1%</translation>
+    </message>
+    <message>
+        <source>%1 / %2 spp</source>
+        <translation>%1 / %2 spp</translation>
+    </message>
+    <message>
+        <source>%1 spp</source>
+        <translation>%1 spp</translation>
+    </message>
+    <message>
+        <source>%1 spp, converged (viewport sample cap)</source>
+        <translation>%1 spp, convergée (limite d&apos;échantillons de la vue)</translation>
+    </message>
+    <message>
+        <source>%1 spp, paused</source>
+        <translation>%1 spp, en pause</translation>
+    </message>
+    <message>
+        <source>%1  |  %2 ms/frame</source>
+        <translation>%1  |  %2 ms/image</translation>
     </message>
 </context>
 </TS>

@@ -44,6 +44,10 @@
         <source>Choose a colour</source>
         <translation>Scegli un colore</translation>
     </message>
+    <message>
+        <source>%1 (sRGB); stored linear: %2, %3, %4</source>
+        <translation>%1 (sRGB); valore lineare salvato: %2, %3, %4</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::CommandLabels</name>
@@ -145,6 +149,33 @@
     </message>
 </context>
 <context>
+    <name>glint::editor::Configurations</name>
+    <message>
+        <source>Baseline</source>
+        <translation>Baseline</translation>
+    </message>
+    <message>
+        <source>Realistic</source>
+        <translation>Realistic</translation>
+    </message>
+    <message>
+        <source>Full</source>
+        <translation>Full</translation>
+    </message>
+    <message>
+        <source>Heavy</source>
+        <translation>Heavy</translation>
+    </message>
+    <message>
+        <source>Accumulate</source>
+        <translation>Accumulate</translation>
+    </message>
+    <message>
+        <source>Reference</source>
+        <translation>Reference</translation>
+    </message>
+</context>
+<context>
     <name>glint::editor::Document</name>
     <message>
         <source>The scene has no file name yet: use Save As.</source>
@@ -184,6 +215,10 @@
     <message>
         <source>Reparent</source>
         <translation>Cambia genitore</translation>
+    </message>
+    <message>
+        <source>Add %1</source>
+        <translation>Aggiungi %1</translation>
     </message>
 </context>
 <context>
@@ -409,10 +444,6 @@
             <numerusform>%n nodo selezionato</numerusform>
             <numerusform>%n nodi selezionati</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>%1 nodes, %2 triangles, configuration: %3</source>
-        <translation>%1 nodi, %2 triangoli, configurazione: %3</translation>
     </message>
     <message>
         <source>Selection</source>
@@ -692,6 +723,75 @@
         <source>This display gives no OpenGL 4.1 core context, so the editor opens without its viewport; `glint render` renders headless (EGL).</source>
         <translation>Questo display non offre un contesto OpenGL 4.1 core, perciò l&apos;editor si apre senza la vista; `glint render` esegue il rendering senza display (EGL).</translation>
     </message>
+    <message>
+        <source>%1, %2, configuration: %3</source>
+        <translation>%1, %2, configurazione: %3</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n nodes</source>
+        <translation>
+            <numerusform>%n nodo</numerusform>
+            <numerusform>%n nodi</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n triangles</source>
+        <translation>
+            <numerusform>%n triangolo</numerusform>
+            <numerusform>%n triangoli</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::NodeNames</name>
+    <message>
+        <source>Sphere %1</source>
+        <translation>Sfera %1</translation>
+    </message>
+    <message>
+        <source>Quad %1</source>
+        <translation>Quad %1</translation>
+    </message>
+    <message>
+        <source>Disk %1</source>
+        <translation>Disco %1</translation>
+    </message>
+    <message>
+        <source>Box %1</source>
+        <translation>Cubo %1</translation>
+    </message>
+    <message>
+        <source>Cylinder %1</source>
+        <translation>Cilindro %1</translation>
+    </message>
+    <message>
+        <source>Ground plane %1</source>
+        <translation>Piano del terreno %1</translation>
+    </message>
+    <message>
+        <source>Node %1</source>
+        <translation>Nodo %1</translation>
+    </message>
+    <message>
+        <source>Sun %1</source>
+        <translation>Sole %1</translation>
+    </message>
+    <message>
+        <source>Point light %1</source>
+        <translation>Luce puntiforme %1</translation>
+    </message>
+    <message>
+        <source>Spot light %1</source>
+        <translation>Faretto %1</translation>
+    </message>
+    <message>
+        <source>Mesh %1</source>
+        <translation>Mesh %1</translation>
+    </message>
+    <message>
+        <source>Camera %1</source>
+        <translation>Camera %1</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::OutlinerModel</name>
@@ -734,6 +834,10 @@
     <message>
         <source>Name</source>
         <translation>Nome</translation>
+    </message>
+    <message>
+        <source>%1 (%2; the file gives it no name)</source>
+        <translation>%1 (%2; il file non gli dà un nome)</translation>
     </message>
 </context>
 <context>
@@ -899,6 +1003,26 @@
     <message>
         <source>%1 is used by both &quot;%2&quot; and &quot;%3&quot;.</source>
         <translation>%1 è usata sia da &quot;%2&quot; sia da &quot;%3&quot;.</translation>
+    </message>
+    <message>
+        <source>No limit</source>
+        <translation>Nessun limite</translation>
+    </message>
+    <message>
+        <source>Viewport samples</source>
+        <translation>Campioni della vista</translation>
+    </message>
+    <message>
+        <source>The viewport stops adding samples per pixel here (renders use the Scene panel&apos;s samples)</source>
+        <translation>La vista smette di aggiungere campioni per pixel qui (i render usano i campioni del pannello Scena)</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Predefinita</translation>
+    </message>
+    <message>
+        <source>Reset all to defaults</source>
+        <translation>Ripristina tutte le predefinite</translation>
     </message>
 </context>
 <context>
@@ -1404,11 +1528,7 @@
     </message>
 </context>
 <context>
-    <name>glint::editor::RenderView</name>
-    <message>
-        <source>Viewport</source>
-        <translation>Vista</translation>
-    </message>
+    <name>glint::editor::RenderHost</name>
     <message>
         <source>Preparing the scene</source>
         <translation>Preparazione della scena</translation>
@@ -1430,12 +1550,27 @@
         <translation>impacchettamento della scena</translation>
     </message>
     <message>
+        <source>building the click picker</source>
+        <translation>costruzione del selettore per clic</translation>
+    </message>
+    <message>
         <source>Preparing the scene: %1 %2/%3</source>
         <translation>Preparazione della scena: %1 %2/%3</translation>
     </message>
     <message>
         <source>Preparing the scene: %1</source>
         <translation>Preparazione della scena: %1</translation>
+    </message>
+    <message>
+        <source>Nothing in the scene emits light, so the path-traced image is black: add a light or an emissive material, or give the environment a colour or an image (Scene tab).</source>
+        <translation>Nella scena nulla emette luce, perciò l&apos;immagine path-traced è nera: aggiungi una luce o un materiale emissivo, oppure dai all&apos;ambiente un colore o un&apos;immagine (scheda Scena).</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::RenderView</name>
+    <message>
+        <source>Viewport</source>
+        <translation>Vista</translation>
     </message>
     <message>
         <source>A</source>
@@ -1450,14 +1585,6 @@
 R %3  G %4  B %5 (linear)</source>
         <translation>Pixel %1, %2
 R %3  G %4  B %5 (lineare)</translation>
-    </message>
-    <message>
-        <source>building the click picker</source>
-        <translation>costruzione del selettore per clic</translation>
-    </message>
-    <message>
-        <source>Nothing in the scene emits light, so the path-traced image is black: add a light or an emissive material, or give the environment a colour or an image (Scene tab).</source>
-        <translation>Nella scena nulla emette luce, perciò l&apos;immagine path-traced è nera: aggiungi una luce o un materiale emissivo, oppure dai all&apos;ambiente un colore o un&apos;immagine (scheda Scena).</translation>
     </message>
 </context>
 <context>
@@ -1668,12 +1795,48 @@ R %3  G %4  B %5 (lineare)</translation>
         <translation>Fai clic sulla superficie da mettere a fuoco (Esc annulla).</translation>
     </message>
     <message>
-        <source>%1 spp  |  %2 ms/frame  |  1/%3 resolution%4</source>
-        <translation>%1 spp  |  %2 ms/fotogramma  |  risoluzione 1/%3%4</translation>
+        <source>Pause viewport rendering</source>
+        <translation>Metti in pausa il rendering della vista</translation>
     </message>
     <message>
-        <source>  |  paused</source>
-        <translation>  |  in pausa</translation>
+        <source>Stop adding samples; edits are still shown at full resolution</source>
+        <translation>Smette di aggiungere campioni; le modifiche sono comunque mostrate a piena risoluzione</translation>
+    </message>
+    <message>
+        <source>Denoise still image</source>
+        <translation>Riduci il rumore dell&apos;immagine ferma</translation>
+    </message>
+    <message>
+        <source>Filter the accumulated image while it converges (off: the raw running mean; renders are never filtered)</source>
+        <translation>Filtra l&apos;immagine accumulata mentre converge (spento: la media grezza; i render non sono mai filtrati)</translation>
+    </message>
+    <message>
+        <source>coarse (1/%1 resolution)</source>
+        <translation>grezza (risoluzione 1/%1)</translation>
+    </message>
+    <message>
+        <source>refining to full resolution: %1%</source>
+        <translation>affinamento a piena risoluzione: %1%</translation>
+    </message>
+    <message>
+        <source>%1 / %2 spp</source>
+        <translation>%1 / %2 spp</translation>
+    </message>
+    <message>
+        <source>%1 spp</source>
+        <translation>%1 spp</translation>
+    </message>
+    <message>
+        <source>%1 spp, converged (viewport sample cap)</source>
+        <translation>%1 spp, convergita (limite di campioni della vista)</translation>
+    </message>
+    <message>
+        <source>%1 spp, paused</source>
+        <translation>%1 spp, in pausa</translation>
+    </message>
+    <message>
+        <source>%1  |  %2 ms/frame</source>
+        <translation>%1  |  %2 ms/fotogramma</translation>
     </message>
 </context>
 </TS>

@@ -25,6 +25,7 @@
 #include <QLabel>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QScreen>
 #include <QSettings>
 #include <QStatusBar>
 
@@ -44,6 +45,7 @@ MainWindow::MainWindow(Options options, QWidget* parent) : QMainWindow(parent), 
     createMenus();
     createToolBar();
     createStatusBar();
+    rememberDefaultShortcuts();
     applyPreferences();
     restoreLayout();
 
@@ -87,6 +89,20 @@ void MainWindow::createViewport() {
     viewport_ = viewport;
     keepTranslated(viewport, TextRole::AccessibleName, staticMetaObject.className(), QT_TR_NOOP("Viewport"));
     viewportActions_ = viewport->allActions();
+    // The gizmo modes answer W/E/R anywhere in the window (text fields keep their letters), with
+    // Blender's G (grab) and S (scale) as aliases; Blender's R (rotate) is taken by scale here.
+    const std::pair<const char*, QList<QKeySequence>> gizmoKeys[] = {
+        {"view.gizmo.move", {QKeySequence(Qt::Key_W), QKeySequence(Qt::Key_G)}},
+        {"view.gizmo.rotate", {QKeySequence(Qt::Key_E)}},
+        {"view.gizmo.scale", {QKeySequence(Qt::Key_R), QKeySequence(Qt::Key_S)}}};
+    for (QAction* action : viewport->gizmoActions()) {
+        for (const auto& [id, keys] : gizmoKeys)
+            if (action->objectName() == QLatin1String(id)) action->setShortcuts(keys);
+        action->setShortcutContext(Qt::WindowShortcut);
+        addAction(action);
+    }
+    // While the view flies (right drag), W/A/S/D/Q/E move the camera: the view keeps its keys.
+    viewport->view().installEventFilter(this);
     connect(viewport, &Viewport::statusMessage, this, [this](const QString& text) { renderLabel_->setText(text); });
     setCentralWidget(viewport);
 }
@@ -134,8 +150,18 @@ void MainWindow::createDocks() {
 
 void MainWindow::restoreLayout() {
     QSettings settings;
-    restoreGeometry(settings.value("window/geometry").toByteArray());
+    if (!restoreGeometry(settings.value("window/geometry").toByteArray())) fitToScreen();
     restoreState(settings.value("window/state").toByteArray());
+}
+
+// The first start: most of the screen, centred (Qt's default is two thirds of it or less).
+void MainWindow::fitToScreen() {
+    const QScreen* screen = QGuiApplication::primaryScreen();
+    if (!screen) return;
+    const QRect available = screen->availableGeometry();
+    const QSize size = (available.size() * 0.9).expandedTo(minimumSizeHint()).boundedTo(available.size());
+    resize(size);
+    move(available.center() - QPoint(size.width() / 2, size.height() / 2));
 }
 
 void MainWindow::saveLayout() {
@@ -144,14 +170,24 @@ void MainWindow::saveLayout() {
     settings.setValue("window/state", saveState());
 }
 
+void MainWindow::rememberDefaultShortcuts() {
+    for (QAction* action : keymapActions()) {
+        Q_ASSERT_X(!action->objectName().isEmpty() && !defaultShortcuts_.contains(action->objectName()),
+                   "MainWindow", "every keymap action needs an object name of its own");
+        defaultShortcuts_[action->objectName()] = action->shortcuts();
+    }
+}
+
 void MainWindow::applyPreferences() {
     if (auto* app = qobject_cast<QApplication*>(QCoreApplication::instance()))
         applyTheme(*app, themeFromName(preferences_.theme), options_.systemPalette);
     autosave_->setIntervalMinutes(preferences_.autosaveMinutes);
     if (viewport_) viewport_->setSampleCap(preferences_.viewportSamples);
+    // An override replaces the action's shortcuts; without one the defaults (aliases too) apply.
     for (QAction* action : keymapActions()) {
         auto it = preferences_.keymap.find(action->objectName());
         if (it != preferences_.keymap.end()) action->setShortcut(it.value());
+        else action->setShortcuts(defaultShortcuts_.value(action->objectName()));
     }
 }
 
@@ -285,6 +321,15 @@ void MainWindow::openDropped(const QList<QUrl>& urls, bool merge) {
             beginImport(path); // after an open of the same drop: merged into the opened scene
         }
     }
+}
+
+bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
+    if (event->type() == QEvent::ShortcutOverride && viewport_ && watched == &viewport_->view() &&
+        viewport_->view().tools().tool() == Tool::Fly) {
+        event->accept(); // the key goes to the view, not to a shortcut
+        return true;
+    }
+    return QMainWindow::eventFilter(watched, event);
 }
 
 void MainWindow::changeEvent(QEvent* event) {

@@ -5,7 +5,9 @@
 #include "editor/document/document.h"
 #include "editor/preferences/preferences.h"
 
+#include <QKeySequence>
 #include <QMainWindow>
+#include <QMap>
 #include <QPalette>
 #include <QUrl>
 
@@ -48,8 +50,12 @@ public:
     Viewport* viewport() const { return viewport_; } // null without the viewport
     TimelinePanel* timeline() const { return timeline_; }
 
-    // Every action with a shortcut the keymap may change.
+    // Every action with a shortcut the keymap may change, and their default shortcuts by object
+    // name (the keymap in the preferences stores only what differs from these).
     QList<QAction*> keymapActions() const;
+    const QMap<QString, QList<QKeySequence>>& defaultShortcuts() const { return defaultShortcuts_; }
+    // Opens Edit > Preferences (modal) and applies what it returns.
+    void showPreferences();
 
     // Reads the file in the background (Document::startOpen): the window stays usable, the status
     // bar shows progress with a Cancel button, and the outcome is reported when it arrives
@@ -76,6 +82,7 @@ protected:
     void dragEnterEvent(QDragEnterEvent* event) override;
     void dropEvent(QDropEvent* event) override;
     void changeEvent(QEvent* event) override;
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
     void createCentralView();
@@ -88,8 +95,9 @@ private:
     void createStatusBar();
     void createExportActions(QMenu* file);
     void applyPreferences();
-    void showPreferences();
+    void rememberDefaultShortcuts();
     void restoreLayout();
+    void fitToScreen();
     void saveLayout();
     void updateTitle();
     void updateStatus();
@@ -130,6 +138,7 @@ private:
     QAction* delete_ = nullptr;
     QAction* duplicate_ = nullptr;
     Preferences preferences_;
+    QMap<QString, QList<QKeySequence>> defaultShortcuts_;
 };
 
 } // namespace glint::editor

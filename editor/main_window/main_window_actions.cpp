@@ -75,9 +75,10 @@ void MainWindow::createActions() {
     auto* saveAction = makeAction("file.save", QT_TR_NOOP("&Save"), QKeySequence::Save);
     saveAction->setIcon(s->standardIcon(QStyle::SP_DialogSaveButton));
     connect(saveAction, &QAction::triggered, this, [this] { save(); });
-    auto* saveAsAction = makeAction("file.save_as", QT_TR_NOOP("Save &As..."), QKeySequence::SaveAs);
+    // Explicit keys where the platform's standard key may be empty (Save As, Preferences).
+    auto* saveAsAction = makeAction("file.save_as", QT_TR_NOOP("Save &As..."), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S));
     connect(saveAsAction, &QAction::triggered, this, [this] { saveAs(); });
-    auto* prefs = makeAction("edit.preferences", QT_TR_NOOP("&Preferences..."), QKeySequence::Preferences);
+    auto* prefs = makeAction("edit.preferences", QT_TR_NOOP("&Preferences..."), QKeySequence(Qt::CTRL | Qt::Key_Comma));
     connect(prefs, &QAction::triggered, this, &MainWindow::showPreferences);
     auto* quit = makeAction("file.quit", QT_TR_NOOP("&Quit"), QKeySequence::Quit);
     connect(quit, &QAction::triggered, this, &QWidget::close);
@@ -242,7 +243,7 @@ void MainWindow::updateUndoActions() {
 }
 
 void MainWindow::showPreferences() {
-    PreferencesDialog dialog(preferences_, keymapActions(), this);
+    PreferencesDialog dialog(preferences_, keymapActions(), defaultShortcuts_, this);
     if (dialog.exec() != QDialog::Accepted) return;
     const QString oldLanguage = preferences_.language;
     preferences_ = dialog.result();

@@ -67,6 +67,13 @@ void keepTranslated(QObject* object, TextRole role, const char* context, const c
     apply(object, role, QCoreApplication::translate(context, source));
 }
 
+QString keptText(const QObject* object, TextRole role) {
+    const QVariant kept = object->property(kProperties[static_cast<std::size_t>(role)]);
+    if (!kept.isValid()) return {};
+    const auto source = kept.value<QPair<quintptr, quintptr>>();
+    return QCoreApplication::translate(reinterpret_cast<const char*>(source.first), reinterpret_cast<const char*>(source.second));
+}
+
 void retranslateTree(QObject* root) {
     retranslateObject(root);
     for (QObject* child : root->findChildren<QObject*>()) retranslateObject(child);

@@ -4,6 +4,7 @@
 // on the object; retranslateTree() sets every such text under a root again, from the translators
 // installed now. Widgets that build their texts from data (forms, models) rebuild instead.
 #include <QObject>
+#include <QString>
 
 namespace glint::editor {
 
@@ -16,5 +17,10 @@ void keepTranslated(QObject* object, TextRole role, const char* context, const c
 
 // Sets every kept text of `root` and its descendants again (call on QEvent::LanguageChange).
 void retranslateTree(QObject* root);
+
+// The kept text of `object` for `role` in the language of the moment, or an empty string when it
+// has none. Unlike the object's text it is the one set with keepTranslated: the Undo action's
+// "&Undo" while its menu text says "&Undo Rename".
+QString keptText(const QObject* object, TextRole role);
 
 } // namespace glint::editor

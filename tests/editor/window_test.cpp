@@ -14,6 +14,7 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QScreen>
 #include <QSettings>
 #include <QUrl>
 #include <QDir>
@@ -58,6 +59,7 @@ private slots:
     void autosaveIsRecoveredAfterACrash();
     void droppedFilesOpenOrImport();
     void keymapOverridesApply();
+    void firstStartFitsTheScreen();
     void undoFollowsADelete();
     void viewportRendersAfterStructuralEdits();
     void screenshotOfTheMainWindow();
@@ -166,6 +168,18 @@ void WindowTest::keymapOverridesApply() {
     MainWindow plain(panelsOnly(temp_.filePath("autosave-g")));
     for (QAction* action : plain.keymapActions())
         if (action->objectName() == "edit.duplicate") QCOMPARE(action->shortcut(), QKeySequence("Ctrl+D"));
+}
+
+// Without a saved layout the window takes most of the screen (it opened at ~970x545 on 1600x900).
+void WindowTest::firstStartFitsTheScreen() {
+    QSettings().remove("window");
+    MainWindow window(panelsOnly(temp_.filePath("autosave-fit")));
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    const QRect available = window.screen()->availableGeometry();
+    QVERIFY2(window.width() >= 0.85 * available.width() && window.height() >= 0.85 * available.height(),
+             qPrintable(QString("%1x%2 on %3x%4").arg(window.width()).arg(window.height()).arg(available.width()).arg(available.height())));
+    QVERIFY(available.contains(window.geometry()));
 }
 
 // A Delete is a macro: its pushes arrive while nothing can be undone yet. The Undo action (menu,
