@@ -53,6 +53,19 @@ private slots:
         }
     }
 
+    // A mistyped subcommand never opens the editor on a file of that name (issue 17).
+    void mistypedSubcommandExitsTwoWithTheNearestOne() {
+        const QStringList display{"DISPLAY=:0", "QT_QPA_PLATFORM=offscreen"}; // the editor could open
+        auto r = runGlint({"rendr", cornell, "--out", "x.png"}, display);
+        QCOMPARE(r.exitCode, 2);
+        QCOMPARE(r.err, QString("glint: unknown subcommand 'rendr' (did you mean render?)\n"));
+        r = runGlint({"ifno", cornell}, display);
+        QCOMPARE(r.err, QString("glint: unknown subcommand 'ifno' (did you mean info?)\n"));
+        r = runGlint({"no/such/scene.gltf"}, display);
+        QCOMPARE(r.exitCode, 2);
+        QCOMPARE(r.err, QString("glint: no/such/scene.gltf: no such file, and not a subcommand (see --help)\n"));
+    }
+
     void missingFileExitsOneNamingIt() {
         auto r = runGlint({"info", "no/such/scene.gltf"});
         QCOMPARE(r.exitCode, 1);
