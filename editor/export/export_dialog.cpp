@@ -2,8 +2,8 @@
 
 #include "editor/document/document.h"
 #include "editor/preferences/retranslate.h"
+#include "editor/properties/configuration_names.h"
 #include "editor/viewport/viewport.h"
-#include "renderer/configuration.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -89,10 +89,9 @@ void ExportDialog::buildForm(Kind kind) {
     form->addRow(rowLabel(this, QT_TR_NOOP("Size")), sizeRow);
     configuration_ = new QComboBox(this);
     keepTranslated(configuration_, TextRole::AccessibleName, staticMetaObject.className(), QT_TR_NOOP("Configuration"));
-    for (const auto c : {renderer::Configuration::Accumulate, renderer::Configuration::Reference, renderer::Configuration::Baseline,
-                         renderer::Configuration::Realistic, renderer::Configuration::Full, renderer::Configuration::Heavy})
-        configuration_->addItem(QString::fromUtf8(renderer::configurationName(c).data(), qsizetype(renderer::configurationName(c).size())));
-    configuration_->setCurrentText(QString::fromStdString(r.configuration));
+    // Shown as words ("Full"), kept as the identifiers the renderer and the files use ("full").
+    for (const QString& id : configurationIds()) configuration_->addItem(configurationTitle(id.toStdString()), id);
+    configuration_->setCurrentIndex(std::max(0, configuration_->findData(QString::fromStdString(r.configuration))));
     form->addRow(rowLabel(this, QT_TR_NOOP("Configuration")), configuration_);
     spp_ = spin(this, 1, 1 << 20, r.spp, tr("Samples per pixel"));
     form->addRow(rowLabel(this, QT_TR_NOOP("Samples per pixel")), spp_);
@@ -138,7 +137,7 @@ ExportSettings ExportDialog::settings() const {
     s.height = height_->value();
     s.spp = spp_->value();
     s.seed = std::uint32_t(seed_->value());
-    s.configuration = configuration_->currentText().toStdString();
+    s.configuration = configuration_->currentData().toString().toStdString();
     s.aovs = aovs_->text().trimmed().toStdString();
     s.animation = animation_->isChecked();
     s.firstFrame = first_->value();
@@ -159,7 +158,7 @@ void ExportDialog::setSettings(const ExportSettings& s) {
     height_->setValue(s.height);
     spp_->setValue(s.spp);
     seed_->setValue(int(s.seed));
-    configuration_->setCurrentText(QString::fromStdString(s.configuration));
+    configuration_->setCurrentIndex(std::max(0, configuration_->findData(QString::fromStdString(s.configuration))));
     aovs_->setText(QString::fromStdString(s.aovs));
     first_->setValue(s.firstFrame);
     last_->setValue(s.lastFrame);

@@ -8,8 +8,10 @@
 #include "editor/document/document.h"
 #include "editor/history_view/history_panel.h"
 #include "editor/log/log_panel.h"
+#include "editor/outliner/node_names.h"
 #include "editor/outliner/outliner_panel.h"
 #include "editor/preferences/retranslate.h"
+#include "editor/properties/configuration_names.h"
 #include "editor/properties/properties_panel.h"
 
 #include "editor/timeline/timeline_panel.h"
@@ -205,12 +207,14 @@ void MainWindow::updateStatus() {
     for (const auto& [id, mesh] : scene.meshes) triangles += mesh.triangleCount();
     const std::size_t selected = document_->selection().size();
     if (selected == 0) selectionLabel_->setText(tr("Nothing selected"));
-    else if (selected == 1) selectionLabel_->setText(tr("Selected: %1").arg(QString::fromStdString(scene.at(document_->currentNode()).name)));
+    else if (selected == 1) selectionLabel_->setText(tr("Selected: %1").arg(nodeDisplayName(scene, document_->currentNode())));
     else selectionLabel_->setText(tr("%n nodes selected", nullptr, static_cast<int>(selected)));
-    sceneLabel_->setText(tr("%1 nodes, %2 triangles, configuration: %3")
-                             .arg(scene.nodeCount())
-                             .arg(triangles)
-                             .arg(QString::fromStdString(scene.settings.render.configuration)));
+    sceneLabel_->setText(tr("%1, %2, configuration: %3")
+                             .arg(countText(staticMetaObject.className(), QT_TR_N_NOOP("%n nodes"), "%n node",
+                                            static_cast<int>(scene.nodeCount())),
+                                  countText(staticMetaObject.className(), QT_TR_N_NOOP("%n triangles"), "%n triangle",
+                                            static_cast<int>(triangles)),
+                                  configurationTitle(scene.settings.render.configuration)));
 }
 
 void MainWindow::createStatusBar() {

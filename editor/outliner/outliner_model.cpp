@@ -2,9 +2,11 @@
 
 #include "editor/document/document.h"
 #include "editor/document/edit_operations.h"
+#include "node_names.h"
 
 #include <QApplication>
 #include <QDataStream>
+#include <QFont>
 #include <QIODevice>
 #include <QMimeData>
 #include <QStyle>
@@ -79,12 +81,23 @@ QVariant OutlinerModel::data(const QModelIndex& index, int role) const {
     const Node* node = document_.scene().node(nodeAt(index));
     if (!node) return {};
     if (index.column() == NameColumn) {
+        const Scene& scene = document_.scene();
+        const NodeId id = nodeAt(index);
+        const QString name = nodeDisplayName(scene, id); // derived (and shown in italics) when it has none
         switch (role) {
         case Qt::DisplayRole:
-        case Qt::EditRole: return QString::fromStdString(node->name);
+        case Qt::EditRole: return name;
         case Qt::DecorationRole: return componentIcon(node->component);
-        case Qt::ToolTipRole: return tr("%1 (%2)").arg(QString::fromStdString(node->name), componentName(node->component));
-        case Qt::AccessibleTextRole: return tr("%1, %2").arg(QString::fromStdString(node->name), componentName(node->component));
+        case Qt::FontRole: {
+            if (hasOwnName(scene, id)) return {};
+            QFont font;
+            font.setItalic(true);
+            return font;
+        }
+        case Qt::ToolTipRole:
+            return hasOwnName(scene, id) ? tr("%1 (%2)").arg(name, componentName(node->component))
+                                         : tr("%1 (%2; the file gives it no name)").arg(name, componentName(node->component));
+        case Qt::AccessibleTextRole: return tr("%1, %2").arg(name, componentName(node->component));
         default: return {};
         }
     }
@@ -99,6 +112,8 @@ bool OutlinerModel::setData(const QModelIndex& index, const QVariant& value, int
     if (index.column() == NameColumn && role == Qt::EditRole) {
         const QString name = value.toString().trimmed();
         if (name.isEmpty()) return false;
+        // Confirming the shown derived name keeps the node unnamed (nothing is written).
+        if (!hasOwnName(document_.scene(), id) && name == nodeDisplayName(document_.scene(), id)) return true;
         error = renameNode(document_, id, name);
     } else if (index.column() == VisibleColumn && role == Qt::CheckStateRole) {
         error = setVisible(document_, id, value.toInt() == Qt::Checked);

@@ -74,6 +74,13 @@ QString keptText(const QObject* object, TextRole role) {
     return QCoreApplication::translate(reinterpret_cast<const char*>(source.first), reinterpret_cast<const char*>(source.second));
 }
 
+QString countText(const char* context, const char* plural, const char* englishSingular, int n) {
+    const QString translated = QCoreApplication::translate(context, plural, nullptr, n);
+    const QString untranslated = QString::fromUtf8(plural).replace(QLatin1String("%n"), QString::number(n));
+    if (translated != untranslated || n != 1) return translated;
+    return QString::fromUtf8(englishSingular).replace(QLatin1String("%n"), QString::number(n));
+}
+
 void retranslateTree(QObject* root) {
     retranslateObject(root);
     for (QObject* child : root->findChildren<QObject*>()) retranslateObject(child);

@@ -23,4 +23,8 @@ void retranslateTree(QObject* root);
 // "&Undo" while its menu text says "&Undo Rename".
 QString keptText(const QObject* object, TextRole role);
 
+// "%n nodes" through the translators' plural forms (`plural`, marked with QT_TRANSLATE_N_NOOP in
+// `context`); in English, which has no translator, `englishSingular` ("%n node") when n is 1.
+QString countText(const char* context, const char* plural, const char* englishSingular, int n);
+
 } // namespace glint::editor

@@ -44,11 +44,12 @@ void addColor(PropertyForm* form, const MaterialBinding& m, const QString& label
             return mat ? toQColor((mat->*member).x, (mat->*member).y, (mat->*member).z) : QColor();
         },
         [m, member](const QColor& c) {
+            const glm::vec3 linear = toLinear(c);
             m.edit(
                 [&](Material& mat) {
-                    (mat.*member).x = float(c.redF());
-                    (mat.*member).y = float(c.greenF());
-                    (mat.*member).z = float(c.blueF());
+                    (mat.*member).x = linear.x;
+                    (mat.*member).y = linear.y;
+                    (mat.*member).z = linear.z;
                 },
                 0);
         });

@@ -4,6 +4,9 @@
 #include "property_edits.h"
 
 #include "editor/document/edit_operations.h"
+#include "editor/outliner/node_names.h"
+
+#include <QLineEdit>
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -57,16 +60,19 @@ void addComponentFloat(PropertyForm* form, Document& document, NodeId node, cons
 
 PropertyForm* makeNodeForm(Document& document, NodeId node, const Report& report, QWidget* parent) {
     auto* form = new PropertyForm(document, PropertyForm::tr("Node"), parent);
-    form->addText(
+    QLineEdit* name = form->addText(
         PropertyForm::tr("Name"),
         [&document, node] {
             const Node* n = document.scene().node(node);
             return n ? QString::fromStdString(n->name) : QString();
         },
         [&document, node, report](const QString& name) {
+            if (name.trimmed().isEmpty() && !hasOwnName(document.scene(), node)) return; // stays unnamed
             const QString error = renameNode(document, node, name);
             if (!error.isEmpty()) report(error);
         });
+    // A node the file gives no name shows the name the editor derives for it, greyed.
+    name->setPlaceholderText(nodeDisplayName(document.scene(), node));
     form->addCheck(
         PropertyForm::tr("Visible"),
         [&document, node] {
@@ -179,7 +185,7 @@ PropertyForm* makeLightForm(Document& document, NodeId node, const Report& repor
             const QString error = editComponent(
                 document, node,
                 [&](Component& comp) {
-                    if (auto* l = std::get_if<Light>(&comp)) l->color = {c.redF(), c.greenF(), c.blueF()};
+                    if (auto* l = std::get_if<Light>(&comp)) l->color = toLinear(c);
                 },
                 0);
             if (!error.isEmpty()) report(error);

@@ -25,8 +25,21 @@ namespace {
 constexpr int kSliderSteps = 1000;
 }
 
+float srgbToLinear(float encoded) {
+    return encoded <= 0.04045f ? encoded / 12.92f : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
+}
+
+float linearToSrgb(float linear) {
+    linear = std::clamp(linear, 0.0f, 1.0f);
+    return linear <= 0.0031308f ? linear * 12.92f : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+}
+
 QColor toQColor(float r, float g, float b) {
-    return QColor::fromRgbF(std::clamp(r, 0.0f, 1.0f), std::clamp(g, 0.0f, 1.0f), std::clamp(b, 0.0f, 1.0f));
+    return QColor::fromRgbF(linearToSrgb(r), linearToSrgb(g), linearToSrgb(b));
+}
+
+glm::vec3 toLinear(const QColor& color) {
+    return {srgbToLinear(float(color.redF())), srgbToLinear(float(color.greenF())), srgbToLinear(float(color.blueF()))};
 }
 
 FloatField::FloatField(double min, double max, int decimals, QWidget* parent)
@@ -93,7 +106,12 @@ ColorField::ColorField(QWidget* parent) : QWidget(parent) {
 void ColorField::setColor(const QColor& color) {
     color_ = color;
     button_->setStyleSheet(QStringLiteral("background-color: %1").arg(color.name()));
-    button_->setToolTip(QStringLiteral("%1, %2, %3").arg(color.redF(), 0, 'f', 3).arg(color.greenF(), 0, 'f', 3).arg(color.blueF(), 0, 'f', 3));
+    const glm::vec3 linear = toLinear(color);
+    button_->setToolTip(tr("%1 (sRGB); stored linear: %2, %3, %4")
+                            .arg(color.name().toUpper())
+                            .arg(double(linear.x), 0, 'f', 3)
+                            .arg(double(linear.y), 0, 'f', 3)
+                            .arg(double(linear.z), 0, 'f', 3));
 }
 
 void ColorField::pick() {
@@ -164,12 +182,13 @@ void PropertyForm::addChoice(const QString& label, const QStringList& items, std
     });
 }
 
-void PropertyForm::addText(const QString& label, std::function<QString()> get, std::function<void(const QString&)> set) {
+QLineEdit* PropertyForm::addText(const QString& label, std::function<QString()> get, std::function<void(const QString&)> set) {
     auto* edit = new QLineEdit(this);
     connect(edit, &QLineEdit::editingFinished, this, [edit, set] { set(edit->text()); });
     addWidget(label, edit, [edit, get] {
         if (!edit->hasFocus()) edit->setText(get());
     });
+    return edit;
 }
 
 void PropertyForm::addInt(const QString& label, int min, int max, std::function<int()> get, std::function<void(int)> set) {

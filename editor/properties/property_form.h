@@ -4,6 +4,8 @@
 // so undo and redo show up in every panel. A slider drag takes one History interaction serial,
 // so the whole drag merges into one undo step.
 #include <QColor>
+
+#include <glm/vec3.hpp>
 #include <QWidget>
 
 #include <cstdint>
@@ -11,6 +13,7 @@
 #include <vector>
 
 class QFormLayout;
+class QLineEdit;
 class QSlider;
 class QDoubleSpinBox;
 class QPushButton;
@@ -45,7 +48,8 @@ private:
     bool updating_ = false;
 };
 
-// A colour swatch; clicking opens a colour dialog. Colours are linear RGB in [0, 1].
+// A colour swatch; clicking opens a colour dialog. The swatch and the dialog show and take sRGB,
+// as every colour picker does; the document stores linear RGB (toQColor/toLinear convert).
 class ColorField : public QWidget {
     Q_OBJECT
 public:
@@ -75,7 +79,7 @@ public:
     ColorField* addColor(const QString& label, std::function<QColor()> get, std::function<void(const QColor&)> set);
     void addCheck(const QString& label, std::function<bool()> get, std::function<void(bool)> set);
     void addChoice(const QString& label, const QStringList& items, std::function<int()> get, std::function<void(int)> set);
-    void addText(const QString& label, std::function<QString()> get, std::function<void(const QString&)> set);
+    QLineEdit* addText(const QString& label, std::function<QString()> get, std::function<void(const QString&)> set);
     void addInt(const QString& label, int min, int max, std::function<int()> get, std::function<void(int)> set);
     void addWidget(const QString& label, QWidget* widget, std::function<void()> refresh);
 
@@ -87,7 +91,11 @@ private:
     std::vector<std::function<void()>> refreshers_;
 };
 
-// Linear colour <-> QColor (the swatches show the stored values, like glTF's factors).
-QColor toQColor(float r, float g, float b);
+// glTF's colour factors, lights and the environment colour are linear RGB; a swatch shows them
+// sRGB-encoded, so the colour picked is the colour seen: #CC2222 is stored as (0.604, 0.016, 0.016).
+QColor toQColor(float r, float g, float b); // linear in [0, 1] (clamped) -> the sRGB colour shown
+glm::vec3 toLinear(const QColor& color);     // the sRGB colour picked -> linear
+float srgbToLinear(float encoded);
+float linearToSrgb(float linear);
 
 } // namespace glint::editor

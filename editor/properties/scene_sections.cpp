@@ -1,7 +1,10 @@
 // Environment and render settings: the project file's sections, edited as one settings command.
 #include "sections.h"
 
+#include "configuration_names.h"
 #include "property_edits.h"
+
+#include "editor/outliner/node_names.h"
 
 #include <QComboBox>
 #include <QDir>
@@ -26,7 +29,11 @@ Edit settingsEditor(Document& document, const Report& report) {
     };
 }
 
-const QStringList kConfigurations{"baseline", "realistic", "full", "heavy", "accumulate", "reference"};
+QStringList configurationTitles() {
+    QStringList titles;
+    for (const QString& id : configurationIds()) titles << configurationTitle(id.toStdString());
+    return titles;
+}
 
 } // namespace
 
@@ -64,7 +71,7 @@ PropertyForm* makeEnvironmentForm(Document& document, const Report& report, QWid
             return toQColor(c.x, c.y, c.z);
         },
         [edit](const QColor& c) {
-            edit([&](ProjectSettings& s) { s.environment.color = {c.redF(), c.greenF(), c.blueF()}; }, 0);
+            edit([&](ProjectSettings& s) { s.environment.color = toLinear(c); }, 0);
         });
     form->addFloat(
         PropertyForm::tr("Intensity"), 0.0, 10.0, 3, [&scene] { return double(scene.settings.environment.intensity); },
@@ -83,9 +90,9 @@ PropertyForm* makeRenderForm(Document& document, const Report& report, QWidget* 
     const Edit edit = settingsEditor(document, report);
     const Scene& scene = document.scene();
     form->addChoice(
-        PropertyForm::tr("Configuration"), kConfigurations,
-        [&scene] { return std::max(0, static_cast<int>(kConfigurations.indexOf(QString::fromStdString(scene.settings.render.configuration)))); },
-        [edit](int i) { edit([&](ProjectSettings& s) { s.render.configuration = kConfigurations[i].toStdString(); }, 0); });
+        PropertyForm::tr("Configuration"), configurationTitles(),
+        [&scene] { return std::max(0, static_cast<int>(configurationIds().indexOf(QString::fromStdString(scene.settings.render.configuration)))); },
+        [edit](int i) { edit([&](ProjectSettings& s) { s.render.configuration = configurationIds()[i].toStdString(); }, 0); });
     form->addInt(
         PropertyForm::tr("Width (px)"), 1, 16384, [&scene] { return scene.settings.render.width; },
         [edit](int v) { edit([&](ProjectSettings& s) { s.render.width = v; }, 0); });
@@ -134,7 +141,7 @@ PropertyForm* makeProjectForm(Document& document, const Report& report, QWidget*
         camera->clear();
         camera->addItem(PropertyForm::tr("(the first camera)"), 0u);
         for (const NodeId id : scene.depthFirst())
-            if (scene.at(id).get<Camera>()) camera->addItem(QString::fromStdString(scene.at(id).name), id.value);
+            if (scene.at(id).get<Camera>()) camera->addItem(nodeDisplayName(scene, id), id.value);
         camera->setCurrentIndex(std::max(0, camera->findData(scene.settings.activeCamera.value)));
     });
     form->addFloat(

@@ -1,6 +1,7 @@
 #include "editor/timeline/timeline_panel.h"
 
 #include "editor/document/document.h"
+#include "editor/outliner/node_names.h"
 #include "editor/preferences/retranslate.h"
 #include "editor/timeline/time_ruler.h"
 #include "scene/history/camera_path_commands.h"
@@ -145,7 +146,7 @@ void TimelinePanel::refreshCameras() {
         const Node& node = scene.at(id);
         const auto* camera = node.get<Camera>();
         if (!camera) continue;
-        cameras_->addItem(QString::fromStdString(node.name), id.value);
+        cameras_->addItem(nodeDisplayName(scene, id), id.value);
         if (!fallback.valid() || (id == scene.settings.activeCamera)) fallback = id;
     }
     if (!camera_.valid() && fallback.valid()) {

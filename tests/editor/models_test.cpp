@@ -10,6 +10,13 @@
 #include <QAbstractItemModelTester>
 #include <QApplication>
 #include <QFile>
+#include <QFont>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+
+#include <functional>
 #include <QMimeData>
 
 #include <glm/gtc/matrix_access.hpp>
@@ -28,6 +35,7 @@ private slots:
     void importMergesAsOneStep();
     void selectionComesBackOnUndo();
     void translationsAreCompleteAndLoad();
+    void unnamedNodesShowDerivedNames();
 };
 
 void ModelsTest::outlinerFollowsTheDocument() {
@@ -176,6 +184,58 @@ void ModelsTest::translationsAreCompleteAndLoad() {
         translations.install(*app, "en");
     }
     QCOMPARE(QCoreApplication::translate("glint::editor::MainWindow", "&Save"), QString("&Save"));
+}
+
+// 2CylinderEngine names none of its 82 nodes (issue 17, item 5): rows show the mesh's name, else
+// "Node N" / "Camera N", in italics; the filter finds them; nothing is written into the file.
+void ModelsTest::unnamedNodesShowDerivedNames() {
+    Document document;
+    OutlinerModel model(document);
+    QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::QtTest);
+    QCOMPARE(document.open(QStringLiteral(GLINT_TEST_DATA_DIR "/gltf/2CylinderEngine/2CylinderEngine.glb")), QString());
+    QCOMPARE(document.scene().nodeCount(), std::size_t{82});
+    int rows = 0, derived = 0, meshNamed = 0;
+    std::function<void(const QModelIndex&)> walk = [&](const QModelIndex& parent) {
+        for (int row = 0; row < model.rowCount(parent); ++row) {
+            const QModelIndex index = model.index(row, 0, parent);
+            const NodeId id = model.nodeAt(index);
+            const Node& node = document.scene().at(id);
+            const QString shown = index.data().toString();
+            ++rows;
+            QVERIFY2(!shown.isEmpty(), "a blank outliner row");
+            QVERIFY(node.name.empty());
+            derived += index.data(Qt::FontRole).value<QFont>().italic() ? 1 : 0;
+            if (const auto* instance = node.get<MeshInstance>()) {
+                QCOMPARE(shown, QString::fromStdString(document.scene().meshes.find(instance->mesh)->name));
+                ++meshNamed;
+            } else if (node.get<Camera>()) {
+                QCOMPARE(shown, QString("Camera %1").arg(id.value));
+            } else {
+                QCOMPARE(shown, QString("Node %1").arg(id.value));
+            }
+            walk(index);
+        }
+    };
+    walk({});
+    QCOMPARE(rows, 82);
+    QCOMPARE(derived, 82);
+    QVERIFY(meshNamed > 20);
+    // Renaming one for real: its own name, upright; confirming the derived one writes nothing.
+    const QModelIndex first = model.index(0, 0);
+    QVERIFY(model.setData(first, first.data().toString(), Qt::EditRole));
+    QCOMPARE(document.history().count(), std::size_t{0});
+    QVERIFY(model.setData(first, "engine", Qt::EditRole));
+    QCOMPARE(first.data().toString(), QString("engine"));
+    QVERIFY(!first.data(Qt::FontRole).value<QFont>().italic());
+    document.undo();
+    // Saved, the file names no node.
+    QTemporaryDir dir;
+    QCOMPARE(document.saveAs(dir.filePath("engine.gltf")), QString());
+    QFile saved(dir.filePath("engine.gltf"));
+    QVERIFY(saved.open(QIODevice::ReadOnly));
+    const QJsonArray nodes = QJsonDocument::fromJson(saved.readAll()).object()["nodes"].toArray();
+    QCOMPARE(nodes.size(), 82);
+    for (const QJsonValue& node : nodes) QVERIFY(!node.toObject().contains("name"));
 }
 
 QTEST_MAIN(ModelsTest)

@@ -11,6 +11,11 @@
 #include "editor/properties/property_form.h"
 
 #include <QApplication>
+#include <QColorDialog>
+#include <QPushButton>
+#include <QTimer>
+
+#include <cmath>
 #include <QDoubleSpinBox>
 #include <QItemSelectionModel>
 #include <QLineEdit>
@@ -42,6 +47,7 @@ private slots:
     void sliderDragIsOneUndoStep();
     void historyPanelClickJumps();
     void filterKeepsMatchesAndTheirParents();
+    void pickedColourIsStoredLinearAndShownAsPicked();
 };
 
 void PanelsTest::outlinerSelectionFollowsBothWays() {
@@ -87,13 +93,52 @@ void PanelsTest::materialColourUndoRedoIsExact() {
     const QColor chosen = QColor::fromRgbF(0.25f, 0.5f, 0.75f);
     emit colour->edited(chosen);
     const glm::vec4 edited = materialNamed(document, "red").baseColorFactor;
-    QCOMPARE(edited, glm::vec4(float(chosen.redF()), float(chosen.greenF()), float(chosen.blueF()), original.w));
+    QCOMPARE(edited, glm::vec4(toLinear(chosen), original.w));
     document.undo();
     QCOMPARE(materialNamed(document, "red").baseColorFactor, original); // exact, not within a tolerance
     QCOMPARE(colour->color(), toQColor(original.x, original.y, original.z));
     document.redo();
     QCOMPARE(materialNamed(document, "red").baseColorFactor, edited);
-    QCOMPARE(colour->color(), chosen);
+    QCOMPARE(colour->color().name(), chosen.name());
+}
+
+// Issue 17, item 6: picking #CC2222 showed #F16666 and stored the sRGB numbers as linear ones.
+// glTF's factors are linear: the picker shows and takes sRGB, the file gets the linear value.
+void PanelsTest::pickedColourIsStoredLinearAndShownAsPicked() {
+    Document document;
+    QCOMPARE(document.open(cornellBox()), QString());
+    PropertiesPanel panel(document, false);
+    panel.show();
+    document.setSelection({nodeNamed(document, "left_wall_red")});
+    QCoreApplication::processEvents();
+    const auto pick = [&](const QString& field, const QColor& colour) {
+        auto* swatch = fieldNamed<ColorField>(panel, field);
+        QVERIFY(swatch);
+        bool answered = false;
+        QTimer::singleShot(0, [&] { // the dialog runs modally inside the click
+            auto* dialog = qobject_cast<QColorDialog*>(QApplication::activeModalWidget());
+            QVERIFY(dialog);
+            // The dialog opens on the colour the swatch shows.
+            QCOMPARE(dialog->currentColor().name(), swatch->color().name());
+            dialog->setCurrentColor(colour);
+            dialog->accept();
+            answered = true;
+        });
+        QTest::mouseClick(swatch->findChild<QPushButton*>(), Qt::LeftButton);
+        QVERIFY(answered);
+    };
+    pick("Base colour", QColor("#CC2222"));
+    const glm::vec4 base = materialNamed(document, "red").baseColorFactor;
+    QVERIFY2(std::abs(base.x - 0.6038f) < 1e-3f && std::abs(base.y - 0.0160f) < 1e-3f && std::abs(base.z - 0.0160f) < 1e-3f,
+             qPrintable(QString("%1 %2 %3").arg(base.x).arg(base.y).arg(base.z)));
+    auto* swatch = fieldNamed<ColorField>(panel, "Base colour");
+    QCOMPARE(swatch->color().name(), QString("#cc2222"));
+    QVERIFY2(swatch->findChild<QPushButton*>()->styleSheet().contains("#cc2222"), qPrintable(swatch->findChild<QPushButton*>()->styleSheet()));
+    // The same for the emission colour.
+    pick("Emission", QColor("#808080"));
+    const glm::vec3 emission = materialNamed(document, "red").emissiveFactor;
+    QVERIFY2(std::abs(emission.x - 0.2158f) < 1e-3f, qPrintable(QString::number(emission.x)));
+    QCOMPARE(fieldNamed<ColorField>(panel, "Emission")->color().name(), QString("#808080"));
 }
 
 void PanelsTest::sliderDragIsOneUndoStep() {

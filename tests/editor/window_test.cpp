@@ -5,14 +5,19 @@
 #include "test_viewport_scene.h"
 
 #include "editor/document/edit_operations.h"
+#include "editor/export/export_dialog.h"
 #include "editor/log/log_panel.h"
 #include "editor/main_window/autosave.h"
 #include "editor/main_window/main_window.h"
 #include "editor/outliner/outliner_panel.h"
+#include "editor/properties/properties_panel.h"
+#include "editor/timeline/timeline_panel.h"
 #include "editor/viewport/render_view.h"
 #include "editor/viewport/viewport.h"
 
 #include <QAction>
+#include <QComboBox>
+#include <QLabel>
 #include <QApplication>
 #include <QScreen>
 #include <QSettings>
@@ -60,6 +65,8 @@ private slots:
     void droppedFilesOpenOrImport();
     void keymapOverridesApply();
     void firstStartFitsTheScreen();
+    void statusBarSaysNodesAndConfigurationInWords();
+    void unnamedNodesAreNamedInTheStatusBarAndTimeline();
     void undoFollowsADelete();
     void viewportRendersAfterStructuralEdits();
     void screenshotOfTheMainWindow();
@@ -180,6 +187,53 @@ void WindowTest::firstStartFitsTheScreen() {
     QVERIFY2(window.width() >= 0.85 * available.width() && window.height() >= 0.85 * available.height(),
              qPrintable(QString("%1x%2 on %3x%4").arg(window.width()).arg(window.height()).arg(available.width()).arg(available.height())));
     QVERIFY(available.contains(window.geometry()));
+}
+
+// "1 node", not "1 nodes"; "Accumulate", not "accumulate" (issue 17): the status bar, the Scene
+// tab and the export dialog show configurations as words and keep the identifiers in the file.
+void WindowTest::statusBarSaysNodesAndConfigurationInWords() {
+    MainWindow window(panelsOnly(temp_.filePath("autosave-words")));
+    auto* statistics = fieldNamed<QLabel>(window, "Scene statistics");
+    QVERIFY(statistics);
+    QVERIFY(window.openFile(cornellBox()));
+    QCOMPARE(statistics->text(), QString("9 nodes, 32 triangles, configuration: Accumulate"));
+    window.document().newScene();
+    QCOMPARE(addNode(window.document(), "ball", defaultShape(ShapeKind::Sphere)), QString());
+    QCOMPARE(statistics->text(), QString("1 node, 0 triangles, configuration: Accumulate"));
+    auto* configuration = fieldNamed<QComboBox>(window.sceneSettings(), "Configuration");
+    QVERIFY(configuration);
+    const QStringList words{"Baseline", "Realistic", "Full", "Heavy", "Accumulate", "Reference"};
+    for (const QString& word : words) QVERIFY2(configuration->findText(word) >= 0, qPrintable(word));
+    configuration->setCurrentIndex(configuration->findText("Full"));
+    emit configuration->activated(configuration->currentIndex());
+    QCOMPARE(window.document().scene().settings.render.configuration, std::string("full"));
+    QCOMPARE(statistics->text(), QString("1 node, 0 triangles, configuration: Full"));
+    ExportDialog dialog(window.document(), ExportDialog::Kind::Still, nullptr);
+    auto* exportConfiguration = fieldNamed<QComboBox>(dialog, "Configuration");
+    QVERIFY(exportConfiguration);
+    QCOMPARE(exportConfiguration->currentText(), QString("Full"));
+    exportConfiguration->setCurrentIndex(exportConfiguration->findText("Heavy"));
+    QCOMPARE(dialog.settings().configuration, std::string("heavy"));
+}
+
+// 2CylinderEngine names no node: the status bar and the timeline's camera list show derived names.
+void WindowTest::unnamedNodesAreNamedInTheStatusBarAndTimeline() {
+    MainWindow window(panelsOnly(temp_.filePath("autosave-names")));
+    QVERIFY(window.openFile(QStringLiteral(GLINT_TEST_DATA_DIR "/gltf/2CylinderEngine/2CylinderEngine.glb")));
+    auto* selection = fieldNamed<QLabel>(window, "Selection");
+    QVERIFY(selection);
+    NodeId root;
+    for (const NodeId id : window.document().scene().roots())
+        if (std::holds_alternative<std::monostate>(window.document().scene().at(id).component)) root = id;
+    QVERIFY(root.valid());
+    window.document().setSelection({root});
+    QCOMPARE(selection->text(), QString("Selected: Node %1").arg(root.value));
+    QVERIFY(window.timeline());
+    auto* cameras = window.timeline()->findChild<QComboBox*>();
+    QVERIFY(cameras);
+    QVERIFY(cameras->count() >= 1);
+    for (int i = 0; i < cameras->count(); ++i) QVERIFY2(cameras->itemText(i).startsWith("Camera "), qPrintable(cameras->itemText(i)));
+    QVERIFY(window.document().scene().at(root).name.empty());
 }
 
 // A Delete is a macro: its pushes arrive while nothing can be undone yet. The Undo action (menu,
