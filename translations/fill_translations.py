@@ -382,6 +382,9 @@ T = {
 "%1 spp, converged (viewport sample cap)": ("%1 spp, convergita (limite di campioni della vista)", "%1 spp, konvergiert (Sample-Grenze der Ansicht)", "%1 spp, convergée (limite d'échantillons de la vue)", "%1 spp, convergida (límite de muestras de la vista)"),
 "%1 spp, paused": ("%1 spp, in pausa", "%1 spp, angehalten", "%1 spp, en pause", "%1 spp, en pausa"),
 "%1  |  %2 ms/frame": ("%1  |  %2 ms/fotogramma", "%1  |  %2 ms/Bild", "%1  |  %2 ms/image", "%1  |  %2 ms/fotograma"),
+"\"%1\" is relative, but the scene has no folder yet: choose the file with Browse, or save the scene first.": ("\"%1\" è relativo, ma la scena non ha ancora una cartella: scegli il file con Sfoglia, oppure salva prima la scena.", "\"%1\" ist relativ, aber die Szene hat noch keinen Ordner: Wählen Sie die Datei mit Durchsuchen oder speichern Sie zuerst die Szene.", "« %1 » est relatif, mais la scène n'a pas encore de dossier : choisissez le fichier avec Parcourir, ou enregistrez d'abord la scène.", "\"%1\" es relativo, pero la escena aún no tiene carpeta: elige el archivo con Examinar o guarda primero la escena."),
+"Cannot read the environment image %1. Choose it again with Browse, or clear the field to use the colour below.": ("Impossibile leggere l'immagine d'ambiente %1. Sceglila di nuovo con Sfoglia, oppure svuota il campo per usare il colore qui sotto.", "Das Umgebungsbild %1 kann nicht gelesen werden. Wählen Sie es mit Durchsuchen erneut aus oder leeren Sie das Feld, um die Farbe darunter zu verwenden.", "Impossible de lire l'image d'environnement %1. Choisissez-la de nouveau avec Parcourir, ou videz le champ pour utiliser la couleur ci-dessous.", "No se puede leer la imagen de entorno %1. Vuelve a elegirla con Examinar o vacía el campo para usar el color de abajo."),
+"Environment image status": ("Stato dell'immagine d'ambiente", "Status des Umgebungsbilds", "État de l'image d'environnement", "Estado de la imagen de entorno"),
 }
 
 

@@ -1526,6 +1526,18 @@
         <source>None (ghosts)</source>
         <translation>Keine (Geisterbilder)</translation>
     </message>
+    <message>
+        <source>&quot;%1&quot; is relative, but the scene has no folder yet: choose the file with Browse, or save the scene first.</source>
+        <translation>&quot;%1&quot; ist relativ, aber die Szene hat noch keinen Ordner: Wählen Sie die Datei mit Durchsuchen oder speichern Sie zuerst die Szene.</translation>
+    </message>
+    <message>
+        <source>Cannot read the environment image %1. Choose it again with Browse, or clear the field to use the colour below.</source>
+        <translation>Das Umgebungsbild %1 kann nicht gelesen werden. Wählen Sie es mit Durchsuchen erneut aus oder leeren Sie das Feld, um die Farbe darunter zu verwenden.</translation>
+    </message>
+    <message>
+        <source>Environment image status</source>
+        <translation>Status des Umgebungsbilds</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::RenderHost</name>

@@ -1526,6 +1526,18 @@
         <source>None (ghosts)</source>
         <translation>Ninguno (estelas)</translation>
     </message>
+    <message>
+        <source>&quot;%1&quot; is relative, but the scene has no folder yet: choose the file with Browse, or save the scene first.</source>
+        <translation>&quot;%1&quot; es relativo, pero la escena aún no tiene carpeta: elige el archivo con Examinar o guarda primero la escena.</translation>
+    </message>
+    <message>
+        <source>Cannot read the environment image %1. Choose it again with Browse, or clear the field to use the colour below.</source>
+        <translation>No se puede leer la imagen de entorno %1. Vuelve a elegirla con Examinar o vacía el campo para usar el color de abajo.</translation>
+    </message>
+    <message>
+        <source>Environment image status</source>
+        <translation>Estado de la imagen de entorno</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::RenderHost</name>

@@ -1526,6 +1526,18 @@
         <source>None (ghosts)</source>
         <translation>Aucun (images fantômes)</translation>
     </message>
+    <message>
+        <source>&quot;%1&quot; is relative, but the scene has no folder yet: choose the file with Browse, or save the scene first.</source>
+        <translation>« %1 » est relatif, mais la scène n&apos;a pas encore de dossier : choisissez le fichier avec Parcourir, ou enregistrez d&apos;abord la scène.</translation>
+    </message>
+    <message>
+        <source>Cannot read the environment image %1. Choose it again with Browse, or clear the field to use the colour below.</source>
+        <translation>Impossible de lire l&apos;image d&apos;environnement %1. Choisissez-la de nouveau avec Parcourir, ou videz le champ pour utiliser la couleur ci-dessous.</translation>
+    </message>
+    <message>
+        <source>Environment image status</source>
+        <translation>État de l&apos;image d&apos;environnement</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::RenderHost</name>

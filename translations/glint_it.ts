@@ -1526,6 +1526,18 @@
         <source>None (ghosts)</source>
         <translation>Nessuno (scie)</translation>
     </message>
+    <message>
+        <source>&quot;%1&quot; is relative, but the scene has no folder yet: choose the file with Browse, or save the scene first.</source>
+        <translation>&quot;%1&quot; è relativo, ma la scena non ha ancora una cartella: scegli il file con Sfoglia, oppure salva prima la scena.</translation>
+    </message>
+    <message>
+        <source>Cannot read the environment image %1. Choose it again with Browse, or clear the field to use the colour below.</source>
+        <translation>Impossibile leggere l&apos;immagine d&apos;ambiente %1. Sceglila di nuovo con Sfoglia, oppure svuota il campo per usare il colore qui sotto.</translation>
+    </message>
+    <message>
+        <source>Environment image status</source>
+        <translation>Stato dell&apos;immagine d&apos;ambiente</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::RenderHost</name>

@@ -162,12 +162,13 @@ QString Document::save() {
 QString Document::saveAs(const QString& path) {
     QString target = path;
     if (!target.toLower().endsWith(".gltf") && !target.toLower().endsWith(".glb")) target += ".gltf";
+    SaveReport report;
     try {
         // Relative paths (the environment image) resolve beside the current file: a save into
         // another folder copies what they name, as textures are copied.
         SaveOptions options;
         options.sourceFolder = folder();
-        SaveReport report = saveScene(scene_, toPath(target), options);
+        report = saveScene(scene_, toPath(target), options);
         reportWarnings(warningLines(report.dropped));
     } catch (const std::exception& e) {
         return QString::fromStdString(e.what());
@@ -180,7 +181,30 @@ QString Document::saveAs(const QString& path) {
         path_ = absolute;
         emit fileChanged();
     }
+    adoptSavedEnvironment(toPath(target), report.dropped); // resolves in the new folder from here on
     return {};
+}
+
+// An environment image outside the scene's folder (an absolute path chosen in an untitled scene)
+// was copied beside the saved file under its own name: the document now names that copy, as the
+// saved project file does, so the Scene tab, the viewport and the next save agree with the file.
+void Document::adoptSavedEnvironment(const std::filesystem::path& savedFile, const Warnings& dropped) {
+    const std::string& file = scene_.settings.environment.file;
+    if (file.empty() || !std::filesystem::path(file).is_absolute()) return;
+    for (const Warning& w : dropped)
+        if (w.code.rfind("environment-", 0) == 0) return; // not copied: keep what the user chose
+    const std::filesystem::path name = std::filesystem::path(file).filename();
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(std::filesystem::absolute(savedFile).parent_path() / name, error)) return;
+    relocateEnvironment(name.generic_string());
+}
+
+void Document::relocateEnvironment(const std::string& file) {
+    if (scene_.settings.environment.file == file) return;
+    scene_.settings.environment.file = file;
+    ChangeSet changes;
+    changes.add(Change::Environment);
+    emit changed(changes);
 }
 
 QString Document::importFile(const QString& path) {
@@ -302,6 +326,15 @@ void Document::onLoadFailed(const QString& message) {
 
 std::filesystem::path Document::folder() const {
     return path_.isEmpty() ? std::filesystem::path() : toPath(QFileInfo(path_).absolutePath());
+}
+
+std::filesystem::path Document::environmentPath() const {
+    const std::string& file = scene_.settings.environment.file;
+    if (file.empty()) return {};
+    const std::filesystem::path path(file);
+    if (path.is_absolute()) return path.lexically_normal();
+    if (folder().empty()) return {};
+    return (folder() / path).lexically_normal();
 }
 
 QString Document::displayName() const {

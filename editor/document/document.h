@@ -100,6 +100,14 @@ public:
     // The folder the scene's relative paths (the project's environment image) resolve in: the open
     // file's; empty while the scene is untitled.
     std::filesystem::path folder() const;
+    // The project's environment image on disk: an absolute path as it is (what the editor stores
+    // for a file chosen in an untitled scene, until the first save copies it beside the scene), a
+    // relative one in folder(). Empty when there is none, or a relative one with no folder yet.
+    std::filesystem::path environmentPath() const;
+    // Points the project's environment image at `file`, another path of the same image (the copy a
+    // save made beside the scene, the path an autosaved copy stands for). Not an undoable edit and
+    // the clean state stays: the image is the same, only where it is read from changed.
+    void relocateEnvironment(const std::string& file);
     QString displayName() const;  // the scene name, else the file name, else "Untitled"
     bool isModified() const { return recovered_ || !history_.isClean(); }
     // Warnings of the last open, import or save, as "FILE: message" lines.
@@ -146,6 +154,7 @@ private:
     void onHistoryChanged(const ChangeSet& changes);
     void onHistoryIndex();
     void replaceScene(Scene scene);
+    void adoptSavedEnvironment(const std::filesystem::path& savedFile, const Warnings& dropped);
     void pruneSelection();
     void reportWarnings(QStringList lines);
 

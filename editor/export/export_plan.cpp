@@ -18,6 +18,10 @@ ExportFrame planBase(const Scene& scene, const ExportSettings& s) {
     overrides.seed = s.seed;
     overrides.config = s.configuration;
     if (!s.camera.empty()) overrides.camera = s.camera;
+    // An image chosen in an untitled scene is stored absolute until the first save copies it: it
+    // is read where it is, as `glint render --env` does (the project's own paths stay in its folder).
+    if (const std::string& env = scene.settings.environment.file; !env.empty() && std::filesystem::path(env).is_absolute())
+        overrides.env = env;
     renderer::RenderPlan plan = renderer::planRender(scene, s.sceneFile, overrides);
     ExportFrame f;
     f.request = std::move(plan.request);

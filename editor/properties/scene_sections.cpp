@@ -11,9 +11,11 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
+#include <QLabel>
 #include <QLineEdit>
 #include <QSignalBlocker>
 #include <QToolButton>
+#include <QVBoxLayout>
 
 #include <algorithm>
 
@@ -29,6 +31,22 @@ Edit settingsEditor(Document& document, const Report& report) {
     };
 }
 
+
+// What keeps the project's environment image from being read, for the Scene tab; empty when none.
+QString environmentProblem(const Document& document) {
+    const std::string& file = document.scene().settings.environment.file;
+    if (file.empty()) return {};
+    const std::filesystem::path resolved = document.environmentPath();
+    if (resolved.empty())
+        return PropertyForm::tr("\"%1\" is relative, but the scene has no folder yet: choose the file with Browse, or save the scene first.")
+            .arg(QString::fromStdString(file));
+    const QFileInfo info(QString::fromStdString(resolved.string()));
+    if (!info.isFile() || !info.isReadable())
+        return PropertyForm::tr("Cannot read the environment image %1. Choose it again with Browse, or clear the field to use the colour below.")
+            .arg(QDir::toNativeSeparators(info.absoluteFilePath()));
+    return {};
+}
+
 QStringList configurationTitles() {
     QStringList titles;
     for (const QString& id : configurationIds()) titles << configurationTitle(id.toStdString());
@@ -41,28 +59,55 @@ PropertyForm* makeEnvironmentForm(Document& document, const Report& report, QWid
     auto* form = new PropertyForm(document, PropertyForm::tr("Environment"), parent);
     const Edit edit = settingsEditor(document, report);
     const Scene& scene = document.scene();
-    // The file is stored relative to the project folder (the scene file's folder once saved).
+    // Paths resolve in the scene's folder. A file chosen there is stored relative to it; one chosen
+    // elsewhere, or in an untitled scene, is stored absolute until a save copies it beside the scene.
     auto* row = new QWidget(form);
     auto* path = new QLineEdit(row);
     auto* browse = new QToolButton(row);
     browse->setText(PropertyForm::tr("Browse..."));
     browse->setAccessibleName(PropertyForm::tr("Choose an HDR environment file"));
-    auto* rowLayout = new QHBoxLayout(row);
+    auto* status = new QLabel(row); // what is wrong with the file, where the user looks
+    status->setWordWrap(true);
+    status->setTextFormat(Qt::PlainText);
+    status->setAccessibleName(PropertyForm::tr("Environment image status"));
+    status->setForegroundRole(QPalette::BrightText);
+    status->setAutoFillBackground(true);
+    QPalette warning = status->palette();
+    warning.setColor(QPalette::Window, QColor(0xb0, 0x2a, 0x1e));
+    warning.setColor(QPalette::BrightText, Qt::white);
+    status->setPalette(warning);
+    status->setMargin(3);
+    auto* pathRow = new QHBoxLayout;
+    pathRow->setContentsMargins(0, 0, 0, 0);
+    pathRow->addWidget(path, 1);
+    pathRow->addWidget(browse);
+    auto* rowLayout = new QVBoxLayout(row);
     rowLayout->setContentsMargins(0, 0, 0, 0);
-    rowLayout->addWidget(path, 1);
-    rowLayout->addWidget(browse);
+    rowLayout->addLayout(pathRow);
+    rowLayout->addWidget(status);
     auto setFile = [edit](const QString& file) {
-        edit([&](ProjectSettings& s) { s.environment.file = file.toStdString(); }, 0);
+        edit([&](ProjectSettings& s) { s.environment.file = QDir::fromNativeSeparators(file).toStdString(); }, 0);
     };
-    QObject::connect(path, &QLineEdit::editingFinished, row, [path, setFile] { setFile(path->text()); });
+    QObject::connect(path, &QLineEdit::editingFinished, row, [path, setFile] { setFile(path->text().trimmed()); });
     QObject::connect(browse, &QToolButton::clicked, row, [&document, row, setFile] {
-        const QString folder = document.filePath().isEmpty() ? QDir::currentPath() : QFileInfo(document.filePath()).absolutePath();
-        const QString file = QFileDialog::getOpenFileName(row, PropertyForm::tr("Environment map"), folder,
+        const QString sceneFolder = document.filePath().isEmpty() ? QString() : QFileInfo(document.filePath()).absolutePath();
+        const std::filesystem::path current = document.environmentPath();
+        const QString start = !current.empty() ? QString::fromStdString(current.parent_path().string())
+                              : !sceneFolder.isEmpty() ? sceneFolder
+                                                       : QDir::homePath();
+        const QString file = QFileDialog::getOpenFileName(row, PropertyForm::tr("Environment map"), start,
                                                           PropertyForm::tr("HDR images (*.hdr *.exr);;All files (*)"));
-        if (!file.isEmpty()) setFile(QDir(folder).relativeFilePath(file));
+        if (file.isEmpty()) return;
+        const QString absolute = QFileInfo(file).absoluteFilePath();
+        const QString relative = sceneFolder.isEmpty() ? QString() : QDir(sceneFolder).relativeFilePath(absolute);
+        const bool inside = !relative.isEmpty() && !relative.startsWith(QLatin1String("../")) && QFileInfo(relative).isRelative();
+        setFile(inside ? relative : absolute);
     });
-    form->addWidget(PropertyForm::tr("HDR file"), row, [&scene, path] {
+    form->addWidget(PropertyForm::tr("HDR file"), row, [&document, &scene, path, status] {
         if (!path->hasFocus()) path->setText(QString::fromStdString(scene.settings.environment.file));
+        const QString problem = environmentProblem(document);
+        status->setText(problem);
+        status->setVisible(!problem.isEmpty());
     });
     form->addColor(
         PropertyForm::tr("Colour (no file)"),
