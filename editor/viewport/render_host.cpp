@@ -23,11 +23,8 @@ namespace glint::editor {
 
 namespace {
 
-std::filesystem::path environmentPath(const Document& document) {
-    const std::string& file = document.scene().settings.environment.file;
-    if (file.empty() || document.folder().empty()) return {};
-    return document.folder() / file;
-}
+// Resolved by the document: an absolute path chosen in an untitled scene is read as it is.
+std::filesystem::path environmentPath(const Document& document) { return document.environmentPath(); }
 
 // Changes after which the scene may have gained or lost its last light source (hasLightSource):
 // not transform drags, names, the timeline or the display.
