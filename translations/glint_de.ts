@@ -510,14 +510,6 @@
         <translation>eine unbenannte Szene</translation>
     </message>
     <message>
-        <source>Recover unsaved work</source>
-        <translation>Ungespeicherte Arbeit wiederherstellen</translation>
-    </message>
-    <message>
-        <source>Glint did not close normally last time. Recover the autosaved copy of %1?</source>
-        <translation>Glint wurde zuletzt nicht normal beendet. Die automatisch gespeicherte Kopie von %1 wiederherstellen?</translation>
-    </message>
-    <message>
         <source>Cannot recover the autosaved copy: %1</source>
         <translation>Die automatisch gespeicherte Kopie kann nicht wiederhergestellt werden: %1</translation>
     </message>
@@ -740,6 +732,37 @@
             <numerusform>%n Dreieck</numerusform>
             <numerusform>%n Dreiecke</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>%1 (autosaved %2)</source>
+        <translation>%1 (automatisch gespeichert %2)</translation>
+    </message>
+    <message>
+        <source>Discard all autosaved copies</source>
+        <translation>Alle automatisch gespeicherten Kopien verwerfen</translation>
+    </message>
+    <message>
+        <source>Nothing to recover</source>
+        <translation>Nichts wiederherzustellen</translation>
+    </message>
+    <message>
+        <source>Glint did not close normally: the copy of %1 autosaved at %2 is newer than the file.</source>
+        <translation>Glint wurde nicht normal beendet: die um %2 automatisch gespeicherte Kopie von %1 ist neuer als die Datei.</translation>
+    </message>
+    <message>
+        <source>Glint did not close normally: unsaved work on %1 was autosaved at %2.</source>
+        <translation>Glint wurde nicht normal beendet: ungespeicherte Arbeit an %1 wurde um %2 automatisch gespeichert.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n more in File &gt; Recover.</source>
+        <translation>
+            <numerusform>%n weitere unter Datei &gt; Wiederherstellen.</numerusform>
+            <numerusform>%n weitere unter Datei &gt; Wiederherstellen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Re&amp;cover</source>
+        <translation>&amp;Wiederherstellen</translation>
     </message>
 </context>
 <context>
@@ -1537,6 +1560,33 @@
     <message>
         <source>Environment image status</source>
         <translation>Status des Umgebungsbilds</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::RecoveryBar</name>
+    <message>
+        <source>Recover unsaved work</source>
+        <translation>Ungespeicherte Arbeit wiederherstellen</translation>
+    </message>
+    <message>
+        <source>Recover</source>
+        <translation>Wiederherstellen</translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation>Verwerfen</translation>
+    </message>
+    <message>
+        <source>Delete the autosaved copy</source>
+        <translation>Die automatisch gespeicherte Kopie löschen</translation>
+    </message>
+    <message>
+        <source>Later (File &gt; Recover keeps it)</source>
+        <translation>Später (bleibt unter Datei &gt; Wiederherstellen)</translation>
+    </message>
+    <message>
+        <source>Hide</source>
+        <translation>Ausblenden</translation>
     </message>
 </context>
 <context>

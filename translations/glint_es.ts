@@ -510,14 +510,6 @@
         <translation>una escena sin título</translation>
     </message>
     <message>
-        <source>Recover unsaved work</source>
-        <translation>Recuperar el trabajo sin guardar</translation>
-    </message>
-    <message>
-        <source>Glint did not close normally last time. Recover the autosaved copy of %1?</source>
-        <translation>Glint no se cerró correctamente la última vez. ¿Recuperar la copia guardada automáticamente de %1?</translation>
-    </message>
-    <message>
         <source>Cannot recover the autosaved copy: %1</source>
         <translation>No se puede recuperar la copia guardada automáticamente: %1</translation>
     </message>
@@ -740,6 +732,37 @@
             <numerusform>%n triángulo</numerusform>
             <numerusform>%n triángulos</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>%1 (autosaved %2)</source>
+        <translation>%1 (autoguardado %2)</translation>
+    </message>
+    <message>
+        <source>Discard all autosaved copies</source>
+        <translation>Descartar todas las copias autoguardadas</translation>
+    </message>
+    <message>
+        <source>Nothing to recover</source>
+        <translation>Nada que recuperar</translation>
+    </message>
+    <message>
+        <source>Glint did not close normally: the copy of %1 autosaved at %2 is newer than the file.</source>
+        <translation>Glint no se cerró con normalidad: la copia de %1 autoguardada a las %2 es más reciente que el archivo.</translation>
+    </message>
+    <message>
+        <source>Glint did not close normally: unsaved work on %1 was autosaved at %2.</source>
+        <translation>Glint no se cerró con normalidad: el trabajo sin guardar en %1 se autoguardó a las %2.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n more in File &gt; Recover.</source>
+        <translation>
+            <numerusform>%n más en Archivo &gt; Recuperar.</numerusform>
+            <numerusform>%n más en Archivo &gt; Recuperar.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Re&amp;cover</source>
+        <translation>Re&amp;cuperar</translation>
     </message>
 </context>
 <context>
@@ -1537,6 +1560,33 @@
     <message>
         <source>Environment image status</source>
         <translation>Estado de la imagen de entorno</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::RecoveryBar</name>
+    <message>
+        <source>Recover unsaved work</source>
+        <translation>Recuperar el trabajo sin guardar</translation>
+    </message>
+    <message>
+        <source>Recover</source>
+        <translation>Recuperar</translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation>Descartar</translation>
+    </message>
+    <message>
+        <source>Delete the autosaved copy</source>
+        <translation>Eliminar la copia autoguardada</translation>
+    </message>
+    <message>
+        <source>Later (File &gt; Recover keeps it)</source>
+        <translation>Más tarde (queda en Archivo &gt; Recuperar)</translation>
+    </message>
+    <message>
+        <source>Hide</source>
+        <translation>Ocultar</translation>
     </message>
 </context>
 <context>

@@ -510,14 +510,6 @@
         <translation>une scène sans titre</translation>
     </message>
     <message>
-        <source>Recover unsaved work</source>
-        <translation>Récupérer le travail non enregistré</translation>
-    </message>
-    <message>
-        <source>Glint did not close normally last time. Recover the autosaved copy of %1?</source>
-        <translation>Glint ne s&apos;est pas fermé normalement la dernière fois. Récupérer la copie enregistrée automatiquement de %1 ?</translation>
-    </message>
-    <message>
         <source>Cannot recover the autosaved copy: %1</source>
         <translation>Impossible de récupérer la copie enregistrée automatiquement : %1</translation>
     </message>
@@ -740,6 +732,37 @@
             <numerusform>%n triangle</numerusform>
             <numerusform>%n triangles</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>%1 (autosaved %2)</source>
+        <translation>%1 (enregistré automatiquement %2)</translation>
+    </message>
+    <message>
+        <source>Discard all autosaved copies</source>
+        <translation>Supprimer toutes les copies enregistrées automatiquement</translation>
+    </message>
+    <message>
+        <source>Nothing to recover</source>
+        <translation>Rien à récupérer</translation>
+    </message>
+    <message>
+        <source>Glint did not close normally: the copy of %1 autosaved at %2 is newer than the file.</source>
+        <translation>Glint ne s&apos;est pas fermé normalement : la copie de %1 enregistrée automatiquement à %2 est plus récente que le fichier.</translation>
+    </message>
+    <message>
+        <source>Glint did not close normally: unsaved work on %1 was autosaved at %2.</source>
+        <translation>Glint ne s&apos;est pas fermé normalement : le travail non enregistré sur %1 a été enregistré automatiquement à %2.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n more in File &gt; Recover.</source>
+        <translation>
+            <numerusform>%n autre dans Fichier &gt; Récupérer.</numerusform>
+            <numerusform>%n autres dans Fichier &gt; Récupérer.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Re&amp;cover</source>
+        <translation>Ré&amp;cupérer</translation>
     </message>
 </context>
 <context>
@@ -1537,6 +1560,33 @@
     <message>
         <source>Environment image status</source>
         <translation>État de l&apos;image d&apos;environnement</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::RecoveryBar</name>
+    <message>
+        <source>Recover unsaved work</source>
+        <translation>Récupérer le travail non enregistré</translation>
+    </message>
+    <message>
+        <source>Recover</source>
+        <translation>Récupérer</translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation>Supprimer</translation>
+    </message>
+    <message>
+        <source>Delete the autosaved copy</source>
+        <translation>Supprimer la copie enregistrée automatiquement</translation>
+    </message>
+    <message>
+        <source>Later (File &gt; Recover keeps it)</source>
+        <translation>Plus tard (reste dans Fichier &gt; Récupérer)</translation>
+    </message>
+    <message>
+        <source>Hide</source>
+        <translation>Masquer</translation>
     </message>
 </context>
 <context>

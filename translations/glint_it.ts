@@ -510,14 +510,6 @@
         <translation>una scena senza titolo</translation>
     </message>
     <message>
-        <source>Recover unsaved work</source>
-        <translation>Recupera il lavoro non salvato</translation>
-    </message>
-    <message>
-        <source>Glint did not close normally last time. Recover the autosaved copy of %1?</source>
-        <translation>L&apos;ultima volta Glint non si è chiuso normalmente. Recuperare la copia salvata automaticamente di %1?</translation>
-    </message>
-    <message>
         <source>Cannot recover the autosaved copy: %1</source>
         <translation>Impossibile recuperare la copia salvata automaticamente: %1</translation>
     </message>
@@ -740,6 +732,37 @@
             <numerusform>%n triangolo</numerusform>
             <numerusform>%n triangoli</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>%1 (autosaved %2)</source>
+        <translation>%1 (salvato automaticamente %2)</translation>
+    </message>
+    <message>
+        <source>Discard all autosaved copies</source>
+        <translation>Scarta tutte le copie salvate automaticamente</translation>
+    </message>
+    <message>
+        <source>Nothing to recover</source>
+        <translation>Niente da recuperare</translation>
+    </message>
+    <message>
+        <source>Glint did not close normally: the copy of %1 autosaved at %2 is newer than the file.</source>
+        <translation>Glint non si è chiuso normalmente: la copia di %1 salvata automaticamente alle %2 è più recente del file.</translation>
+    </message>
+    <message>
+        <source>Glint did not close normally: unsaved work on %1 was autosaved at %2.</source>
+        <translation>Glint non si è chiuso normalmente: il lavoro non salvato su %1 è stato salvato automaticamente alle %2.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n more in File &gt; Recover.</source>
+        <translation>
+            <numerusform>Un&apos;altra in File &gt; Recupera.</numerusform>
+            <numerusform>Altre %n in File &gt; Recupera.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Re&amp;cover</source>
+        <translation>Re&amp;cupera</translation>
     </message>
 </context>
 <context>
@@ -1537,6 +1560,33 @@
     <message>
         <source>Environment image status</source>
         <translation>Stato dell&apos;immagine d&apos;ambiente</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::RecoveryBar</name>
+    <message>
+        <source>Recover unsaved work</source>
+        <translation>Recupera il lavoro non salvato</translation>
+    </message>
+    <message>
+        <source>Recover</source>
+        <translation>Recupera</translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation>Scarta</translation>
+    </message>
+    <message>
+        <source>Delete the autosaved copy</source>
+        <translation>Elimina la copia salvata automaticamente</translation>
+    </message>
+    <message>
+        <source>Later (File &gt; Recover keeps it)</source>
+        <translation>Più tardi (resta in File &gt; Recupera)</translation>
+    </message>
+    <message>
+        <source>Hide</source>
+        <translation>Nascondi</translation>
     </message>
 </context>
 <context>

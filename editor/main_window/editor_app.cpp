@@ -76,8 +76,9 @@ int runEditor(int argc, char** argv, const char* version) {
         window.log().warning(why);
     }
     window.show();
-    const bool recovered = window.offerRecovery();
-    if (!recovered && !parser.positionalArguments().isEmpty()) window.beginOpen(parser.positionalArguments().first());
+    // The file asked for opens as usual; work an earlier session left unsaved is offered beside it.
+    if (!parser.positionalArguments().isEmpty()) window.beginOpen(parser.positionalArguments().first());
+    window.offerRecovery();
     return app.exec();
 }
 

@@ -3,6 +3,7 @@
 #include "autosave.h"
 #include "load_progress.h"
 #include "recent_files.h"
+#include "recovery_bar.h"
 #include "theme.h"
 
 #include "editor/document/document.h"
@@ -25,11 +26,14 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
+#include <QLocale>
+#include <QMenu>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QScreen>
 #include <QSettings>
 #include <QStatusBar>
+#include <QVBoxLayout>
 
 namespace glint::editor {
 
@@ -61,6 +65,18 @@ MainWindow::MainWindow(Options options, QWidget* parent) : QMainWindow(parent), 
     connect(document_, &Document::warningsReported, log_, &LogPanel::warnings);
     connect(autosave_, &Autosave::failed, this, [this](const QString& m) { log_->warning(tr("Autosave failed: %1").arg(m)); });
     connectLoading();
+    connect(recoveryBar_, &RecoveryBar::recoverClicked, this, [this] {
+        if (const auto leftover = autosave_->leftover()) recover(*leftover);
+    });
+    connect(recoveryBar_, &RecoveryBar::discardClicked, this, [this] {
+        if (const auto leftover = autosave_->leftover()) autosave_->discard(*leftover);
+        refreshRecovery();
+    });
+    connect(recoveryBar_, &RecoveryBar::dismissed, this, [this] { recoveryDismissed_ = true; });
+    // "Newer than the file" depends on the file shown.
+    connect(document_, &Document::fileChanged, this, [this] {
+        if (recoveryBar_->isVisible()) refreshRecovery();
+    });
     updateTitle();
     updateStatus();
     updateUndoActions();
@@ -73,21 +89,31 @@ MainWindow::~MainWindow() {
     delete autosave_;
 }
 
+// The viewport (or a placeholder) under the recovery bar, which shows only when there is work to
+// recover.
 void MainWindow::createCentralView() {
+    auto* central = new QWidget(this);
+    auto* layout = new QVBoxLayout(central);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(0);
+    recoveryBar_ = new RecoveryBar(central);
+    layout->addWidget(recoveryBar_);
+    setCentralWidget(central);
     if (options_.createViewport) {
         createViewport();
+        layout->addWidget(viewport_, 1);
         return;
     }
     // No viewport wanted (no OpenGL 4.1, or tests of the panels alone): say so where it would be.
-    auto* placeholder = new QLabel(this);
+    auto* placeholder = new QLabel(central);
     keepTranslated(placeholder, TextRole::Text, staticMetaObject.className(), QT_TR_NOOP("The viewport is not available in this build."));
     placeholder->setAlignment(Qt::AlignCenter);
     keepTranslated(placeholder, TextRole::AccessibleName, staticMetaObject.className(), QT_TR_NOOP("Viewport"));
-    setCentralWidget(placeholder);
+    layout->addWidget(placeholder, 1);
 }
 
 void MainWindow::createViewport() {
-    auto* viewport = new Viewport(*document_, this);
+    auto* viewport = new Viewport(*document_, centralWidget());
     viewport_ = viewport;
     keepTranslated(viewport, TextRole::AccessibleName, staticMetaObject.className(), QT_TR_NOOP("Viewport"));
     viewportActions_ = viewport->allActions();
@@ -106,7 +132,6 @@ void MainWindow::createViewport() {
     // While the view flies (right drag), W/A/S/D/Q/E move the camera: the view keeps its keys.
     viewport->view().installEventFilter(this);
     connect(viewport, &Viewport::statusMessage, this, [this](const QString& text) { renderLabel_->setText(text); });
-    setCentralWidget(viewport);
 }
 
 QDockWidget* MainWindow::addDock(QWidget* widget, const char* title, const QString& name, Qt::DockWidgetArea area) {
@@ -275,21 +300,61 @@ bool MainWindow::saveAs(const QString& path) {
 }
 
 bool MainWindow::offerRecovery() {
+    recoveryDismissed_ = false;
+    refreshRecovery();
+    if (options_.askBeforeRecovery) return false;
     const auto leftover = autosave_->leftover();
-    if (!leftover) return false;
-    const QString name = leftover->original.isEmpty() ? tr("an untitled scene") : leftover->original;
-    if (options_.askBeforeRecovery) {
-        const auto answer = QMessageBox::question(
-            this, tr("Recover unsaved work"),
-            tr("Glint did not close normally last time. Recover the autosaved copy of %1?").arg(name),
-            QMessageBox::Yes | QMessageBox::No, QMessageBox::Yes);
-        if (answer != QMessageBox::Yes) {
-            autosave_->discard();
-            return false;
-        }
-    }
-    document_->startRecover(leftover->copy, leftover->original);
+    return leftover && recover(*leftover);
+}
+
+bool MainWindow::recover(const Autosave::Leftover& leftover) {
+    if (!maybeSave()) return false;
+    recovering_ = leftover;
+    document_->startRecover(leftover.copy, leftover.original);
     return true;
+}
+
+namespace {
+
+QString leftoverName(const Autosave::Leftover& leftover) {
+    return leftover.original.isEmpty() ? MainWindow::tr("an untitled scene") : QFileInfo(leftover.original).fileName();
+}
+
+} // namespace
+
+// The bar shows the newest copy; File > Recover lists them all. Both follow what is left over now.
+void MainWindow::refreshRecovery() {
+    const QList<Autosave::Leftover> leftovers = autosave_->leftovers();
+    recoverMenu_->clear();
+    for (const Autosave::Leftover& leftover : leftovers) {
+        const QString when = QLocale().toString(leftover.saved, QLocale::ShortFormat);
+        QAction* action = recoverMenu_->addAction(tr("%1 (autosaved %2)").arg(leftoverName(leftover), when), this,
+                                                  [this, leftover] { recover(leftover); });
+        action->setToolTip(leftover.original);
+    }
+    if (!leftovers.isEmpty()) {
+        recoverMenu_->addSeparator();
+        recoverMenu_->addAction(tr("Discard all autosaved copies"), this, [this] {
+            for (const Autosave::Leftover& leftover : autosave_->leftovers()) autosave_->discard(leftover);
+            refreshRecovery();
+        });
+    } else {
+        recoverMenu_->addAction(tr("Nothing to recover"))->setEnabled(false);
+    }
+    if (leftovers.isEmpty() || recoveryDismissed_ || recovering_) {
+        recoveryBar_->hide();
+        return;
+    }
+    const Autosave::Leftover& newest = leftovers.front();
+    const QString when = QLocale().toString(newest.saved, QLocale::ShortFormat);
+    const bool thisFile = !newest.original.isEmpty() && QFileInfo(newest.original) == QFileInfo(document_->filePath());
+    QString text = thisFile ? tr("Glint did not close normally: the copy of %1 autosaved at %2 is newer than the file.").arg(leftoverName(newest), when)
+                            : tr("Glint did not close normally: unsaved work on %1 was autosaved at %2.").arg(leftoverName(newest), when);
+    if (leftovers.size() > 1)
+        text += QLatin1Char(' ') + countText(staticMetaObject.className(), QT_TR_N_NOOP("%n more in File > Recover."),
+                                             "%n more in File > Recover.", static_cast<int>(leftovers.size()) - 1);
+    recoveryBar_->setText(text);
+    recoveryBar_->show();
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
@@ -350,6 +415,7 @@ void MainWindow::retranslate() {
     updateStatus();
     updateUndoActions();
     rebuildRecentMenu();
+    refreshRecovery();
 }
 
 } // namespace glint::editor

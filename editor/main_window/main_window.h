@@ -2,6 +2,8 @@
 // The editor's main window: the viewport in the middle, dockable panels around it (outliner,
 // properties, scene settings, undo history, log), menus, a toolbar and a status bar. The window
 // owns the Document; every panel edits it through commands and follows its signals.
+#include "autosave.h"
+
 #include "editor/document/document.h"
 #include "editor/preferences/preferences.h"
 
@@ -11,6 +13,8 @@
 #include <QPalette>
 #include <QUrl>
 
+#include <optional>
+
 class QAction;
 class QDockWidget;
 class QLabel;
@@ -18,12 +22,12 @@ class QMenu;
 
 namespace glint::editor {
 
-class Autosave;
 class HistoryPanel;
 class LoadProgress;
 class LogPanel;
 class OutlinerPanel;
 class PropertiesPanel;
+class RecoveryBar;
 class TimelinePanel;
 class Viewport;
 
@@ -32,7 +36,7 @@ class MainWindow : public QMainWindow {
 public:
     struct Options {
         QString autosaveFolder;      // empty: the standard place
-        bool askBeforeRecovery = true; // false: recover without asking (tests)
+        bool askBeforeRecovery = true; // false: offerRecovery() recovers the newest copy at once (tests)
         QPalette systemPalette;
         bool createViewport = true;    // false: a placeholder (tests of the panels alone)
     };
@@ -67,9 +71,14 @@ public:
     bool openFile(const QString& path);
     bool save();
     bool saveAs(const QString& path = {});
-    // Offers a copy an earlier session left behind; returns whether its recovery started (it is
-    // read in the background like an open).
+    // Offers the copies earlier sessions left behind (they crashed or were killed) in a bar over
+    // the viewport and in File > Recover, never in a modal dialog: the file asked for opens as
+    // usual. Returns whether a recovery started (only without askBeforeRecovery).
     bool offerRecovery();
+    // Reads `leftover` in the background in place of the document (after the unsaved-changes
+    // prompt); returns whether it started.
+    bool recover(const Autosave::Leftover& leftover);
+    RecoveryBar& recoveryBar() { return *recoveryBar_; }
     LoadProgress& loadProgress() { return *loadProgress_; }
     // What dropping files does: a scene file replaces the document (after asking about unsaved
     // changes); with `merge`, or for formats Glint only imports, files are merged into it.
@@ -110,6 +119,7 @@ private:
     void onLoadFailed(Document::LoadKind kind, const QString& path, const QString& message);
     void onLoadCancelled(Document::LoadKind kind, const QString& path);
     void updateLoadActions();
+    void refreshRecovery();
     // `text` is the untranslated source (QT_TR_NOOP): the action follows language changes.
     QAction* makeAction(const QString& name, const char* text, const QKeySequence& shortcut = {});
     void retranslate(); // after a language change: kept texts, then the ones built from data
@@ -125,6 +135,10 @@ private:
     Viewport* viewport_ = nullptr;
     TimelinePanel* timeline_ = nullptr;
     QMenu* recentMenu_ = nullptr;
+    QMenu* recoverMenu_ = nullptr;
+    RecoveryBar* recoveryBar_ = nullptr;
+    std::optional<Autosave::Leftover> recovering_; // the copy being read
+    bool recoveryDismissed_ = false;
     QMenu* viewMenu_ = nullptr;
     QLabel* selectionLabel_ = nullptr;
     QLabel* sceneLabel_ = nullptr;

@@ -124,6 +124,9 @@ void MainWindow::createMenus() {
     file->addAction(find("file.open"));
     recentMenu_ = keptMenu(file->addMenu(QString()), QT_TR_NOOP("Open &Recent"));
     rebuildRecentMenu();
+    recoverMenu_ = keptMenu(file->addMenu(QString()), QT_TR_NOOP("Re&cover"));
+    recoverMenu_->setObjectName("file.recover");
+    refreshRecovery();
     file->addAction(find("file.import"));
     file->addSeparator();
     file->addAction(find("file.save"));

@@ -2,6 +2,7 @@
 // is reported when a load ends, and which actions a load in flight disables.
 #include "main_window.h"
 
+#include "autosave.h"
 #include "load_progress.h"
 #include "recent_files.h"
 
@@ -66,6 +67,9 @@ void MainWindow::onLoaded(Document::LoadKind kind, const QString& path) {
         break;
     case Document::LoadKind::Recover:
         log_->info(tr("Recovered the autosaved copy of %1").arg(path.isEmpty() ? tr("an untitled scene") : path));
+        if (recovering_) autosave_->adopt(*recovering_);
+        recovering_.reset();
+        refreshRecovery();
         break;
     }
 }
@@ -78,7 +82,11 @@ void MainWindow::onLoadFailed(Document::LoadKind kind, const QString& path, cons
         QMessageBox::warning(this, tr("Open"), tr("Cannot open %1:\n%2").arg(QFileInfo(path).fileName(), message));
         break;
     case Document::LoadKind::Import: report(tr("Cannot import %1: %2").arg(path, message)); break;
-    case Document::LoadKind::Recover: report(tr("Cannot recover the autosaved copy: %1").arg(message)); break;
+    case Document::LoadKind::Recover:
+        report(tr("Cannot recover the autosaved copy: %1").arg(message));
+        recovering_.reset();
+        refreshRecovery();
+        break;
     }
 }
 
@@ -88,6 +96,10 @@ void MainWindow::onLoadCancelled(Document::LoadKind kind, const QString& path) {
                                                             : tr("Opening %1 cancelled").arg(name);
     log_->info(text);
     statusBar()->showMessage(text, 4000);
+    if (kind == Document::LoadKind::Recover) {
+        recovering_.reset();
+        refreshRecovery();
+    }
 }
 
 // Open stays available (a new open supersedes the one in flight) and so does Save (it saves the

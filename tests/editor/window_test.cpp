@@ -9,6 +9,7 @@
 #include "editor/log/log_panel.h"
 #include "editor/main_window/autosave.h"
 #include "editor/main_window/main_window.h"
+#include "editor/main_window/recovery_bar.h"
 #include "editor/outliner/outliner_panel.h"
 #include "editor/properties/properties_panel.h"
 #include "editor/timeline/timeline_panel.h"
@@ -17,6 +18,9 @@
 
 #include <QAction>
 #include <QComboBox>
+#include <QMenu>
+#include <QPushButton>
+#include <QTimer>
 #include <QLabel>
 #include <QApplication>
 #include <QScreen>
@@ -62,6 +66,7 @@ private slots:
     void openShowsNodesAndTitle();
     void saveReopenSaveIsByteIdentical();
     void autosaveIsRecoveredAfterACrash();
+    void recoveryWaitsBesideTheFileAskedFor();
     void droppedFilesOpenOrImport();
     void keymapOverridesApply();
     void firstStartFitsTheScreen();
@@ -145,6 +150,69 @@ void WindowTest::autosaveIsRecoveredAfterACrash() {
     QVERIFY(!QFile::exists(next.autosave().copyPath()));
     MainWindow third(panelsOnly(folder));
     QVERIFY(!third.offerRecovery());
+}
+
+// Issue 17, item 4: after a killed session, `glint OTHER.gltf` showed a modal question about the
+// earlier file and opened nothing until it was answered. Now OTHER opens at once, the copies (one
+// per file) wait in a bar and in File > Recover, and nothing modal comes up.
+void WindowTest::recoveryWaitsBesideTheFileAskedFor() {
+    const QString folder = temp_.filePath("autosave-killed");
+    {
+        auto* killed = new MainWindow(panelsOnly(folder));
+        QVERIFY(killed->openFile(cornellBox()));
+        QCOMPARE(renameNode(killed->document(), nodeNamed(killed->document(), "floor"), "crashed floor"), QString());
+        QCOMPARE(killed->autosave().saveNow(), QString());
+        delete killed; // no closeEvent: the copy stays, as after a crash
+    }
+    QTest::qWait(20); // the two copies' times differ (the newest is offered first)
+    {
+        auto* killed = new MainWindow(panelsOnly(folder)); // another session, an untitled scene
+        QCOMPARE(addNode(killed->document(), "lost ball", defaultShape(ShapeKind::Sphere)), QString());
+        QCOMPARE(killed->autosave().saveNow(), QString());
+        delete killed;
+    }
+    MainWindow::Options options = panelsOnly(folder);
+    options.askBeforeRecovery = true; // as the editor starts
+    MainWindow window(options);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QString modal;
+    QTimer watchdog;
+    QObject::connect(&watchdog, &QTimer::timeout, [&] {
+        if (QWidget* dialog = QApplication::activeModalWidget()) {
+            modal = dialog->windowTitle();
+            dialog->close();
+        }
+    });
+    watchdog.start(20);
+    const QString other = QStringLiteral(GLINT_TEST_DATA_DIR "/gltf/2CylinderEngine/2CylinderEngine.glb");
+    window.beginOpen(other);
+    window.offerRecovery();
+    QTRY_COMPARE(window.document().scene().nodeCount(), std::size_t{82});
+    QVERIFY(window.windowTitle().contains("2CylinderEngine.glb"));
+    QVERIFY2(modal.isEmpty(), qPrintable(modal));
+    QVERIFY(window.recoveryBar().isVisible());
+    QVERIFY2(window.recoveryBar().text().contains("untitled scene") && window.recoveryBar().text().contains("1 more in File > Recover"),
+             qPrintable(window.recoveryBar().text()));
+    auto* menu = window.findChild<QMenu*>("file.recover");
+    QVERIFY(menu);
+    QAction* cornell = nullptr;
+    for (QAction* action : menu->actions())
+        if (action->text().startsWith("cornell_box.gltf")) cornell = action;
+    QVERIFY(cornell);
+    QCOMPARE(window.autosave().leftovers().size(), qsizetype(2));
+    cornell->trigger();
+    QTRY_VERIFY(nodeNamed(window.document(), "crashed floor").valid());
+    QVERIFY(window.windowTitle().contains("cornell_box.gltf"));
+    QVERIFY(window.document().isModified());
+    QVERIFY2(modal.isEmpty(), qPrintable(modal));
+    // The recovered work is this session's copy now; the untitled one is still offered.
+    QTRY_VERIFY(window.recoveryBar().isVisible());
+    QCOMPARE(window.autosave().leftovers().size(), qsizetype(1));
+    QVERIFY(QFile::exists(window.autosave().copyPath()));
+    QTest::mouseClick(window.recoveryBar().discardButton(), Qt::LeftButton);
+    QVERIFY(window.autosave().leftovers().isEmpty());
+    QVERIFY(!window.recoveryBar().isVisible());
 }
 
 void WindowTest::droppedFilesOpenOrImport() {
