@@ -15,6 +15,27 @@
 
 namespace glint::editor {
 
+namespace {
+
+// The importer (Assimp) speaks in its own terms ("Validation failed: aiScene::mNumMeshes is 0"):
+// the common cases in words, with the file's name; anything else as it came (empty: no better words).
+QString importProblemInWords(const QString& file, const QString& message) {
+    const QString name = QFileInfo(file).fileName();
+    const auto has = [&](const char* text) { return message.contains(QLatin1String(text), Qt::CaseInsensitive); };
+    if (has("mNumMeshes is 0")) return MainWindow::tr("There are no meshes in %1: nothing to import.").arg(name);
+    if (has("contains no faces") || has("contains no vertices"))
+        return MainWindow::tr("%1 holds a mesh without any faces, so it cannot be imported.").arg(name);
+    if (has("No suitable reader found") || has("unsupported-format"))
+        return MainWindow::tr("%1 is in no format Glint imports (glTF, OBJ, PLY, STL, FBX, DAE, 3DS).").arg(name);
+    if (has("unexpected end of file") || has("unexpected EOF") || has("truncated"))
+        return MainWindow::tr("%1 ends too early: the file is damaged or was not copied completely.").arg(name);
+    if (has("Unable to open file") || has("no such file")) return MainWindow::tr("%1 cannot be read.").arg(name);
+    if (has("the file is empty")) return MainWindow::tr("%1 is empty.").arg(name);
+    return {};
+}
+
+} // namespace
+
 void MainWindow::connectLoading() {
     connect(document_, &Document::loadStarted, this, &MainWindow::onLoadStarted);
     connect(document_, &Document::loadProgress, loadProgress_, &LoadProgress::setStage);
@@ -81,7 +102,17 @@ void MainWindow::onLoadFailed(Document::LoadKind kind, const QString& path, cons
         report(tr("Cannot open %1: %2").arg(path, message));
         QMessageBox::warning(this, tr("Open"), tr("Cannot open %1:\n%2").arg(QFileInfo(path).fileName(), message));
         break;
-    case Document::LoadKind::Import: report(tr("Cannot import %1: %2").arg(path, message)); break;
+    case Document::LoadKind::Import: {
+        // Where the user looks (the log may be behind the timeline), in words, as for an open.
+        const QString words = importProblemInWords(path, message);
+        report(words.isEmpty() ? tr("Cannot import %1: %2").arg(path, message) : tr("%1 (%2)").arg(words, message));
+        QMessageBox box(QMessageBox::Warning, tr("Import"),
+                        words.isEmpty() ? tr("Cannot import %1:\n%2").arg(QFileInfo(path).fileName(), message) : words,
+                        QMessageBox::Ok, this);
+        if (!words.isEmpty()) box.setDetailedText(message); // the importer's own words, for a bug report
+        box.exec();
+        break;
+    }
     case Document::LoadKind::Recover:
         report(tr("Cannot recover the autosaved copy: %1").arg(message));
         recovering_.reset();

@@ -21,6 +21,7 @@
 #include <QMessageBox>
 #include <QSignalSpy>
 #include <QTemporaryDir>
+#include <QTimer>
 #include <QToolButton>
 #include <QtTest>
 
@@ -336,6 +337,37 @@ private slots:
         QCOMPARE(document.filePath(), QFileInfo(cornellBox()).absoluteFilePath());
         QCOMPARE(document.scene().nodeCount(), std::size_t{9});
         QVERIFY(!document.isLoading());
+    }
+
+    // A failed import is said where the user looks and in words (issue 17): Assimp's
+    // "aiScene::mNumMeshes is 0" only reached the log panel, behind the Timeline tab.
+    void failedImportIsSaidInWords() {
+        MainWindow window(options("autosave-import-failed"));
+        ImportOptions importOptions;
+        importOptions.workerPath = GLINT_IMPORT_WORKER;
+        window.document().setImportOptions(importOptions);
+        window.show();
+        const QString obj = dir_.filePath("no_meshes.obj");
+        QFile file(obj);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("# an object without faces\no thing\nv 0 0 0\n");
+        file.close();
+        QString shown, details;
+        QTimer watchdog;
+        QObject::connect(&watchdog, &QTimer::timeout, [&] {
+            if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
+                shown = box->text();
+                details = box->detailedText();
+                box->accept();
+            }
+        });
+        watchdog.start(20);
+        window.beginImport(obj);
+        QTRY_VERIFY_WITH_TIMEOUT(!shown.isEmpty(), 20000);
+        QCOMPARE(shown, QString("There are no meshes in no_meshes.obj: nothing to import."));
+        QVERIFY2(details.contains("mNumMeshes"), qPrintable(details)); // the importer's words stay available
+        QVERIFY(window.log().line(window.log().count() - 1).contains("There are no meshes in no_meshes.obj"));
+        QCOMPARE(window.document().scene().nodeCount(), std::size_t{0});
     }
 
 private:
