@@ -764,6 +764,44 @@
         <source>Re&amp;cover</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
+    <message>
+        <source>There are no meshes in %1: nothing to import.</source>
+        <translation>%1 enthält keine Meshes: nichts zu importieren.</translation>
+    </message>
+    <message>
+        <source>%1 holds a mesh without any faces, so it cannot be imported.</source>
+        <translation>%1 enthält ein Mesh ohne Flächen und kann daher nicht importiert werden.</translation>
+    </message>
+    <message>
+        <source>%1 is in no format Glint imports (glTF, OBJ, PLY, STL, FBX, DAE, 3DS).</source>
+        <translation>%1 hat kein Format, das Glint importiert (glTF, OBJ, PLY, STL, FBX, DAE, 3DS).</translation>
+    </message>
+    <message>
+        <source>%1 ends too early: the file is damaged or was not copied completely.</source>
+        <translation>%1 endet zu früh: die Datei ist beschädigt oder wurde nicht vollständig kopiert.</translation>
+    </message>
+    <message>
+        <source>%1 cannot be read.</source>
+        <translation>%1 kann nicht gelesen werden.</translation>
+    </message>
+    <message>
+        <source>%1 is empty.</source>
+        <translation>%1 ist leer.</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>Importieren</translation>
+    </message>
+    <message>
+        <source>Cannot import %1:
+%2</source>
+        <translation>%1 kann nicht importiert werden:
+%2</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::NodeNames</name>
@@ -1560,6 +1598,14 @@
     <message>
         <source>Environment image status</source>
         <translation>Status des Umgebungsbilds</translation>
+    </message>
+    <message>
+        <source>An infinite plane: the node&apos;s y = 0, facing +Y; move and turn it with the transform. It has no size. In the glTF file other programs (Blender) get a 200 m square in its place.</source>
+        <translation>Eine unendliche Ebene: y = 0 des Knotens, nach +Y gerichtet; mit der Transformation verschieben und drehen. Sie hat keine Größe. In der glTF-Datei erhalten andere Programme (Blender) an ihrer Stelle ein Quadrat von 200 m.</translation>
+    </message>
+    <message>
+        <source>Half height (m)</source>
+        <translation>Halbe Höhe (m)</translation>
     </message>
 </context>
 <context>

@@ -764,6 +764,44 @@
         <source>Re&amp;cover</source>
         <translation>Re&amp;cuperar</translation>
     </message>
+    <message>
+        <source>There are no meshes in %1: nothing to import.</source>
+        <translation>%1 no contiene mallas: nada que importar.</translation>
+    </message>
+    <message>
+        <source>%1 holds a mesh without any faces, so it cannot be imported.</source>
+        <translation>%1 contiene una malla sin caras, así que no se puede importar.</translation>
+    </message>
+    <message>
+        <source>%1 is in no format Glint imports (glTF, OBJ, PLY, STL, FBX, DAE, 3DS).</source>
+        <translation>%1 no está en ningún formato que Glint importe (glTF, OBJ, PLY, STL, FBX, DAE, 3DS).</translation>
+    </message>
+    <message>
+        <source>%1 ends too early: the file is damaged or was not copied completely.</source>
+        <translation>%1 termina demasiado pronto: el archivo está dañado o no se copió completo.</translation>
+    </message>
+    <message>
+        <source>%1 cannot be read.</source>
+        <translation>%1 no se puede leer.</translation>
+    </message>
+    <message>
+        <source>%1 is empty.</source>
+        <translation>%1 está vacío.</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>Importar</translation>
+    </message>
+    <message>
+        <source>Cannot import %1:
+%2</source>
+        <translation>No se puede importar %1:
+%2</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::NodeNames</name>
@@ -1560,6 +1598,14 @@
     <message>
         <source>Environment image status</source>
         <translation>Estado de la imagen de entorno</translation>
+    </message>
+    <message>
+        <source>An infinite plane: the node&apos;s y = 0, facing +Y; move and turn it with the transform. It has no size. In the glTF file other programs (Blender) get a 200 m square in its place.</source>
+        <translation>Un plano infinito: y = 0 del nodo, orientado hacia +Y; muévelo y gíralo con la transformación. No tiene tamaño. En el archivo glTF, otros programas (Blender) reciben en su lugar un cuadrado de 200 m.</translation>
+    </message>
+    <message>
+        <source>Half height (m)</source>
+        <translation>Semialtura (m)</translation>
     </message>
 </context>
 <context>

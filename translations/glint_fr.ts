@@ -764,6 +764,44 @@
         <source>Re&amp;cover</source>
         <translation>Ré&amp;cupérer</translation>
     </message>
+    <message>
+        <source>There are no meshes in %1: nothing to import.</source>
+        <translation>%1 ne contient aucun maillage : rien à importer.</translation>
+    </message>
+    <message>
+        <source>%1 holds a mesh without any faces, so it cannot be imported.</source>
+        <translation>%1 contient un maillage sans aucune face : il ne peut pas être importé.</translation>
+    </message>
+    <message>
+        <source>%1 is in no format Glint imports (glTF, OBJ, PLY, STL, FBX, DAE, 3DS).</source>
+        <translation>%1 n&apos;est dans aucun format que Glint importe (glTF, OBJ, PLY, STL, FBX, DAE, 3DS).</translation>
+    </message>
+    <message>
+        <source>%1 ends too early: the file is damaged or was not copied completely.</source>
+        <translation>%1 se termine trop tôt : le fichier est endommagé ou n&apos;a pas été copié entièrement.</translation>
+    </message>
+    <message>
+        <source>%1 cannot be read.</source>
+        <translation>%1 ne peut pas être lu.</translation>
+    </message>
+    <message>
+        <source>%1 is empty.</source>
+        <translation>%1 est vide.</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>Importer</translation>
+    </message>
+    <message>
+        <source>Cannot import %1:
+%2</source>
+        <translation>Impossible d&apos;importer %1 :
+%2</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::NodeNames</name>
@@ -1560,6 +1598,14 @@
     <message>
         <source>Environment image status</source>
         <translation>État de l&apos;image d&apos;environnement</translation>
+    </message>
+    <message>
+        <source>An infinite plane: the node&apos;s y = 0, facing +Y; move and turn it with the transform. It has no size. In the glTF file other programs (Blender) get a 200 m square in its place.</source>
+        <translation>Un plan infini : y = 0 du nœud, orienté vers +Y ; déplacez-le et tournez-le avec la transformation. Il n&apos;a pas de taille. Dans le fichier glTF, les autres programmes (Blender) reçoivent à sa place un carré de 200 m.</translation>
+    </message>
+    <message>
+        <source>Half height (m)</source>
+        <translation>Demi-hauteur (m)</translation>
     </message>
 </context>
 <context>

@@ -764,6 +764,44 @@
         <source>Re&amp;cover</source>
         <translation>Re&amp;cupera</translation>
     </message>
+    <message>
+        <source>There are no meshes in %1: nothing to import.</source>
+        <translation>In %1 non ci sono mesh: niente da importare.</translation>
+    </message>
+    <message>
+        <source>%1 holds a mesh without any faces, so it cannot be imported.</source>
+        <translation>%1 contiene una mesh senza facce, quindi non può essere importato.</translation>
+    </message>
+    <message>
+        <source>%1 is in no format Glint imports (glTF, OBJ, PLY, STL, FBX, DAE, 3DS).</source>
+        <translation>%1 non è in un formato che Glint importa (glTF, OBJ, PLY, STL, FBX, DAE, 3DS).</translation>
+    </message>
+    <message>
+        <source>%1 ends too early: the file is damaged or was not copied completely.</source>
+        <translation>%1 finisce troppo presto: il file è danneggiato o non è stato copiato del tutto.</translation>
+    </message>
+    <message>
+        <source>%1 cannot be read.</source>
+        <translation>%1 non può essere letto.</translation>
+    </message>
+    <message>
+        <source>%1 is empty.</source>
+        <translation>%1 è vuoto.</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>Importa</translation>
+    </message>
+    <message>
+        <source>Cannot import %1:
+%2</source>
+        <translation>Impossibile importare %1:
+%2</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::NodeNames</name>
@@ -1560,6 +1598,14 @@
     <message>
         <source>Environment image status</source>
         <translation>Stato dell&apos;immagine d&apos;ambiente</translation>
+    </message>
+    <message>
+        <source>An infinite plane: the node&apos;s y = 0, facing +Y; move and turn it with the transform. It has no size. In the glTF file other programs (Blender) get a 200 m square in its place.</source>
+        <translation>Un piano infinito: y = 0 del nodo, rivolto verso +Y; spostalo e ruotalo con la trasformazione. Non ha dimensioni. Nel file glTF gli altri programmi (Blender) ricevono al suo posto un quadrato di 200 m.</translation>
+    </message>
+    <message>
+        <source>Half height (m)</source>
+        <translation>Semialtezza (m)</translation>
     </message>
 </context>
 <context>

@@ -168,7 +168,7 @@ void MainWindow::createDocks() {
     tabifyDockWidget(propertiesDock, sceneDock);
     propertiesDock->raise();
     // The viewport gets most of the room until the user's own layout is restored.
-    resizeDocks({outlinerDock, propertiesDock}, {260, 380}, Qt::Horizontal);
+    resizeDocks({outlinerDock, propertiesDock}, {260, 440}, Qt::Horizontal);
     resizeDocks({logDock}, {150}, Qt::Vertical);
     for (auto* panel : {static_cast<QObject*>(outliner_), static_cast<QObject*>(properties_),
                         static_cast<QObject*>(sceneSettings_), static_cast<QObject*>(history_)})

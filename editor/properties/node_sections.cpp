@@ -144,15 +144,26 @@ PropertyForm* makeShapeForm(Document& document, NodeId node, const Report& repor
                 0);
             if (!error.isEmpty()) report(error);
         });
-    addComponentFloat<Shape>(form, document, node, report, PropertyForm::tr("Radius (m)"), 0.01, 10.0, 3, &Shape::radius);
-    addComponentFloat<Shape>(form, document, node, report, PropertyForm::tr("Height (m)"), 0.01, 10.0, 3, &Shape::height);
+    // Only the fields the kind uses (the panel is rebuilt when the kind changes).
+    const Shape* shape = componentOf<Shape>(document, node);
+    const ShapeKind kind = shape ? shape->kind : ShapeKind::Sphere;
+    const bool round = kind == ShapeKind::Sphere || kind == ShapeKind::Disk || kind == ShapeKind::Cylinder;
+    if (round) addComponentFloat<Shape>(form, document, node, report, PropertyForm::tr("Radius (m)"), 0.01, 10.0, 3, &Shape::radius);
+    if (kind == ShapeKind::Cylinder)
+        addComponentFloat<Shape>(form, document, node, report, PropertyForm::tr("Height (m)"), 0.01, 10.0, 3, &Shape::height);
     const char* axes[] = {"X", "Y", "Z"};
     for (int axis = 0; axis < 3; ++axis) {
+        // A box has three sizes, a quad two (it lies in its XZ plane).
+        if (kind != ShapeKind::Box && !(kind == ShapeKind::Quad && axis != 1)) continue;
         form->addFloat(PropertyForm::tr("Size %1 (m)").arg(axes[axis]), 0.01, 10.0, 3,
                        readComponent<Shape>(document, node, [axis](const Shape& s) { return double(s.size[axis]); }),
                        writeComponent<Shape>(document, node, report,
                                              [axis](Shape& s, double v) { s.size[axis] = float(v); }));
     }
+    if (kind == ShapeKind::GroundPlane)
+        form->addNote(PropertyForm::tr("An infinite plane: the node's y = 0, facing +Y; move and turn it with the transform. "
+                                       "It has no size. In the glTF file other programs (Blender) get a 200 m square in "
+                                       "its place."));
     return form;
 }
 
@@ -197,15 +208,23 @@ PropertyForm* makeLightForm(Document& document, NodeId node, const Report& repor
     const QString mode = blender ? PropertyForm::tr("Blender units") : PropertyForm::tr("raw units");
     addComponentFloat<Light>(form, document, node, report, PropertyForm::tr("Intensity (%1, %2)").arg(units, mode), 0.0,
                              sun ? 20.0 : 1000.0, 3, &Light::intensity);
-    addComponentFloat<Light>(form, document, node, report, PropertyForm::tr("Range (m, 0 = infinite)"), 0.0, 100.0, 2,
-                             &Light::range);
-    addComponentFloat<Light>(form, document, node, report, PropertyForm::tr("Radius (m)"), 0.0, 2.0, 3, &Light::radius);
-    addComponentFloat<Light>(form, document, node, report, PropertyForm::tr("Inner cone (degrees)"), 0.0, 90.0, 1,
-                             &Light::innerConeAngle, kDegrees);
-    addComponentFloat<Light>(form, document, node, report, PropertyForm::tr("Outer cone (degrees)"), 0.0, 90.0, 1,
-                             &Light::outerConeAngle, kDegrees);
-    addComponentFloat<Light>(form, document, node, report, PropertyForm::tr("Sun angular diameter (degrees)"), 0.0, 10.0,
-                             2, &Light::angularDiameter, kDegrees);
+    // Only the fields the type uses (the panel is rebuilt when the type changes): a sun is
+    // directional, with no range or cone, and the others have no angular diameter.
+    const bool spot = light && light->type == LightType::Spot;
+    if (!sun) {
+        addComponentFloat<Light>(form, document, node, report, PropertyForm::tr("Range (m, 0 = infinite)"), 0.0, 100.0, 2,
+                                 &Light::range);
+        addComponentFloat<Light>(form, document, node, report, PropertyForm::tr("Radius (m)"), 0.0, 2.0, 3, &Light::radius);
+    }
+    if (spot) {
+        addComponentFloat<Light>(form, document, node, report, PropertyForm::tr("Inner cone (degrees)"), 0.0, 90.0, 1,
+                                 &Light::innerConeAngle, kDegrees);
+        addComponentFloat<Light>(form, document, node, report, PropertyForm::tr("Outer cone (degrees)"), 0.0, 90.0, 1,
+                                 &Light::outerConeAngle, kDegrees);
+    }
+    if (sun)
+        addComponentFloat<Light>(form, document, node, report, PropertyForm::tr("Sun angular diameter (degrees)"), 0.0, 10.0,
+                                 2, &Light::angularDiameter, kDegrees);
     return form;
 }
 
@@ -226,8 +245,12 @@ PropertyForm* makeCameraForm(Document& document, NodeId node, const Report& repo
                 0);
             if (!error.isEmpty()) report(error);
         });
-    addComponentFloat<Camera>(form, document, node, report, PropertyForm::tr("Vertical field of view (degrees)"), 1.0,
-                              170.0, 2, &Camera::yfov, kDegrees);
+    const Camera* camera = componentOf<Camera>(document, node);
+    if (camera && camera->projection == Projection::Orthographic)
+        addComponentFloat<Camera>(form, document, node, report, PropertyForm::tr("Half height (m)"), 0.01, 100.0, 3, &Camera::ymag);
+    else
+        addComponentFloat<Camera>(form, document, node, report, PropertyForm::tr("Vertical field of view (degrees)"), 1.0,
+                                  170.0, 2, &Camera::yfov, kDegrees);
     addComponentFloat<Camera>(form, document, node, report, PropertyForm::tr("Lens radius (m)"), 0.0, 0.5, 4,
                               &Camera::lensRadius);
     addComponentFloat<Camera>(form, document, node, report, PropertyForm::tr("Focus distance (m)"), 0.01, 100.0, 3,

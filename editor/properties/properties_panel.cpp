@@ -36,6 +36,8 @@ PropertiesPanel::Key PropertiesPanel::currentKey() const {
     key.component = node->component.index();
     key.material = materialOf(document_.scene(), key.node);
     if (const glint::Light* light = node->get<glint::Light>()) key.lightType = static_cast<int>(light->type);
+    if (const glint::Shape* shape = node->get<glint::Shape>()) key.shapeKind = static_cast<int>(shape->kind);
+    if (const glint::Camera* camera = node->get<glint::Camera>()) key.projection = static_cast<int>(camera->projection);
     return key;
 }
 

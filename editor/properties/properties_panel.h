@@ -37,6 +37,8 @@ private:
         std::size_t component = 0;
         MaterialId material;
         int lightType = -1;
+        int shapeKind = -1;  // the fields shown depend on the kind (a sphere has no height)
+        int projection = -1;
         bool operator==(const Key&) const = default;
     };
     Key currentKey() const;

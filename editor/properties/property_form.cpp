@@ -51,10 +51,21 @@ FloatField::FloatField(double min, double max, int decimals, QWidget* parent)
     spin_->setRange(-1e9, 1e9); // typing may go past the slider's range
     spin_->setSingleStep((max - min) / 100.0);
     spin_->setKeyboardTracking(false);
+    // The spin box is as wide as the numbers the slider spans need (its range, which typing may
+    // exceed, would make it hundreds of pixels wide and crush the slider into a stub); the slider
+    // takes the rest of the row.
+    QDoubleSpinBox widest;
+    widest.setDecimals(decimals);
+    widest.setRange(-std::max(std::abs(min), std::abs(max)) * 10.0, std::max(std::abs(min), std::abs(max)) * 10.0);
+    spin_->setMinimumWidth(widest.sizeHint().width());
+    spin_->setMaximumWidth(widest.sizeHint().width() + 24);
+    spin_->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Fixed);
+    slider_->setMinimumWidth(80); // narrower, the form puts the field under its label
+    slider_->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
     auto* layout = new QHBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(slider_, 2);
-    layout->addWidget(spin_, 1);
+    layout->addWidget(slider_, 1);
+    layout->addWidget(spin_, 0);
 
     connect(slider_, &QSlider::sliderPressed, this, &FloatField::dragStarted);
     connect(slider_, &QSlider::sliderReleased, this, &FloatField::dragFinished);
@@ -126,6 +137,7 @@ PropertyForm::PropertyForm(Document& document, const QString& title, QWidget* pa
     auto* box = new QGroupBox(title, this);
     layout_ = new QFormLayout(box);
     layout_->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    layout_->setRowWrapPolicy(QFormLayout::WrapLongRows); // a narrow dock puts fields under their labels
     auto* outer = new QVBoxLayout(this);
     outer->setContentsMargins(0, 0, 0, 0);
     outer->addWidget(box);
@@ -138,6 +150,14 @@ void PropertyForm::addWidget(const QString& label, QWidget* widget, std::functio
         refresh();
         refreshers_.push_back(std::move(refresh));
     }
+}
+
+void PropertyForm::addNote(const QString& text) {
+    auto* note = new QLabel(text, this);
+    note->setWordWrap(true);
+    note->setTextFormat(Qt::PlainText);
+    note->setAccessibleName(text);
+    layout_->addRow(note);
 }
 
 FloatField* PropertyForm::addFloat(const QString& label, double min, double max, int decimals,

@@ -82,6 +82,8 @@ public:
     QLineEdit* addText(const QString& label, std::function<QString()> get, std::function<void(const QString&)> set);
     void addInt(const QString& label, int min, int max, std::function<int()> get, std::function<void(int)> set);
     void addWidget(const QString& label, QWidget* widget, std::function<void()> refresh);
+    // A sentence across the form's width: what a field-less thing is (the infinite ground plane).
+    void addNote(const QString& text);
 
     void refresh();
 

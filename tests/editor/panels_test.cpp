@@ -3,6 +3,7 @@
 // and a slider drag as one undo step.
 #include "editor_fixtures.h"
 
+#include "editor/document/edit_operations.h"
 #include "editor/history_view/history_model.h"
 #include "editor/history_view/history_panel.h"
 #include "editor/outliner/outliner_model.h"
@@ -12,6 +13,8 @@
 
 #include <QApplication>
 #include <QColorDialog>
+#include <QComboBox>
+#include <QLabel>
 #include <QPushButton>
 #include <QTimer>
 
@@ -48,6 +51,7 @@ private slots:
     void historyPanelClickJumps();
     void filterKeepsMatchesAndTheirParents();
     void pickedColourIsStoredLinearAndShownAsPicked();
+    void fieldsFitTheKindAndTheDock();
 };
 
 void PanelsTest::outlinerSelectionFollowsBothWays() {
@@ -139,6 +143,55 @@ void PanelsTest::pickedColourIsStoredLinearAndShownAsPicked() {
     const glm::vec3 emission = materialNamed(document, "red").emissiveFactor;
     QVERIFY2(std::abs(emission.x - 0.2158f) < 1e-3f, qPrintable(QString::number(emission.x)));
     QCOMPARE(fieldNamed<ColorField>(panel, "Emission")->color().name(), QString("#808080"));
+}
+
+// Issue 17: a sphere showed Height and Size, a sun Range and cone angles; the ground plane's sizes
+// did nothing; at the dock's default width sliders were stubs and spin boxes lost their arrows.
+void PanelsTest::fieldsFitTheKindAndTheDock() {
+    Document document;
+    PropertiesPanel panel(document, false);
+    panel.resize(380, 900); // the dock's default width
+    panel.show();
+    QCOMPARE(addNode(document, "ball", defaultShape(ShapeKind::Sphere)), QString());
+    QCoreApplication::processEvents();
+    const auto shown = [&](const char* name) { return fieldNamed<QDoubleSpinBox>(panel, name) != nullptr; };
+    QVERIFY(shown("Radius (m)"));
+    QVERIFY(!shown("Height (m)") && !shown("Size X (m)"));
+    // Every slider has room to move and every spin box is whole, arrows included.
+    QTest::qWait(0);
+    for (FloatField* field : panel.findChildren<FloatField*>()) {
+        QVERIFY2(field->slider()->width() >= 60, qPrintable(QString("%1: slider %2 px").arg(field->slider()->accessibleName()).arg(field->slider()->width())));
+        const QPoint right = field->spinBox()->mapTo(panel.viewport(), QPoint(field->spinBox()->width(), 0));
+        QVERIFY2(right.x() <= panel.viewport()->width(), qPrintable(field->spinBox()->accessibleName()));
+        QVERIFY(field->spinBox()->width() >= field->spinBox()->minimumSizeHint().width() || field->spinBox()->width() >= 60);
+    }
+    auto* kind = fieldNamed<QComboBox>(panel, "Kind");
+    QVERIFY(kind);
+    const auto chooseKind = [&](ShapeKind k) {
+        kind->setCurrentIndex(int(k));
+        emit kind->activated(int(k));
+        QCoreApplication::processEvents();
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
+        kind = fieldNamed<QComboBox>(panel, "Kind");
+    };
+    chooseKind(ShapeKind::Cylinder);
+    QVERIFY(shown("Radius (m)") && shown("Height (m)") && !shown("Size X (m)"));
+    chooseKind(ShapeKind::Box);
+    QVERIFY(!shown("Radius (m)") && shown("Size X (m)") && shown("Size Y (m)") && shown("Size Z (m)"));
+    chooseKind(ShapeKind::Quad);
+    QVERIFY(shown("Size X (m)") && !shown("Size Y (m)") && shown("Size Z (m)"));
+    chooseKind(ShapeKind::GroundPlane);
+    QVERIFY(!shown("Radius (m)") && !shown("Size X (m)") && !shown("Height (m)"));
+    bool said = false;
+    for (QLabel* label : panel.findChildren<QLabel*>()) said = said || label->text().contains("infinite plane");
+    QVERIFY(said);
+    QCOMPARE(addNode(document, "sun", defaultLight(LightType::Sun)), QString());
+    QCoreApplication::processEvents();
+    QVERIFY(shown("Sun angular diameter (degrees)") && !shown("Range (m, 0 = infinite)") && !shown("Inner cone (degrees)"));
+    QCOMPARE(addNode(document, "spot", defaultLight(LightType::Spot)), QString());
+    QCoreApplication::processEvents();
+    QVERIFY(shown("Range (m, 0 = infinite)") && shown("Inner cone (degrees)") && shown("Outer cone (degrees)"));
+    QVERIFY(!shown("Sun angular diameter (degrees)"));
 }
 
 void PanelsTest::sliderDragIsOneUndoStep() {
