@@ -7,6 +7,7 @@
 #include <QCoreApplication>
 
 #include <algorithm>
+#include <set>
 #include <cstdio>
 #include <exception>
 
@@ -25,6 +26,21 @@ std::string uniqueMaterialName(const Scene& scene, const std::string& base) {
         char suffix[16];
         std::snprintf(suffix, sizeof suffix, ".%03d", i);
         if (!taken(base + suffix)) return base + suffix;
+    }
+}
+
+// The name Blender gives a copy: the original's without a ".NNN" suffix, then the first ".001",
+// ".002", ... that no node has ("Sphere" -> "Sphere.001", "Sphere.001" -> "Sphere.002").
+std::string copyName(const std::string& name, const std::set<std::string>& taken) {
+    std::string base = name;
+    const std::size_t dot = name.rfind('.');
+    if (dot != std::string::npos && name.size() - dot - 1 >= 3 &&
+        std::all_of(name.begin() + static_cast<std::ptrdiff_t>(dot) + 1, name.end(), [](char c) { return c >= '0' && c <= '9'; }))
+        base = name.substr(0, dot);
+    for (int i = 1;; ++i) {
+        char suffix[16];
+        std::snprintf(suffix, sizeof suffix, ".%03d", i);
+        if (!taken.count(base + suffix)) return base + suffix;
     }
 }
 
@@ -79,12 +95,22 @@ QString duplicateSelection(Document& document) {
     const std::vector<NodeId> nodes = topLevelSelection(document);
     if (nodes.empty()) return QCoreApplication::translate("glint::editor::EditOperations", "Nothing is selected.");
     std::vector<NodeId> copies;
+    std::set<std::string> taken;
+    for (const NodeId id : document.scene().depthFirst()) taken.insert(document.scene().at(id).name);
     QString error = inMacro(document, QCoreApplication::translate("glint::editor::EditOperations", "Duplicate"), [&] {
         for (NodeId id : nodes) {
             auto command = std::make_unique<DuplicateNode>(id);
             DuplicateNode* raw = command.get();
             document.push(std::move(command));
             if (!raw->copyIds().empty()) copies.push_back(raw->copyIds().front());
+            // Each copy gets a name of its own, as in Blender (an unnamed node stays unnamed).
+            for (const NodeId copy : raw->copyIds()) {
+                const std::string& name = document.scene().at(copy).name;
+                if (name.empty()) continue;
+                const std::string unique = copyName(name, taken);
+                taken.insert(unique);
+                document.push(std::make_unique<RenameNode>(copy, unique));
+            }
         }
     });
     if (error.isEmpty()) document.setSelection(copies);

@@ -6,6 +6,7 @@
 #include "editor/history_view/history_model.h"
 #include "editor/outliner/outliner_model.h"
 #include "editor/preferences/language.h"
+#include "scene/history/node_commands.h"
 
 #include <QAbstractItemModelTester>
 #include <QApplication>
@@ -36,6 +37,7 @@ private slots:
     void selectionComesBackOnUndo();
     void translationsAreCompleteAndLoad();
     void unnamedNodesShowDerivedNames();
+    void duplicatesAreNamedAsInBlender();
 };
 
 void ModelsTest::outlinerFollowsTheDocument() {
@@ -236,6 +238,32 @@ void ModelsTest::unnamedNodesShowDerivedNames() {
     const QJsonArray nodes = QJsonDocument::fromJson(saved.readAll()).object()["nodes"].toArray();
     QCOMPARE(nodes.size(), 82);
     for (const QJsonValue& node : nodes) QVERIFY(!node.toObject().contains("name"));
+}
+
+// "Sphere" duplicated is "Sphere.001", as in Blender (it was a second "Sphere"), as one undo step.
+void ModelsTest::duplicatesAreNamedAsInBlender() {
+    Document document;
+    QCOMPARE(addNode(document, "Sphere", defaultShape(ShapeKind::Sphere)), QString());
+    const NodeId sphere = nodeNamed(document, "Sphere");
+    const auto duplicate = [&](NodeId id) {
+        document.setSelection({id});
+        const std::size_t steps = document.history().index();
+        const QString error = duplicateSelection(document);
+        if (!error.isEmpty() || document.history().index() != steps + 1) return std::string("(failed)");
+        return document.scene().at(document.currentNode()).name;
+    };
+    QCOMPARE(duplicate(sphere), std::string("Sphere.001"));
+    QCOMPARE(duplicate(sphere), std::string("Sphere.002"));
+    QCOMPARE(duplicate(nodeNamed(document, "Sphere.001")), std::string("Sphere.003"));
+    document.undo(); // the copy and its name go together
+    QVERIFY(!nodeNamed(document, "Sphere.003").valid());
+    QCOMPARE(duplicate(nodeNamed(document, "Sphere.002")), std::string("Sphere.003"));
+    // A node without a name stays without one (its derived name is shown).
+    Node unnamed;
+    auto add = std::make_unique<AddNode>(std::move(unnamed));
+    AddNode* raw = add.get();
+    document.push(std::move(add));
+    QCOMPARE(duplicate(raw->nodeId()), std::string());
 }
 
 QTEST_MAIN(ModelsTest)
