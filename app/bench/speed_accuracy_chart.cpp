@@ -11,6 +11,7 @@
 #include <QSvgGenerator>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -20,13 +21,19 @@ namespace {
 constexpr int chartWidth = 900;
 constexpr int chartHeight = 600;
 
+// Qt labels a log axis only at the powers of its base inside the range: a range within one decade
+// or two (0.02 to 0.3) got the single label "0.1". The range is widened to whole decades, so every
+// decade it spans is labelled, both ends included, with the 2..9 minor ticks between.
 QLogValueAxis* logAxis(const QString& title, double low, double high) {
     auto* axis = new QLogValueAxis;
     axis->setTitleText(title);
     axis->setBase(10.0);
     axis->setLabelFormat("%g");
     axis->setMinorTickCount(8);
-    axis->setRange(low, high);
+    const double first = std::pow(10.0, std::floor(std::log10(low) + 1e-9));
+    double last = std::pow(10.0, std::ceil(std::log10(high) - 1e-9));
+    if (last <= first) last = first * 10.0;
+    axis->setRange(first * (1.0 - 1e-6), last * (1.0 + 1e-6)); // Qt drops an end label that rounds outside
     return axis;
 }
 
