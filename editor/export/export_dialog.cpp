@@ -120,8 +120,16 @@ void ExportDialog::buildForm(Kind kind) {
         last_->hide();
     }
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Cancel, this);
-    keepTranslated(buttons->addButton(QString(), QDialogButtonBox::AcceptRole), TextRole::Text, staticMetaObject.className(), QT_TR_NOOP("Export"));
-    connect(buttons, &QDialogButtonBox::accepted, this, &ExportDialog::startExport);
+    // A render can take minutes: Enter after typing a file name or a number must not start one, so
+    // Export is no default button (an accept button would be made one), and no button of the
+    // dialog becomes one by default (Browse would open a file dialog); only a click starts it.
+    QPushButton* exportButton = buttons->addButton(QString(), QDialogButtonBox::ActionRole);
+    keepTranslated(exportButton, TextRole::Text, staticMetaObject.className(), QT_TR_NOOP("Export"));
+    for (QPushButton* button : findChildren<QPushButton*>()) {
+        button->setAutoDefault(false);
+        button->setDefault(false);
+    }
+    connect(exportButton, &QPushButton::clicked, this, &ExportDialog::startExport);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(form);

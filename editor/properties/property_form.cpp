@@ -8,6 +8,7 @@
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
+#include <QKeyEvent>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
@@ -143,8 +144,46 @@ PropertyForm::PropertyForm(Document& document, const QString& title, QWidget* pa
     outer->addWidget(box);
 }
 
+namespace {
+
+constexpr const char* kUncommitted = "_glint_uncommitted"; // a line edit's typing not yet applied
+
+// Whether the field holds typing that Enter (or leaving it) has not applied yet.
+bool uncommitted(QObject* field) {
+    if (auto* spin = qobject_cast<QDoubleSpinBox*>(field)) return spin->cleanText() != spin->textFromValue(spin->value());
+    if (auto* spin = qobject_cast<QSpinBox*>(field)) {
+        QString shown = spin->locale().toString(spin->value()); // QSpinBox::textFromValue, which is protected
+        if (!spin->isGroupSeparatorShown()) shown.remove(spin->locale().groupSeparator());
+        return spin->cleanText() != shown;
+    }
+    return field->property(kUncommitted).toBool();
+}
+
+} // namespace
+
+bool PropertyForm::eventFilter(QObject* watched, QEvent* event) {
+    if (event->type() == QEvent::ShortcutOverride) {
+        auto* key = static_cast<QKeyEvent*>(event);
+        const bool undoKey = key->matches(QKeySequence::Undo) || key->matches(QKeySequence::Redo);
+        if (undoKey && !uncommitted(watched)) return true; // not taken by the field: the window's Undo/Redo run
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
 void PropertyForm::addWidget(const QString& label, QWidget* widget, std::function<void()> refresh) {
     widget->setAccessibleName(label);
+    // Text fields and spin boxes leave the document's undo keys to the window once applied.
+    QList<QWidget*> fields = widget->findChildren<QWidget*>();
+    fields << widget;
+    for (QWidget* field : fields) {
+        if (auto* edit = qobject_cast<QLineEdit*>(field); edit && !qobject_cast<QAbstractSpinBox*>(edit->parentWidget())) {
+            connect(edit, &QLineEdit::textEdited, edit, [edit] { edit->setProperty(kUncommitted, true); });
+            connect(edit, &QLineEdit::editingFinished, edit, [edit] { edit->setProperty(kUncommitted, false); });
+            edit->installEventFilter(this);
+        } else if (qobject_cast<QAbstractSpinBox*>(field)) {
+            field->installEventFilter(this);
+        }
+    }
     layout_->addRow(label, widget);
     if (refresh) {
         refresh();
@@ -205,8 +244,9 @@ void PropertyForm::addChoice(const QString& label, const QStringList& items, std
 QLineEdit* PropertyForm::addText(const QString& label, std::function<QString()> get, std::function<void(const QString&)> set) {
     auto* edit = new QLineEdit(this);
     connect(edit, &QLineEdit::editingFinished, this, [edit, set] { set(edit->text()); });
+    // Not while the user types into it; once applied (Enter) it follows undo and redo too.
     addWidget(label, edit, [edit, get] {
-        if (!edit->hasFocus()) edit->setText(get());
+        if (!edit->hasFocus() || !uncommitted(edit)) edit->setText(get());
     });
     return edit;
 }

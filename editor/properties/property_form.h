@@ -87,6 +87,11 @@ public:
 
     void refresh();
 
+protected:
+    // Ctrl+Z / Ctrl+Shift+Z in a field whose text is committed (after Enter) undo the document, as
+    // anywhere else in the window; while the user is typing they undo the typing.
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
 private:
     Document& document_;
     QFormLayout* layout_ = nullptr;

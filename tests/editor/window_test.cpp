@@ -18,6 +18,10 @@
 
 #include <QAction>
 #include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QLineEdit>
+#include <QProgressDialog>
+#include <QSpinBox>
 #include <QMenu>
 #include <QPushButton>
 #include <QTimer>
@@ -72,6 +76,8 @@ private slots:
     void firstStartFitsTheScreen();
     void statusBarSaysNodesAndConfigurationInWords();
     void unnamedNodesAreNamedInTheStatusBarAndTimeline();
+    void enterInTheExportDialogStartsNoRender();
+    void undoKeysWorkInAPropertyFieldAfterEnter();
     void undoFollowsADelete();
     void viewportRendersAfterStructuralEdits();
     void screenshotOfTheMainWindow();
@@ -302,6 +308,74 @@ void WindowTest::unnamedNodesAreNamedInTheStatusBarAndTimeline() {
     QVERIFY(cameras->count() >= 1);
     for (int i = 0; i < cameras->count(); ++i) QVERIFY2(cameras->itemText(i).startsWith("Camera "), qPrintable(cameras->itemText(i)));
     QVERIFY(window.document().scene().at(root).name.empty());
+}
+
+// Enter after typing the output file name started a render of minutes (issue 17): it must not.
+void WindowTest::enterInTheExportDialogStartsNoRender() {
+    MainWindow window(panelsOnly(temp_.filePath("autosave-export-enter")));
+    window.show();
+    QVERIFY(window.openFile(cornellBox()));
+    QAction* exportStill = window.findChild<QAction*>("file.export_still");
+    QVERIFY(exportStill);
+    exportStill->trigger();
+    auto* dialog = window.findChild<ExportDialog*>();
+    QVERIFY(dialog);
+    QVERIFY(QTest::qWaitForWindowExposed(dialog));
+    dialog->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(dialog));
+    auto* out = fieldNamed<QLineEdit>(*dialog, "Output file");
+    QVERIFY(out);
+    out->setFocus();
+    out->setText(temp_.filePath("enter.png"));
+    QTest::keyClick(out, Qt::Key_Return);
+    QTest::keyClick(fieldNamed<QSpinBox>(*dialog, "Samples per pixel"), Qt::Key_Enter);
+    QVERIFY(!dialog->findChild<QProgressDialog*>()); // startExport makes it at once
+    QVERIFY(dialog->isVisible());
+    QVERIFY(!QFile::exists(temp_.filePath("enter.png")));
+    dialog->close();
+}
+
+// Ctrl+Z right after Enter in a property field undid nothing: the field kept the keys (issue 17).
+void WindowTest::undoKeysWorkInAPropertyFieldAfterEnter() {
+    MainWindow window(panelsOnly(temp_.filePath("autosave-field-undo")));
+    window.show();
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
+    QVERIFY(window.openFile(cornellBox()));
+    const NodeId floor = nodeNamed(window.document(), "floor");
+    window.document().setSelection({floor});
+    QCoreApplication::processEvents();
+    auto* x = fieldNamed<QDoubleSpinBox>(window.properties(), "Position X");
+    QVERIFY(x);
+    x->setFocus();
+    QTRY_VERIFY(x->hasFocus());
+    x->selectAll();
+    QTest::keyClicks(x, "1.5");
+    QTest::keyClick(x, Qt::Key_Return);
+    QCOMPARE(window.document().scene().at(floor).local.translation.x, 1.5f);
+    QTest::keyClick(x, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(window.document().scene().at(floor).local.translation.x, 0.0f);
+    QCOMPARE(x->value(), 0.0);
+    QTest::keyClick(x, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    QCOMPARE(window.document().scene().at(floor).local.translation.x, 1.5f);
+
+    auto* name = fieldNamed<QLineEdit>(window.properties(), "Name");
+    QVERIFY(name);
+    name->setFocus();
+    QTRY_VERIFY(name->hasFocus());
+    name->selectAll();
+    QTest::keyClicks(name, "ground");
+    // Still typing: Ctrl+Z undoes the typing, not the document.
+    const std::size_t steps = window.document().history().index();
+    QTest::keyClick(name, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(window.document().history().index(), steps);
+    name->selectAll();
+    QTest::keyClicks(name, "ground");
+    QTest::keyClick(name, Qt::Key_Return);
+    QCOMPARE(window.document().scene().at(floor).name, std::string("ground"));
+    QTest::keyClick(name, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(window.document().scene().at(floor).name, std::string("floor"));
+    QCOMPARE(name->text(), QString("floor")); // the focused field follows the undo
 }
 
 // A Delete is a macro: its pushes arrive while nothing can be undone yet. The Undo action (menu,
