@@ -147,6 +147,222 @@
         <source>Import %1</source>
         <translation>%1 importieren</translation>
     </message>
+    <message>
+        <source>Rotate</source>
+        <translation>Drehen</translation>
+    </message>
+    <message>
+        <source>Scale</source>
+        <translation>Skalieren</translation>
+    </message>
+    <message>
+        <source>Transform</source>
+        <translation>Transformation</translation>
+    </message>
+    <message>
+        <source>Change configuration</source>
+        <translation>Konfiguration ändern</translation>
+    </message>
+    <message>
+        <source>Change image size</source>
+        <translation>Bildgröße ändern</translation>
+    </message>
+    <message>
+        <source>Change samples per pixel</source>
+        <translation>Samples pro Pixel ändern</translation>
+    </message>
+    <message>
+        <source>Change bounces</source>
+        <translation>Abprallungen ändern</translation>
+    </message>
+    <message>
+        <source>Change seed</source>
+        <translation>Startwert ändern</translation>
+    </message>
+    <message>
+        <source>Change exposure</source>
+        <translation>Belichtung ändern</translation>
+    </message>
+    <message>
+        <source>Change tonemapper</source>
+        <translation>Tonemapper ändern</translation>
+    </message>
+    <message>
+        <source>Change radiance clamp</source>
+        <translation>Radianzbegrenzung ändern</translation>
+    </message>
+    <message>
+        <source>Change TAA settings</source>
+        <translation>TAA-Einstellungen ändern</translation>
+    </message>
+    <message>
+        <source>Change SVGF settings</source>
+        <translation>SVGF-Einstellungen ändern</translation>
+    </message>
+    <message>
+        <source>Change environment image</source>
+        <translation>Umgebungsbild ändern</translation>
+    </message>
+    <message>
+        <source>Change environment colour</source>
+        <translation>Umgebungsfarbe ändern</translation>
+    </message>
+    <message>
+        <source>Change environment intensity</source>
+        <translation>Umgebungsintensität ändern</translation>
+    </message>
+    <message>
+        <source>Rotate environment</source>
+        <translation>Umgebung drehen</translation>
+    </message>
+    <message>
+        <source>Change active camera</source>
+        <translation>Aktive Kamera ändern</translation>
+    </message>
+    <message>
+        <source>Change timeline range</source>
+        <translation>Zeitleistenbereich ändern</translation>
+    </message>
+    <message>
+        <source>Change frame rate</source>
+        <translation>Bildrate ändern</translation>
+    </message>
+    <message>
+        <source>Change output</source>
+        <translation>Ausgabe ändern</translation>
+    </message>
+    <message>
+        <source>Change light units</source>
+        <translation>Lichteinheiten ändern</translation>
+    </message>
+    <message>
+        <source>Change light type</source>
+        <translation>Lichttyp ändern</translation>
+    </message>
+    <message>
+        <source>Change light colour</source>
+        <translation>Lichtfarbe ändern</translation>
+    </message>
+    <message>
+        <source>Change light intensity</source>
+        <translation>Lichtintensität ändern</translation>
+    </message>
+    <message>
+        <source>Change light range</source>
+        <translation>Lichtreichweite ändern</translation>
+    </message>
+    <message>
+        <source>Change light radius</source>
+        <translation>Lichtradius ändern</translation>
+    </message>
+    <message>
+        <source>Change spot cone</source>
+        <translation>Spotkegel ändern</translation>
+    </message>
+    <message>
+        <source>Change sun size</source>
+        <translation>Sonnengröße ändern</translation>
+    </message>
+    <message>
+        <source>Change projection</source>
+        <translation>Projektion ändern</translation>
+    </message>
+    <message>
+        <source>Change field of view</source>
+        <translation>Sichtfeld ändern</translation>
+    </message>
+    <message>
+        <source>Change aperture</source>
+        <translation>Blende ändern</translation>
+    </message>
+    <message>
+        <source>Change focus distance</source>
+        <translation>Fokusdistanz ändern</translation>
+    </message>
+    <message>
+        <source>Change clipping</source>
+        <translation>Clipping ändern</translation>
+    </message>
+    <message>
+        <source>Change aspect ratio</source>
+        <translation>Seitenverhältnis ändern</translation>
+    </message>
+    <message>
+        <source>Change shape</source>
+        <translation>Form ändern</translation>
+    </message>
+    <message>
+        <source>Change radius</source>
+        <translation>Radius ändern</translation>
+    </message>
+    <message>
+        <source>Change height</source>
+        <translation>Höhe ändern</translation>
+    </message>
+    <message>
+        <source>Change size</source>
+        <translation>Größe ändern</translation>
+    </message>
+    <message>
+        <source>Change material</source>
+        <translation>Material ändern</translation>
+    </message>
+    <message>
+        <source>Change base colour</source>
+        <translation>Grundfarbe ändern</translation>
+    </message>
+    <message>
+        <source>Change opacity</source>
+        <translation>Deckkraft ändern</translation>
+    </message>
+    <message>
+        <source>Change metallic</source>
+        <translation>Metallisch ändern</translation>
+    </message>
+    <message>
+        <source>Change roughness</source>
+        <translation>Rauheit ändern</translation>
+    </message>
+    <message>
+        <source>Change emission</source>
+        <translation>Emission ändern</translation>
+    </message>
+    <message>
+        <source>Change emission strength</source>
+        <translation>Emissionsstärke ändern</translation>
+    </message>
+    <message>
+        <source>Change specular</source>
+        <translation>Spiegelung ändern</translation>
+    </message>
+    <message>
+        <source>Change transmission</source>
+        <translation>Transmission ändern</translation>
+    </message>
+    <message>
+        <source>Change index of refraction</source>
+        <translation>Brechungsindex ändern</translation>
+    </message>
+    <message>
+        <source>Change volume</source>
+        <translation>Volumen ändern</translation>
+    </message>
+    <message>
+        <source>Change alpha mode</source>
+        <translation>Alphamodus ändern</translation>
+    </message>
+    <message>
+        <source>Change double sided</source>
+        <translation>Doppelseitig ändern</translation>
+    </message>
+    <message>
+        <source>Change texture</source>
+        <translation>Textur ändern</translation>
+    </message>
+    <message>
+        <source>Rename material</source>
+        <translation>Material umbenennen</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Configurations</name>

@@ -147,6 +147,222 @@
         <source>Import %1</source>
         <translation>Importar %1</translation>
     </message>
+    <message>
+        <source>Rotate</source>
+        <translation>Rotar</translation>
+    </message>
+    <message>
+        <source>Scale</source>
+        <translation>Escalar</translation>
+    </message>
+    <message>
+        <source>Transform</source>
+        <translation>Transformación</translation>
+    </message>
+    <message>
+        <source>Change configuration</source>
+        <translation>Cambiar configuración</translation>
+    </message>
+    <message>
+        <source>Change image size</source>
+        <translation>Cambiar tamaño de imagen</translation>
+    </message>
+    <message>
+        <source>Change samples per pixel</source>
+        <translation>Cambiar muestras por píxel</translation>
+    </message>
+    <message>
+        <source>Change bounces</source>
+        <translation>Cambiar rebotes</translation>
+    </message>
+    <message>
+        <source>Change seed</source>
+        <translation>Cambiar semilla</translation>
+    </message>
+    <message>
+        <source>Change exposure</source>
+        <translation>Cambiar exposición</translation>
+    </message>
+    <message>
+        <source>Change tonemapper</source>
+        <translation>Cambiar mapeo tonal</translation>
+    </message>
+    <message>
+        <source>Change radiance clamp</source>
+        <translation>Cambiar límite de radiancia</translation>
+    </message>
+    <message>
+        <source>Change TAA settings</source>
+        <translation>Cambiar ajustes de TAA</translation>
+    </message>
+    <message>
+        <source>Change SVGF settings</source>
+        <translation>Cambiar ajustes de SVGF</translation>
+    </message>
+    <message>
+        <source>Change environment image</source>
+        <translation>Cambiar imagen de entorno</translation>
+    </message>
+    <message>
+        <source>Change environment colour</source>
+        <translation>Cambiar color de entorno</translation>
+    </message>
+    <message>
+        <source>Change environment intensity</source>
+        <translation>Cambiar intensidad de entorno</translation>
+    </message>
+    <message>
+        <source>Rotate environment</source>
+        <translation>Rotar entorno</translation>
+    </message>
+    <message>
+        <source>Change active camera</source>
+        <translation>Cambiar cámara activa</translation>
+    </message>
+    <message>
+        <source>Change timeline range</source>
+        <translation>Cambiar rango de la línea de tiempo</translation>
+    </message>
+    <message>
+        <source>Change frame rate</source>
+        <translation>Cambiar fotogramas por segundo</translation>
+    </message>
+    <message>
+        <source>Change output</source>
+        <translation>Cambiar salida</translation>
+    </message>
+    <message>
+        <source>Change light units</source>
+        <translation>Cambiar unidades de luz</translation>
+    </message>
+    <message>
+        <source>Change light type</source>
+        <translation>Cambiar tipo de luz</translation>
+    </message>
+    <message>
+        <source>Change light colour</source>
+        <translation>Cambiar color de la luz</translation>
+    </message>
+    <message>
+        <source>Change light intensity</source>
+        <translation>Cambiar intensidad de la luz</translation>
+    </message>
+    <message>
+        <source>Change light range</source>
+        <translation>Cambiar alcance de la luz</translation>
+    </message>
+    <message>
+        <source>Change light radius</source>
+        <translation>Cambiar radio de la luz</translation>
+    </message>
+    <message>
+        <source>Change spot cone</source>
+        <translation>Cambiar cono del foco</translation>
+    </message>
+    <message>
+        <source>Change sun size</source>
+        <translation>Cambiar tamaño del sol</translation>
+    </message>
+    <message>
+        <source>Change projection</source>
+        <translation>Cambiar proyección</translation>
+    </message>
+    <message>
+        <source>Change field of view</source>
+        <translation>Cambiar campo de visión</translation>
+    </message>
+    <message>
+        <source>Change aperture</source>
+        <translation>Cambiar apertura</translation>
+    </message>
+    <message>
+        <source>Change focus distance</source>
+        <translation>Cambiar distancia de enfoque</translation>
+    </message>
+    <message>
+        <source>Change clipping</source>
+        <translation>Cambiar recorte</translation>
+    </message>
+    <message>
+        <source>Change aspect ratio</source>
+        <translation>Cambiar relación de aspecto</translation>
+    </message>
+    <message>
+        <source>Change shape</source>
+        <translation>Cambiar forma</translation>
+    </message>
+    <message>
+        <source>Change radius</source>
+        <translation>Cambiar radio</translation>
+    </message>
+    <message>
+        <source>Change height</source>
+        <translation>Cambiar altura</translation>
+    </message>
+    <message>
+        <source>Change size</source>
+        <translation>Cambiar tamaño</translation>
+    </message>
+    <message>
+        <source>Change material</source>
+        <translation>Cambiar material</translation>
+    </message>
+    <message>
+        <source>Change base colour</source>
+        <translation>Cambiar color base</translation>
+    </message>
+    <message>
+        <source>Change opacity</source>
+        <translation>Cambiar opacidad</translation>
+    </message>
+    <message>
+        <source>Change metallic</source>
+        <translation>Cambiar metálico</translation>
+    </message>
+    <message>
+        <source>Change roughness</source>
+        <translation>Cambiar rugosidad</translation>
+    </message>
+    <message>
+        <source>Change emission</source>
+        <translation>Cambiar emisión</translation>
+    </message>
+    <message>
+        <source>Change emission strength</source>
+        <translation>Cambiar intensidad de emisión</translation>
+    </message>
+    <message>
+        <source>Change specular</source>
+        <translation>Cambiar especular</translation>
+    </message>
+    <message>
+        <source>Change transmission</source>
+        <translation>Cambiar transmisión</translation>
+    </message>
+    <message>
+        <source>Change index of refraction</source>
+        <translation>Cambiar índice de refracción</translation>
+    </message>
+    <message>
+        <source>Change volume</source>
+        <translation>Cambiar volumen</translation>
+    </message>
+    <message>
+        <source>Change alpha mode</source>
+        <translation>Cambiar modo alfa</translation>
+    </message>
+    <message>
+        <source>Change double sided</source>
+        <translation>Cambiar doble cara</translation>
+    </message>
+    <message>
+        <source>Change texture</source>
+        <translation>Cambiar textura</translation>
+    </message>
+    <message>
+        <source>Rename material</source>
+        <translation>Renombrar material</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Configurations</name>

@@ -147,6 +147,222 @@
         <source>Import %1</source>
         <translation>Importer %1</translation>
     </message>
+    <message>
+        <source>Rotate</source>
+        <translation>Pivoter</translation>
+    </message>
+    <message>
+        <source>Scale</source>
+        <translation>Mettre à l&apos;échelle</translation>
+    </message>
+    <message>
+        <source>Transform</source>
+        <translation>Transformation</translation>
+    </message>
+    <message>
+        <source>Change configuration</source>
+        <translation>Modifier la configuration</translation>
+    </message>
+    <message>
+        <source>Change image size</source>
+        <translation>Modifier la taille de l&apos;image</translation>
+    </message>
+    <message>
+        <source>Change samples per pixel</source>
+        <translation>Modifier les échantillons par pixel</translation>
+    </message>
+    <message>
+        <source>Change bounces</source>
+        <translation>Modifier les rebonds</translation>
+    </message>
+    <message>
+        <source>Change seed</source>
+        <translation>Modifier la graine</translation>
+    </message>
+    <message>
+        <source>Change exposure</source>
+        <translation>Modifier l&apos;exposition</translation>
+    </message>
+    <message>
+        <source>Change tonemapper</source>
+        <translation>Modifier le tone mapping</translation>
+    </message>
+    <message>
+        <source>Change radiance clamp</source>
+        <translation>Modifier la limite de radiance</translation>
+    </message>
+    <message>
+        <source>Change TAA settings</source>
+        <translation>Modifier les réglages TAA</translation>
+    </message>
+    <message>
+        <source>Change SVGF settings</source>
+        <translation>Modifier les réglages SVGF</translation>
+    </message>
+    <message>
+        <source>Change environment image</source>
+        <translation>Modifier l&apos;image d&apos;environnement</translation>
+    </message>
+    <message>
+        <source>Change environment colour</source>
+        <translation>Modifier la couleur d&apos;environnement</translation>
+    </message>
+    <message>
+        <source>Change environment intensity</source>
+        <translation>Modifier l&apos;intensité d&apos;environnement</translation>
+    </message>
+    <message>
+        <source>Rotate environment</source>
+        <translation>Tourner l&apos;environnement</translation>
+    </message>
+    <message>
+        <source>Change active camera</source>
+        <translation>Modifier la caméra active</translation>
+    </message>
+    <message>
+        <source>Change timeline range</source>
+        <translation>Modifier la plage de la chronologie</translation>
+    </message>
+    <message>
+        <source>Change frame rate</source>
+        <translation>Modifier la cadence</translation>
+    </message>
+    <message>
+        <source>Change output</source>
+        <translation>Modifier la sortie</translation>
+    </message>
+    <message>
+        <source>Change light units</source>
+        <translation>Modifier les unités de lumière</translation>
+    </message>
+    <message>
+        <source>Change light type</source>
+        <translation>Modifier le type de lumière</translation>
+    </message>
+    <message>
+        <source>Change light colour</source>
+        <translation>Modifier la couleur de la lumière</translation>
+    </message>
+    <message>
+        <source>Change light intensity</source>
+        <translation>Modifier l&apos;intensité de la lumière</translation>
+    </message>
+    <message>
+        <source>Change light range</source>
+        <translation>Modifier la portée de la lumière</translation>
+    </message>
+    <message>
+        <source>Change light radius</source>
+        <translation>Modifier le rayon de la lumière</translation>
+    </message>
+    <message>
+        <source>Change spot cone</source>
+        <translation>Modifier le cône du projecteur</translation>
+    </message>
+    <message>
+        <source>Change sun size</source>
+        <translation>Modifier la taille du soleil</translation>
+    </message>
+    <message>
+        <source>Change projection</source>
+        <translation>Modifier la projection</translation>
+    </message>
+    <message>
+        <source>Change field of view</source>
+        <translation>Modifier le champ de vision</translation>
+    </message>
+    <message>
+        <source>Change aperture</source>
+        <translation>Modifier l&apos;ouverture</translation>
+    </message>
+    <message>
+        <source>Change focus distance</source>
+        <translation>Modifier la distance de mise au point</translation>
+    </message>
+    <message>
+        <source>Change clipping</source>
+        <translation>Modifier le découpage</translation>
+    </message>
+    <message>
+        <source>Change aspect ratio</source>
+        <translation>Modifier les proportions</translation>
+    </message>
+    <message>
+        <source>Change shape</source>
+        <translation>Modifier la forme</translation>
+    </message>
+    <message>
+        <source>Change radius</source>
+        <translation>Modifier le rayon</translation>
+    </message>
+    <message>
+        <source>Change height</source>
+        <translation>Modifier la hauteur</translation>
+    </message>
+    <message>
+        <source>Change size</source>
+        <translation>Modifier la taille</translation>
+    </message>
+    <message>
+        <source>Change material</source>
+        <translation>Modifier le matériau</translation>
+    </message>
+    <message>
+        <source>Change base colour</source>
+        <translation>Modifier la couleur de base</translation>
+    </message>
+    <message>
+        <source>Change opacity</source>
+        <translation>Modifier l&apos;opacité</translation>
+    </message>
+    <message>
+        <source>Change metallic</source>
+        <translation>Modifier le métallique</translation>
+    </message>
+    <message>
+        <source>Change roughness</source>
+        <translation>Modifier la rugosité</translation>
+    </message>
+    <message>
+        <source>Change emission</source>
+        <translation>Modifier l&apos;émission</translation>
+    </message>
+    <message>
+        <source>Change emission strength</source>
+        <translation>Modifier la force d&apos;émission</translation>
+    </message>
+    <message>
+        <source>Change specular</source>
+        <translation>Modifier le spéculaire</translation>
+    </message>
+    <message>
+        <source>Change transmission</source>
+        <translation>Modifier la transmission</translation>
+    </message>
+    <message>
+        <source>Change index of refraction</source>
+        <translation>Modifier l&apos;indice de réfraction</translation>
+    </message>
+    <message>
+        <source>Change volume</source>
+        <translation>Modifier le volume</translation>
+    </message>
+    <message>
+        <source>Change alpha mode</source>
+        <translation>Modifier le mode alpha</translation>
+    </message>
+    <message>
+        <source>Change double sided</source>
+        <translation>Modifier le double face</translation>
+    </message>
+    <message>
+        <source>Change texture</source>
+        <translation>Modifier la texture</translation>
+    </message>
+    <message>
+        <source>Rename material</source>
+        <translation>Renommer le matériau</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Configurations</name>

@@ -147,6 +147,222 @@
         <source>Import %1</source>
         <translation>Importa %1</translation>
     </message>
+    <message>
+        <source>Rotate</source>
+        <translation>Ruota</translation>
+    </message>
+    <message>
+        <source>Scale</source>
+        <translation>Scala</translation>
+    </message>
+    <message>
+        <source>Transform</source>
+        <translation>Trasformazione</translation>
+    </message>
+    <message>
+        <source>Change configuration</source>
+        <translation>Cambia configurazione</translation>
+    </message>
+    <message>
+        <source>Change image size</source>
+        <translation>Cambia dimensione immagine</translation>
+    </message>
+    <message>
+        <source>Change samples per pixel</source>
+        <translation>Cambia campioni per pixel</translation>
+    </message>
+    <message>
+        <source>Change bounces</source>
+        <translation>Cambia rimbalzi</translation>
+    </message>
+    <message>
+        <source>Change seed</source>
+        <translation>Cambia seme</translation>
+    </message>
+    <message>
+        <source>Change exposure</source>
+        <translation>Cambia esposizione</translation>
+    </message>
+    <message>
+        <source>Change tonemapper</source>
+        <translation>Cambia tone mapping</translation>
+    </message>
+    <message>
+        <source>Change radiance clamp</source>
+        <translation>Cambia limite di radianza</translation>
+    </message>
+    <message>
+        <source>Change TAA settings</source>
+        <translation>Cambia impostazioni TAA</translation>
+    </message>
+    <message>
+        <source>Change SVGF settings</source>
+        <translation>Cambia impostazioni SVGF</translation>
+    </message>
+    <message>
+        <source>Change environment image</source>
+        <translation>Cambia immagine d&apos;ambiente</translation>
+    </message>
+    <message>
+        <source>Change environment colour</source>
+        <translation>Cambia colore d&apos;ambiente</translation>
+    </message>
+    <message>
+        <source>Change environment intensity</source>
+        <translation>Cambia intensità d&apos;ambiente</translation>
+    </message>
+    <message>
+        <source>Rotate environment</source>
+        <translation>Ruota ambiente</translation>
+    </message>
+    <message>
+        <source>Change active camera</source>
+        <translation>Cambia camera attiva</translation>
+    </message>
+    <message>
+        <source>Change timeline range</source>
+        <translation>Cambia intervallo della timeline</translation>
+    </message>
+    <message>
+        <source>Change frame rate</source>
+        <translation>Cambia frequenza fotogrammi</translation>
+    </message>
+    <message>
+        <source>Change output</source>
+        <translation>Cambia output</translation>
+    </message>
+    <message>
+        <source>Change light units</source>
+        <translation>Cambia unità della luce</translation>
+    </message>
+    <message>
+        <source>Change light type</source>
+        <translation>Cambia tipo di luce</translation>
+    </message>
+    <message>
+        <source>Change light colour</source>
+        <translation>Cambia colore della luce</translation>
+    </message>
+    <message>
+        <source>Change light intensity</source>
+        <translation>Cambia intensità della luce</translation>
+    </message>
+    <message>
+        <source>Change light range</source>
+        <translation>Cambia portata della luce</translation>
+    </message>
+    <message>
+        <source>Change light radius</source>
+        <translation>Cambia raggio della luce</translation>
+    </message>
+    <message>
+        <source>Change spot cone</source>
+        <translation>Cambia cono del faretto</translation>
+    </message>
+    <message>
+        <source>Change sun size</source>
+        <translation>Cambia dimensione del sole</translation>
+    </message>
+    <message>
+        <source>Change projection</source>
+        <translation>Cambia proiezione</translation>
+    </message>
+    <message>
+        <source>Change field of view</source>
+        <translation>Cambia campo visivo</translation>
+    </message>
+    <message>
+        <source>Change aperture</source>
+        <translation>Cambia apertura</translation>
+    </message>
+    <message>
+        <source>Change focus distance</source>
+        <translation>Cambia distanza di messa a fuoco</translation>
+    </message>
+    <message>
+        <source>Change clipping</source>
+        <translation>Cambia piani di ritaglio</translation>
+    </message>
+    <message>
+        <source>Change aspect ratio</source>
+        <translation>Cambia proporzioni</translation>
+    </message>
+    <message>
+        <source>Change shape</source>
+        <translation>Cambia forma</translation>
+    </message>
+    <message>
+        <source>Change radius</source>
+        <translation>Cambia raggio</translation>
+    </message>
+    <message>
+        <source>Change height</source>
+        <translation>Cambia altezza</translation>
+    </message>
+    <message>
+        <source>Change size</source>
+        <translation>Cambia dimensioni</translation>
+    </message>
+    <message>
+        <source>Change material</source>
+        <translation>Cambia materiale</translation>
+    </message>
+    <message>
+        <source>Change base colour</source>
+        <translation>Cambia colore base</translation>
+    </message>
+    <message>
+        <source>Change opacity</source>
+        <translation>Cambia opacità</translation>
+    </message>
+    <message>
+        <source>Change metallic</source>
+        <translation>Cambia metallicità</translation>
+    </message>
+    <message>
+        <source>Change roughness</source>
+        <translation>Cambia rugosità</translation>
+    </message>
+    <message>
+        <source>Change emission</source>
+        <translation>Cambia emissione</translation>
+    </message>
+    <message>
+        <source>Change emission strength</source>
+        <translation>Cambia intensità di emissione</translation>
+    </message>
+    <message>
+        <source>Change specular</source>
+        <translation>Cambia speculare</translation>
+    </message>
+    <message>
+        <source>Change transmission</source>
+        <translation>Cambia trasmissione</translation>
+    </message>
+    <message>
+        <source>Change index of refraction</source>
+        <translation>Cambia indice di rifrazione</translation>
+    </message>
+    <message>
+        <source>Change volume</source>
+        <translation>Cambia volume</translation>
+    </message>
+    <message>
+        <source>Change alpha mode</source>
+        <translation>Cambia modalità alfa</translation>
+    </message>
+    <message>
+        <source>Change double sided</source>
+        <translation>Cambia doppia faccia</translation>
+    </message>
+    <message>
+        <source>Change texture</source>
+        <translation>Cambia texture</translation>
+    </message>
+    <message>
+        <source>Rename material</source>
+        <translation>Rinomina materiale</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Configurations</name>

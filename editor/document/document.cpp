@@ -1,6 +1,10 @@
 #include "document.h"
 
+#include "labelled_command.h"
 #include "scene_merge.h"
+
+#include "editor/history_view/command_labels.h"
+#include "scene/history/set_node_field.h"
 
 
 #include <QFileInfo>
@@ -36,6 +40,11 @@ Document::~Document() {
 }
 
 ChangeSet Document::push(CommandPtr command) {
+    // A transform edit says what it does ("Rotate" for the rotate gizmo or a rotation field), not
+    // the core's "Move" for everything. Every one is labelled, so a drag's steps still merge.
+    if (const auto* transform = dynamic_cast<const SetTransform*>(command.get()); transform && scene_.contains(transform->node()))
+        command = std::make_unique<LabelledCommand>(
+            std::move(command), describeTransformEdit(scene_.at(transform->node()).local, transform->newValue()));
     const std::size_t index = history_.index();
     std::vector<NodeId> before = selection_;
     ChangeSet changes = history_.push(std::move(command));

@@ -1,5 +1,7 @@
 #include "property_edits.h"
 
+#include "editor/document/labelled_command.h"
+#include "editor/history_view/command_labels.h"
 #include "scene/history/asset_commands.h"
 #include "scene/history/set_node_field.h"
 #include "scene/history/settings_commands.h"
@@ -9,8 +11,10 @@
 namespace glint::editor {
 namespace {
 
-QString pushTagged(Document& document, CommandPtr command, std::uint64_t interaction) {
+// `label`: what the edit does, in the history's English ("Change exposure"); empty: the core's.
+QString pushTagged(Document& document, CommandPtr command, std::uint64_t interaction, const std::string& label = {}) {
     command->interaction = interaction;
+    if (!label.empty()) command = std::make_unique<LabelledCommand>(std::move(command), label);
     try {
         document.push(std::move(command));
     } catch (const std::exception& e) {
@@ -38,7 +42,8 @@ QString editComponent(Document& document, NodeId node, const std::function<void(
     Component c = n->component;
     change(c);
     if (c == n->component) return {};
-    return pushTagged(document, std::make_unique<SetComponent>(node, std::move(c)), interaction);
+    const std::string label = describeComponentEdit(n->component, c);
+    return pushTagged(document, std::make_unique<SetComponent>(node, std::move(c)), interaction, label);
 }
 
 QString editMaterial(Document& document, MaterialId material, const std::function<void(Material&)>& change,
@@ -48,7 +53,8 @@ QString editMaterial(Document& document, MaterialId material, const std::functio
     Material copy = *m;
     change(copy);
     if (copy == *m) return {};
-    return pushTagged(document, std::make_unique<SetMaterial>(material, std::move(copy)), interaction);
+    const std::string label = describeMaterialEdit(*m, copy);
+    return pushTagged(document, std::make_unique<SetMaterial>(material, std::move(copy)), interaction, label);
 }
 
 QString editSettings(Document& document, const std::function<void(ProjectSettings&)>& change,
@@ -56,7 +62,8 @@ QString editSettings(Document& document, const std::function<void(ProjectSetting
     ProjectSettings s = document.scene().settings;
     change(s);
     if (s == document.scene().settings) return {};
-    return pushTagged(document, std::make_unique<SetProjectSettings>(std::move(s)), interaction);
+    const std::string label = describeSettingsEdit(document.scene().settings, s);
+    return pushTagged(document, std::make_unique<SetProjectSettings>(std::move(s)), interaction, label);
 }
 
 MaterialId materialOf(const Scene& scene, NodeId node) {

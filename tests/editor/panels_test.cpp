@@ -4,7 +4,10 @@
 #include "editor_fixtures.h"
 
 #include "editor/document/edit_operations.h"
+#include "editor/history_view/command_labels.h"
 #include "editor/history_view/history_model.h"
+#include "editor/preferences/language.h"
+#include "scene/history/set_node_field.h"
 #include "editor/history_view/history_panel.h"
 #include "editor/outliner/outliner_model.h"
 #include "editor/outliner/outliner_panel.h"
@@ -19,6 +22,9 @@
 #include <QTimer>
 
 #include <cmath>
+#include <functional>
+
+#include <glm/gtc/quaternion.hpp>
 #include <QDoubleSpinBox>
 #include <QItemSelectionModel>
 #include <QLineEdit>
@@ -52,6 +58,7 @@ private slots:
     void filterKeepsMatchesAndTheirParents();
     void pickedColourIsStoredLinearAndShownAsPicked();
     void fieldsFitTheKindAndTheDock();
+    void undoLabelsSayWhatHappened();
 };
 
 void PanelsTest::outlinerSelectionFollowsBothWays() {
@@ -192,6 +199,68 @@ void PanelsTest::fieldsFitTheKindAndTheDock() {
     QCoreApplication::processEvents();
     QVERIFY(shown("Range (m, 0 = infinite)") && shown("Inner cone (degrees)") && shown("Outer cone (degrees)"));
     QVERIFY(!shown("Sun angular diameter (degrees)"));
+}
+
+// Every gizmo drag was "Move" and every Scene tab edit "Edit settings" in the undo history (issue 17).
+void PanelsTest::undoLabelsSayWhatHappened() {
+    Document document;
+    QCOMPARE(document.open(cornellBox()), QString());
+    HistoryModel history(document);
+    const auto lastLabel = [&] {
+        QCoreApplication::processEvents(); // the model follows the history queued
+        return history.index(history.rowCount() - 1).data().toString();
+    };
+    const NodeId block = nodeNamed(document, "tall_block");
+    // What the gizmo pushes: one SetTransform per mouse move, one interaction per drag.
+    const auto drag = [&](const std::function<void(Transform&, float)>& change) {
+        const std::uint64_t serial = document.beginInteraction();
+        const Transform start = document.scene().at(block).local;
+        for (float t : {0.25f, 0.5f, 1.0f}) {
+            Transform local = start;
+            change(local, t);
+            auto command = std::make_unique<SetTransform>(block, local);
+            command->interaction = serial;
+            document.push(std::move(command));
+        }
+    };
+    const std::size_t before = document.history().count();
+    drag([](Transform& local, float t) { local.rotation = glm::angleAxis(t, glm::vec3(0, 1, 0)) * local.rotation; });
+    QCOMPARE(document.history().count(), before + 1); // still one step
+    QCOMPARE(lastLabel(), QString("Rotate"));
+    drag([](Transform& local, float t) { local.scale *= 1.0f + t; });
+    QCOMPARE(lastLabel(), QString("Scale"));
+    drag([](Transform& local, float t) { local.translation.x += t; });
+    QCOMPARE(lastLabel(), QString("Move"));
+    QCOMPARE(document.history().count(), before + 3);
+    document.undo();
+    QCOMPARE(lastLabel(), QString("Move")); // undone, still listed
+
+    // The Scene tab: an exposure drag, a tonemapper choice.
+    PropertiesPanel scene(document, true);
+    auto* exposure = fieldNamed<FloatField>(scene, "Exposure (EV)");
+    QVERIFY(exposure);
+    exposure->slider()->setSliderDown(true);
+    for (int position : {550, 600, 650}) exposure->slider()->setValue(position);
+    exposure->slider()->setSliderDown(false);
+    QCOMPARE(lastLabel(), QString("Change exposure"));
+    auto* tonemapper = fieldNamed<QComboBox>(scene, "Tonemapper");
+    QVERIFY(tonemapper);
+    tonemapper->setCurrentIndex(2);
+    emit tonemapper->activated(2);
+    QCOMPARE(lastLabel(), QString("Change tonemapper"));
+    // A node's fields: a light's colour, a material's roughness.
+    PropertiesPanel properties(document, false);
+    document.setSelection({nodeNamed(document, "left_wall_red")});
+    QCoreApplication::processEvents();
+    auto* roughness = fieldNamed<QDoubleSpinBox>(properties, "Roughness");
+    QVERIFY(roughness);
+    roughness->setValue(0.25);
+    QCOMPARE(lastLabel(), QString("Change roughness"));
+    // Translated when shown, whatever the language was when the edit was made.
+    Translations translations;
+    QCOMPARE(translations.install(*QCoreApplication::instance(), "de"), QString("de"));
+    QCOMPARE(commandLabel(document.history().label(document.history().index() - 1)), QString("Rauheit ändern"));
+    translations.install(*QCoreApplication::instance(), "en");
 }
 
 void PanelsTest::sliderDragIsOneUndoStep() {
