@@ -1,5 +1,6 @@
 #pragma once
 #include "ids.h"
+#include "shared_array.h"
 
 #include <nlohmann/json.hpp>
 
@@ -14,7 +15,7 @@ struct Image {
     std::string name;
     std::string uri;      // relative to the scene folder; empty when embedded
     std::string mimeType; // "image/png", "image/jpeg", ...
-    std::vector<std::uint8_t> encoded;
+    SharedArray<std::uint8_t> encoded; // shared between copies until written (shared_array.h)
     int width = 0;        // from the header, 0 if unknown or undecodable
     int height = 0;
     bool missing = false; // file not found / not decodable: renderers show a placeholder

@@ -1,5 +1,6 @@
 #pragma once
 #include "ids.h"
+#include "shared_array.h"
 
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
@@ -12,15 +13,16 @@ namespace glint {
 
 // One glTF primitive, always as an indexed triangle list in float attributes
 // (normalized integer and sparse accessors are expanded on load).
-// Attribute arrays are either empty or as long as positions.
+// Attribute arrays are either empty or as long as positions. They are shared between copies until
+// written (shared_array.h), so copying a mesh copies no vertex data.
 struct Primitive {
-    std::vector<glm::vec3> positions;
-    std::vector<glm::vec3> normals;
-    std::vector<glm::vec4> tangents; // xyz + handedness w (MikkTSpace)
-    std::vector<glm::vec2> uv0;
-    std::vector<glm::vec2> uv1;
-    std::vector<glm::vec4> colors;   // COLOR_0 as RGBA
-    std::vector<std::uint32_t> indices;
+    SharedArray<glm::vec3> positions;
+    SharedArray<glm::vec3> normals;
+    SharedArray<glm::vec4> tangents; // xyz + handedness w (MikkTSpace)
+    SharedArray<glm::vec2> uv0;
+    SharedArray<glm::vec2> uv1;
+    SharedArray<glm::vec4> colors;   // COLOR_0 as RGBA
+    SharedArray<std::uint32_t> indices;
     MaterialId material{};           // none: the glTF default material
     nlohmann::json unknown;
 

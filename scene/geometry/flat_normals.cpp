@@ -26,10 +26,10 @@ void gather(std::vector<T>& attribute, const std::vector<std::uint32_t>& corners
 
 void generateFlatNormals(Primitive& p) {
     const std::vector<std::uint32_t> corners = p.indices;
-    gather(p.positions, corners);
-    gather(p.uv0, corners);
-    gather(p.uv1, corners);
-    gather(p.colors, corners);
+    gather(p.positions.edit(), corners);
+    gather(p.uv0.edit(), corners);
+    gather(p.uv1.edit(), corners);
+    gather(p.colors.edit(), corners);
     p.tangents.clear(); // glTF: tangents without normals are meaningless; regenerate if needed
     p.normals.assign(p.positions.size(), glm::vec3(0.0f));
     for (std::size_t i = 0; i + 2 < p.positions.size(); i += 3) {

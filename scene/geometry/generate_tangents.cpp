@@ -52,11 +52,11 @@ void storePerVertex(Primitive& p, const std::vector<glm::vec4>& cornerTangents) 
             continue;
         }
         const auto copy = std::uint32_t(p.positions.size());
-        duplicateVertex(p.positions, v);
-        duplicateVertex(p.normals, v);
-        duplicateVertex(p.uv0, v);
-        duplicateVertex(p.uv1, v);
-        duplicateVertex(p.colors, v);
+        duplicateVertex(p.positions.edit(), v);
+        duplicateVertex(p.normals.edit(), v);
+        duplicateVertex(p.uv0.edit(), v);
+        duplicateVertex(p.uv1.edit(), v);
+        duplicateVertex(p.colors.edit(), v);
         p.tangents.push_back(t);
         copies[v].push_back(copy);
         p.indices[c] = copy;

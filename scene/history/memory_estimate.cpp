@@ -19,8 +19,8 @@ std::size_t approxBytes(const Node& node) {
 std::size_t approxBytes(const Mesh& mesh) {
     std::size_t bytes = sizeof(Mesh) + mesh.name.size();
     for (const Primitive& p : mesh.primitives)
-        bytes += sizeof(Primitive) + bytesOf(p.positions) + bytesOf(p.normals) + bytesOf(p.tangents) +
-                 bytesOf(p.uv0) + bytesOf(p.uv1) + bytesOf(p.colors) + bytesOf(p.indices);
+        bytes += sizeof(Primitive) + bytesOf(p.positions.vector()) + bytesOf(p.normals.vector()) + bytesOf(p.tangents.vector()) +
+                 bytesOf(p.uv0.vector()) + bytesOf(p.uv1.vector()) + bytesOf(p.colors.vector()) + bytesOf(p.indices.vector());
     return bytes;
 }
 

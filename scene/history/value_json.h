@@ -33,6 +33,12 @@ struct adl_serializer<glm::qua<T, Q>> {
     }
 };
 
+template <class T>
+struct adl_serializer<glint::SharedArray<T>> {
+    static void to_json(json& j, const glint::SharedArray<T>& a) { j = a.vector(); }
+    static void from_json(const json& j, glint::SharedArray<T>& a) { a = j.get<std::vector<T>>(); }
+};
+
 template <class Tag>
 struct adl_serializer<glint::Id<Tag>> {
     static void to_json(json& j, glint::Id<Tag> id) { j = id.value; }

@@ -26,12 +26,12 @@ void addAttribute(GltfWriteContext& ctx, nlohmann::json& attributes, const char*
 nlohmann::json primitiveJson(GltfWriteContext& ctx, const Primitive& p)
 {
     nlohmann::json attributes = nlohmann::json::object();
-    addAttribute(ctx, attributes, "POSITION", p.positions, true);
-    addAttribute(ctx, attributes, "NORMAL", p.normals);
-    addAttribute(ctx, attributes, "TANGENT", p.tangents);
-    addAttribute(ctx, attributes, "TEXCOORD_0", p.uv0);
-    addAttribute(ctx, attributes, "TEXCOORD_1", p.uv1);
-    addAttribute(ctx, attributes, "COLOR_0", p.colors);
+    addAttribute(ctx, attributes, "POSITION", p.positions.vector(), true);
+    addAttribute(ctx, attributes, "NORMAL", p.normals.vector());
+    addAttribute(ctx, attributes, "TANGENT", p.tangents.vector());
+    addAttribute(ctx, attributes, "TEXCOORD_0", p.uv0.vector());
+    addAttribute(ctx, attributes, "TEXCOORD_1", p.uv1.vector());
+    addAttribute(ctx, attributes, "COLOR_0", p.colors.vector());
     nlohmann::json primitive{{"attributes", std::move(attributes)}};
     if (!p.indices.empty()) primitive["indices"] = ctx.buffers.addIndexAccessor(p.indices);
     if (p.material.valid()) {
