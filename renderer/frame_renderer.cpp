@@ -8,6 +8,7 @@
 #include "renderer/passes/reconstruction_parameters.h"
 #include "renderer/passes/region_composite.h"
 #include "renderer/passes/tonemap_pass.h"
+#include "renderer/scene_snapshot.h"
 #include "scene/anim/node_animation.h"
 #include "scene/anim/scene_at_time.h"
 
@@ -175,14 +176,12 @@ struct FrameRenderer::State {
     std::unique_ptr<PreviewTargets> preview;
 
     FrameSettings settings;
-    Scene document;
-    Scene posed; // the document at `time`
+    SceneSnapshot scene = snapshotOf(Scene{}, 0.0); // the document and the scene posed at scene.time
     std::filesystem::path environmentFile;
     MeshBvhCache meshCache; // mesh BVHs survive uploads: only changed meshes are rebuilt
     TextureCache textureCache; // decoded, mip-mapped images survive uploads: only new image bytes are decoded
     std::unique_ptr<GpuScene> gpu;
     Warnings noWarnings; // what warnings() returns before a scene is set
-    double time = 0.0;
     bool followSceneCamera = false;
     std::string cameraName;
     CameraSetup camera;
@@ -205,16 +204,17 @@ struct FrameRenderer::State {
     RegionComposite region;     // with a render region: the image outside it stays (across resizes)
 
     void upload() {
-        gpu = std::make_unique<GpuScene>(posed, environmentFile, meshCache, &textureCache);
-        instances = instanceTransforms(posed);
+        gpu = std::make_unique<GpuScene>(posed(), environmentFile, meshCache, &textureCache);
+        instances = instanceTransforms(posed());
     }
     // Transforms (node animations included) and light parameters: shapes, lights, the top-level
     // BVH and the emissive triangles are re-uploaded; mesh BVHs, textures and materials stay.
     void uploadTransforms() {
-        gpu->updateTransforms(posed);
-        instances = instanceTransforms(posed);
+        gpu->updateTransforms(posed());
+        instances = instanceTransforms(posed());
     }
-    void pose() { posed = sceneForTime(document, time); }
+    const Scene& document() const { return *scene.document; }
+    const Scene& posed() const { return *scene.posed; }
     FrameTargets& sized() {
         if (!targets || targets->sample.width() != settings.width || targets->sample.height() != settings.height) {
             targets = std::make_unique<FrameTargets>(programs, settings.width, settings.height);
@@ -240,7 +240,7 @@ struct FrameRenderer::State {
     // The pixels the path tracer covers: the region plus the reconstruction's reach around it.
     PixelRect tracedPixels() const {
         const ConfigurationTraits traits = traitsOf(settings.configuration);
-        const int margin = reconstructionReach(traits, svgfSettingsOf(document.settings.render.svgf).iterations);
+        const int margin = reconstructionReach(traits, svgfSettingsOf(document().settings.render.svgf).iterations);
         return grown(regionPixels(settings.region, settings.width, settings.height), margin, settings.width, settings.height);
     }
     void renderAccumulated();
@@ -384,8 +384,8 @@ void FrameRenderer::State::renderRealTime() {
         if (previous != previousInstances.end() && previous->second != worldFromNode)
             in.movedInstances.push_back({static_cast<float>(id.value), previous->second * glm::inverse(worldFromNode)});
     }
-    t.reconstruction.taa = taaSettingsOf(document.settings.render.taa); // the project's, as the CLI renders it
-    t.reconstruction.svgf = svgfSettingsOf(document.settings.render.svgf);
+    t.reconstruction.taa = taaSettingsOf(document().settings.render.taa); // the project's, as the CLI renders it
+    t.reconstruction.svgf = svgfSettingsOf(document().settings.render.svgf);
     result = &t.reconstruction.run(in);
     historyValid = true;
 }
@@ -399,7 +399,7 @@ FrameImages FrameRenderer::State::readPreview() {
     out.width = mean.width();
     out.height = mean.height();
     out.window = imageWindowOf(PixelRect{0, 0, out.width, out.height}, out.height);
-    tonemap.render(shown, camera.exposure + settings.exposure, settings.tonemapper.value_or(document.settings.render.tonemapper),
+    tonemap.render(shown, camera.exposure + settings.exposure, settings.tonemapper.value_or(document().settings.render.tonemapper),
                    preview->display);
     out.tonemapped = topDown(preview->display.readRgba8(0), out.width, out.height, 4);
     out.radiance = topDown(shown.readRgba(0), out.width, out.height, 4);
@@ -442,9 +442,8 @@ FrameRenderer::~FrameRenderer() = default;
 
 void FrameRenderer::setScene(const Scene& scene, const std::filesystem::path& environmentFile) {
     CallerGlState guard;
-    state_->document = scene;
+    state_->scene = snapshotOf(scene, state_->scene.time);
     state_->environmentFile = environmentFile;
-    state_->pose();
     state_->upload();
     state_->previousInstances = state_->instances;
     state_->resetAll();
@@ -453,12 +452,10 @@ void FrameRenderer::setScene(const Scene& scene, const std::filesystem::path& en
 void FrameRenderer::setPreparedScene(Scene document, double seconds, PreparedScene prepared) {
     CallerGlState guard;
     State& s = *state_;
-    s.document = std::move(document);
-    s.time = seconds;
+    s.scene = snapshotOf(std::move(document), seconds);
     s.environmentFile = prepared.environmentFile;
-    s.pose();
     s.gpu = std::make_unique<GpuScene>(std::move(prepared));
-    s.instances = instanceTransforms(s.posed);
+    s.instances = instanceTransforms(s.posed());
     s.previousInstances = s.instances;
     s.resetAll();
 }
@@ -470,20 +467,18 @@ bool FrameRenderer::mayApplyInPlace(const ChangeSet& changes) {
 bool FrameRenderer::applyChangesInPlace(const Scene& scene, const ChangeSet& changes) {
     State& s = *state_;
     if (!affectsImage(changes)) {
-        s.document = scene;
+        s.scene = snapshotOf(scene, s.scene.time); // names, display settings: the posed scene follows too
         return true;
     }
     if (!s.gpu || !mayApplyInPlace(changes)) return false;
     CallerGlState guard;
     if (onlyTransformsOrLights(changes)) {
-        s.document = scene;
-        s.pose();
+        s.scene = snapshotOf(scene, s.scene.time);
         s.uploadTransforms();
     } else {
-        Scene posed = sceneForTime(scene, s.time);
-        if (!s.gpu->updateMaterials(posed)) return false; // other textures or variant: nothing changed here
-        s.document = scene;
-        s.posed = std::move(posed);
+        SceneSnapshot next = snapshotOf(scene, s.scene.time);
+        if (!s.gpu->updateMaterials(*next.posed)) return false; // other textures or variant: nothing changed here
+        s.scene = std::move(next);
     }
     s.pictureChanged = true;
     dropHistoryFor(changes);
@@ -498,8 +493,7 @@ void FrameRenderer::applyChanges(const Scene& scene, const ChangeSet& changes) {
     if (applyChangesInPlace(scene, changes)) return;
     State& s = *state_;
     CallerGlState guard;
-    s.document = scene;
-    s.pose();
+    s.scene = snapshotOf(scene, s.scene.time);
     s.upload(); // rebuilds the GPU scene, reusing the BVHs of unchanged meshes
     s.pictureChanged = true;
     dropHistoryFor(changes);
@@ -546,11 +540,13 @@ void FrameRenderer::useSceneCamera(const std::string& name) {
 
 void FrameRenderer::setTime(double seconds) {
     State& s = *state_;
-    if (seconds == s.time) return;
-    s.time = seconds;
-    if (!sceneAnimates(s.document)) return;
+    if (seconds == s.scene.time) return;
+    if (!sceneAnimates(s.document())) {
+        s.scene.time = seconds;
+        return;
+    }
     CallerGlState guard;
-    s.pose();
+    s.scene = retimed(std::move(s.scene), seconds);
     if (s.gpu) s.uploadTransforms(); // animations move nodes (and cameras) only
     else s.upload();
     s.pictureChanged = true;
@@ -566,7 +562,7 @@ void FrameRenderer::renderFrame() {
     CallerGlState guard;
     s.sized();
     if (s.followSceneCamera || !s.cameraSet) {
-        const CameraSetup camera = resolveCamera(s.posed, s.cameraName, s.settings.width, s.settings.height);
+        const CameraSetup camera = resolveCamera(s.posed(), s.cameraName, s.settings.width, s.settings.height);
         if (!s.cameraSet || !sameCamera(camera, s.camera)) s.pictureChanged = true;
         s.camera = camera;
         s.cameraSet = true;
@@ -589,7 +585,7 @@ bool FrameRenderer::drawTo(unsigned int framebuffer, int width, int height) {
     CallerGlState guard;
     const gl::RenderTarget& display = preview ? s.preview->display : s.targets->display;
     s.tonemap.render(preview ? s.shownPreview() : s.shown(false), s.camera.exposure + s.settings.exposure,
-                     s.settings.tonemapper.value_or(s.document.settings.render.tonemapper), display);
+                     s.settings.tonemapper.value_or(s.document().settings.render.tonemapper), display);
     display.bindForDrawing(); // the display target becomes the read framebuffer below
     GLint displayFbo = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &displayFbo);
@@ -614,7 +610,7 @@ FrameImages FrameRenderer::readImages() {
     out.window = imageWindowOf(regionPixels(s.settings.region, out.width, out.height), out.height);
     const gl::RenderTarget& shown = s.shown(true);
     s.tonemap.render(shown, s.camera.exposure + s.settings.exposure,
-                     s.settings.tonemapper.value_or(s.document.settings.render.tonemapper), t.display);
+                     s.settings.tonemapper.value_or(s.document().settings.render.tonemapper), t.display);
     out.tonemapped = topDown(t.display.readRgba8(0), out.width, out.height, 4);
     out.radiance = topDown(shown.readRgba(0), out.width, out.height, 4);
     if (traitsOf(s.settings.configuration).accumulate) {

@@ -111,7 +111,7 @@ public:
     // scene, reusing the BVHs of unchanged meshes.
     void applyChanges(const Scene& scene, const ChangeSet& changes);
     // The GL stage of setScene alone, for a host that prepares on a worker thread: uploads what
-    // prepareScene made of sceneForTime(document, seconds) (renderer/gpu_scene/prepared_scene.h).
+    // prepareScene made of the document posed at `seconds` (renderer/scene_snapshot.h).
     void setPreparedScene(Scene document, double seconds, PreparedScene prepared);
     // Whether changes like these may be applied without a new GPU scene (transforms, lights,
     // material values; a material edit that needs other textures still returns false below).

@@ -1,5 +1,7 @@
 #include "editor/viewport/scene_preparer.h"
 
+#include "scene/anim/scene_at_time.h"
+
 #include <QElapsedTimer>
 
 #include <utility>
@@ -33,7 +35,8 @@ void ScenePreparer::start(Scene document, double seconds, std::filesystem::path 
             if (ticket->cancelled) throw renderer::PreparationCancelled{};
             job_.post(ticket, [this, stage, done, total] { emit progress(stage, int(done), int(total)); });
         };
-        const Scene posed = renderer::sceneForTime(*input, seconds);
+        Scene storage;
+        const Scene& posed = posedAt(*input, seconds, storage); // the document itself when nothing animates
         auto result = std::make_shared<PreparedDocument>();
         result->gpu = renderer::prepareScene(posed, environmentFile, limits, *meshCache_, control, textureCache_.get());
         control.progress(renderer::PreparationStage::Picking, 0, 1); // may stop here too

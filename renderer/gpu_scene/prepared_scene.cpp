@@ -124,6 +124,5 @@ PreparedScene prepareScene(const Scene& scene, const std::filesystem::path& envi
     return out;
 }
 
-Scene sceneForTime(const Scene& document, double seconds) { return sceneAnimates(document) ? sceneAt(document, seconds) : document; }
 
 } // namespace glint::renderer

@@ -70,15 +70,13 @@ struct PrepareControl {
 // Thrown out of prepareScene by a progress callback when a newer preparation supersedes it.
 struct PreparationCancelled {};
 
-// `scene`: already posed at the time to render (sceneForTime). `limits`: the GL context's texture
+// `scene`: already posed at the time to render (renderer/scene_snapshot.h). `limits`: the GL context's texture
 // limits (queryTextureLimits, read on the GL thread). Throws std::runtime_error or FileError like
 // GpuScene does, and whatever `control.progress` throws. `textureCache`: decoded, mip-mapped images
 // kept between preparations (texture_cache.h; it locks itself); none: every image is decoded.
 PreparedScene prepareScene(const Scene& scene, const std::filesystem::path& environmentFile, const TextureLimits& limits,
                            MeshBvhCache& meshCache, const PrepareControl& control = {}, TextureCache* textureCache = nullptr);
 
-// The document as rendered at `seconds`: posed when it animates, else the document itself.
-Scene sceneForTime(const Scene& document, double seconds);
 
 // The warning code of one of TextureSet's messages.
 std::string textureWarningCode(const std::string& message);
