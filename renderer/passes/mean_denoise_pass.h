@@ -15,7 +15,7 @@ namespace glint::renderer {
 
 struct MeanDenoiseSettings {
     int iterations = 5;
-    float sigmaLuminance = 2.0f; // in standard deviations of the mean (2: the least relMSE at 4-64 spp on the test room)
+    float sigmaLuminance = 1.5f; // in standard deviations of the mean (docs/DENOISING.md)
     float sigmaNormal = 128.0f;
     float sigmaDepth = 1.0f;
 };

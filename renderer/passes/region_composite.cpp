@@ -30,11 +30,16 @@ int reconstructionReach(const ConfigurationTraits& traits, int svgfIterations) {
     if (traits.accumulate) return 0;
     constexpr int antiLagReach = 3; // a pixel takes the largest lambda of its 2x2 nearest 3x3 strata
     constexpr int varianceReach = 3;
+    // The filtered still mean the converge stage fades into (mean_denoise_pass.h, 5 steps): its
+    // taps reach 62 px, its 5x5 spatial variance and each step's 3x3 variance blur further, and the
+    // variance it spreads enters every later step's weights. Measured: region edges are bit-equal
+    // to the full frame's from 76 px on (test_render_region), not at 75.
+    constexpr int meanDenoiseReach = 76;
     int reach = 0;
     if (traits.svgf) reach = 2 * ((1 << std::clamp(svgfIterations, 1, 16)) - 1) + varianceReach + antiLagReach;
     else if (traits.taa) reach = antiLagReach;
     if (traits.taa) reach += 1;
-    return reach;
+    return std::max(reach, meanDenoiseReach);
 }
 
 bool RegionComposite::fits(int width, int height) const {

@@ -17,7 +17,8 @@ namespace glint::renderer {
 // step's 3x3 variance blur lies inside), SVGF's 7x7 variance estimate (3), and anti-lag's strata
 // (3: the 2x2 nearest 3x3 strata) or SVGF's 3x3 firefly test (1) at reprojection. Path tracing
 // this margin around a region makes the region's first frame after a reset exactly the full
-// frame's; later frames differ only through history, far inside the filters' weight tails.
+// frame's; later frames differ only through history, far inside the filters' weight tails. Every
+// real-time configuration also reads the filtered still mean it fades into (76 px).
 // Accumulate and Reference read no neighbours: 0.
 int reconstructionReach(const ConfigurationTraits& traits, int svgfIterations);
 

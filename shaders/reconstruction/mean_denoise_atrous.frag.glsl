@@ -35,7 +35,7 @@ void main() {
     if (nd.w < 0.0) return;
     float id = texelFetch(uObjectId, pixel, 0).x;
     float lCentre = luminance(centre.rgb);
-    float lScale = uSigmaLuminance * sqrt(max(blurredVariance(pixel, size), 0.0)) + 1.0e-8;
+    float lScale = uSigmaLuminance * sqrt(max(min(centre.a, blurredVariance(pixel, size)), 0.0)) + 1.0e-8;
 
     const float kernel[3] = float[3](3.0 / 8.0, 1.0 / 4.0, 1.0 / 16.0);
     float w0 = kernel[0] * kernel[0];

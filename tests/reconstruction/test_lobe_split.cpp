@@ -161,12 +161,12 @@ private slots:
     }
 
     // The polished floor reflects the red box, the balls and the wall. Full's relMSE against a
-    // 256-spp image after 8 and 32 frames, overall and on the floor, next to a raw 1-spp frame's
-    // (figures for docs/DENOISING.md). Tolerance: at frame 8 Full is below 0.5x raw overall and
-    // below raw on the floor; at frame 32 the floor's error is below a 16-sample mean's (raw / 16) and
-    // not far above its frame-8 error: the converge fade blends towards the 32-sample running mean
-    // there (about raw / 32 on the floor), which since restarted histories are filtered apart
-    // (docs/DENOISING.md mode 1) is no better than the filtered frame 8.
+    // 256-spp image after 8 and 32 frames, overall and on the floor, next to a raw 1-spp frame's and
+    // the raw 32-sample mean's (figures for docs/DENOISING.md). Tolerance: at frame 8 Full is below
+    // 0.5x raw overall and below raw on the floor; at frame 32, when Full shows the filtered 32-sample
+    // mean, the floor's error is below the raw 32-sample mean's and not above its frame-8 error
+    // (+25 %). (A raw 1-spp frame is no yardstick for later frames: one caustic sample in it can
+    // move its error tenfold from seed to seed.)
     void glossyFloorBeforeConvergence() {
         const GlossyRoom room = makeGlossyRoom();
         const auto camera = cameraAt(room.scene, 0.0f);
@@ -189,12 +189,18 @@ private slots:
             fullFloor[k] = relMse(image, reference, floor);
             dump(image, "glossy_full_" + std::to_string(f));
         }
+        h_->frames.setSettings(settingsFor(renderer::Configuration::Accumulate));
+        h_->frames.setScene(room.scene);
+        std::vector<float> mean32;
+        for (int f = 1; f <= 32; ++f) mean32 = h_->frame(camera);
         const double rawAll = relMse(raw, reference), rawFloor = relMse(raw, reference, floor);
-        qInfo("glossy room, Full relMSE: frame 8 %.4f (floor %.4f), frame 32 %.4f (floor %.4f); raw 1 spp %.4f (floor %.4f)",
-              full[0], fullFloor[0], full[1], fullFloor[1], rawAll, rawFloor);
+        const double mean32Floor = relMse(mean32, reference, floor);
+        qInfo("glossy room, Full relMSE: frame 8 %.4f (floor %.4f), frame 32 %.4f (floor %.4f); raw 1 spp %.4f (floor %.4f); "
+              "raw 32-sample mean %.4f (floor %.4f)",
+              full[0], fullFloor[0], full[1], fullFloor[1], rawAll, rawFloor, relMse(mean32, reference), mean32Floor);
         QVERIFY(full[0] < 0.5 * rawAll);
         QVERIFY(fullFloor[0] < rawFloor);
-        QVERIFY(fullFloor[1] < rawFloor / 16.0);
+        QVERIFY(fullFloor[1] < mean32Floor);
         QVERIFY(fullFloor[1] < 1.25 * fullFloor[0]);
     }
 
