@@ -11,7 +11,7 @@ struct Preferences {
     QString language = QStringLiteral("system"); // system, en, it, de, fr, es
     int autosaveMinutes = 2;                     // 0 = off
     int viewportSamples = 1024;                  // the viewport stops adding samples here; 0 = no cap
-    QMap<QString, QKeySequence> keymap;          // action object name -> shortcut (overrides only)
+    QMap<QString, QKeySequence> keymap;          // action object name -> shortcut (what differs from the defaults)
 
     static Preferences load();
     void save() const;

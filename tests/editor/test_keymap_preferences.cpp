@@ -231,6 +231,17 @@ private slots:
         QVERIFY(QSettings().value("ui/language").toString() == "en");
     }
 
+    // A keymap saved before version 2 held every action, empty ones too: those are not bindings.
+    void keymapOfEarlierVersionsKeepsOnlyBindings() {
+        QSettings settings;
+        settings.setValue("keymap/view.gizmo.rotate", "");
+        settings.setValue("keymap/view.mode.normals", "N");
+        QTemporaryDir temp;
+        MainWindow window(options(temp.filePath("e")));
+        QCOMPARE(actionNamed(window, "view.gizmo.rotate")->shortcut(), QKeySequence(Qt::Key_E));
+        QCOMPARE(actionNamed(window, "view.mode.normals")->shortcut(), QKeySequence(Qt::Key_N));
+    }
+
     // W/E/R switch the gizmo wherever the focus is (not in a text field), G and S too.
     void gizmoKeysWorkFromAnyPanel() {
         QTemporaryDir temp;
@@ -261,6 +272,18 @@ private slots:
         QTest::keyClicks(filter, "sw");
         QCOMPARE(filter->text(), QString("sw"));
         QCOMPARE(view.gizmoMode(), GizmoMode::Rotate);
+        // While the view flies (right drag), W and S move the camera: the gizmo stays as it is.
+        view.setFocus();
+        QTRY_VERIFY(view.hasFocus());
+        const QPoint middle = view.rect().center();
+        QTest::mousePress(&view, Qt::RightButton, Qt::NoModifier, middle);
+        QCOMPARE(view.tools().tool(), Tool::Fly);
+        QTest::keyPress(&view, Qt::Key_S);
+        QTest::keyRelease(&view, Qt::Key_S);
+        QCOMPARE(view.gizmoMode(), GizmoMode::Rotate);
+        QTest::mouseRelease(&view, Qt::RightButton, Qt::NoModifier, middle);
+        QTest::keyClick(&view, Qt::Key_S);
+        QCOMPARE(view.gizmoMode(), GizmoMode::Scale);
         // Save As on Ctrl+Shift+S, as everywhere else.
         QCOMPARE(actionNamed(window, "file.save_as")->shortcut(), QKeySequence("Ctrl+Shift+S"));
     }
