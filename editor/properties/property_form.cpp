@@ -7,7 +7,10 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QCoreApplication>
 #include <QGroupBox>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QKeyEvent>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -162,6 +165,18 @@ bool uncommitted(QObject* field) {
 } // namespace
 
 bool PropertyForm::eventFilter(QObject* watched, QEvent* event) {
+    // The wheel scrolls the panel; it edits a field only once the field was clicked or tabbed to
+    // (scrolling through the Scene tab switched TAA clipping and tonemappers on the way).
+    if (event->type() == QEvent::Wheel) {
+        auto* field = static_cast<QWidget*>(watched);
+        if (field->hasFocus()) return false;
+        for (QWidget* up = field->parentWidget(); up; up = up->parentWidget())
+            if (auto* area = qobject_cast<QAbstractScrollArea*>(up)) {
+                QCoreApplication::sendEvent(area->verticalScrollBar(), event);
+                break;
+            }
+        return true;
+    }
     if (event->type() == QEvent::ShortcutOverride) {
         auto* key = static_cast<QKeyEvent*>(event);
         const bool undoKey = key->matches(QKeySequence::Undo) || key->matches(QKeySequence::Redo);
@@ -181,6 +196,10 @@ void PropertyForm::addWidget(const QString& label, QWidget* widget, std::functio
             connect(edit, &QLineEdit::editingFinished, edit, [edit] { edit->setProperty(kUncommitted, false); });
             edit->installEventFilter(this);
         } else if (qobject_cast<QAbstractSpinBox*>(field)) {
+            field->installEventFilter(this);
+        }
+        if (qobject_cast<QAbstractSpinBox*>(field) || qobject_cast<QComboBox*>(field) || qobject_cast<QAbstractSlider*>(field)) {
+            field->setFocusPolicy(Qt::StrongFocus); // not focused by the wheel either
             field->installEventFilter(this);
         }
     }

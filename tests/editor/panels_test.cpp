@@ -17,6 +17,8 @@
 #include <QApplication>
 #include <QColorDialog>
 #include <QComboBox>
+#include <QScrollBar>
+#include <QWheelEvent>
 #include <QLabel>
 #include <QPushButton>
 #include <QTimer>
@@ -59,6 +61,7 @@ private slots:
     void pickedColourIsStoredLinearAndShownAsPicked();
     void fieldsFitTheKindAndTheDock();
     void undoLabelsSayWhatHappened();
+    void wheelScrollsThePanelNotTheFields();
 };
 
 void PanelsTest::outlinerSelectionFollowsBothWays() {
@@ -261,6 +264,39 @@ void PanelsTest::undoLabelsSayWhatHappened() {
     QCOMPARE(translations.install(*QCoreApplication::instance(), "de"), QString("de"));
     QCOMPARE(commandLabel(document.history().label(document.history().index() - 1)), QString("Rauheit ändern"));
     translations.install(*QCoreApplication::instance(), "en");
+}
+
+// Scrolling the Scene tab with the wheel switched the combo boxes and sliders it passed over.
+void PanelsTest::wheelScrollsThePanelNotTheFields() {
+    Document document;
+    QCOMPARE(document.open(cornellBox()), QString());
+    PropertiesPanel scene(document, true);
+    scene.resize(380, 300);
+    scene.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&scene));
+    auto* clipping = fieldNamed<QComboBox>(scene, "TAA history clipping");
+    auto* blend = fieldNamed<FloatField>(scene, "TAA blend (current frame)");
+    QVERIFY(clipping && blend);
+    scene.ensureWidgetVisible(clipping);
+    const int scrolled = scene.verticalScrollBar()->value();
+    const auto wheel = [](QWidget* target) {
+        const QPointF at(target->width() / 2.0, target->height() / 2.0);
+        QWheelEvent event(at, target->mapToGlobal(at), QPoint(), QPoint(0, -120), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(target, &event);
+    };
+    const int index = clipping->currentIndex();
+    wheel(clipping);
+    wheel(blend->slider());
+    wheel(blend->spinBox());
+    QCOMPARE(clipping->currentIndex(), index);
+    QCOMPARE(document.history().count(), std::size_t{0});
+    QVERIFY(scene.verticalScrollBar()->value() > scrolled); // the panel scrolled instead
+    // Clicked into, a field takes the wheel.
+    clipping->setFocus();
+    QTRY_VERIFY(clipping->hasFocus());
+    wheel(clipping);
+    QVERIFY(clipping->currentIndex() != index);
+    QCOMPARE(document.history().count(), std::size_t{1});
 }
 
 void PanelsTest::sliderDragIsOneUndoStep() {
