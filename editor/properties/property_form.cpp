@@ -180,7 +180,12 @@ bool PropertyForm::eventFilter(QObject* watched, QEvent* event) {
     if (event->type() == QEvent::ShortcutOverride) {
         auto* key = static_cast<QKeyEvent*>(event);
         const bool undoKey = key->matches(QKeySequence::Undo) || key->matches(QKeySequence::Redo);
-        if (undoKey && !uncommitted(watched)) return true; // not taken by the field: the window's Undo/Redo run
+        if (undoKey && !uncommitted(watched)) {
+            // Not taken by the field: the window's Undo/Redo run. A text field lets go of the focus,
+            // as after Enter in Blender, so it shows the value the undo brings back.
+            if (auto* edit = qobject_cast<QLineEdit*>(watched)) edit->clearFocus();
+            return true;
+        }
     }
     return QWidget::eventFilter(watched, event);
 }

@@ -375,7 +375,18 @@ void WindowTest::undoKeysWorkInAPropertyFieldAfterEnter() {
     QCOMPARE(window.document().scene().at(floor).name, std::string("ground"));
     QTest::keyClick(name, Qt::Key_Z, Qt::ControlModifier);
     QCOMPARE(window.document().scene().at(floor).name, std::string("floor"));
-    QCOMPARE(name->text(), QString("floor")); // the focused field follows the undo
+    QCOMPARE(name->text(), QString("floor")); // the field follows the undo
+    // So does a text field of the Scene tab (the environment image's path).
+    auto* sky = fieldNamed<QWidget>(window.sceneSettings(), "HDR file")->findChild<QLineEdit*>();
+    QVERIFY(sky);
+    sky->setFocus();
+    QTRY_VERIFY(sky->hasFocus());
+    QTest::keyClicks(sky, "sky.hdr");
+    QTest::keyClick(sky, Qt::Key_Return);
+    QCOMPARE(window.document().scene().settings.environment.file, std::string("sky.hdr"));
+    QTest::keyClick(sky, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(window.document().scene().settings.environment.file, std::string());
+    QCOMPARE(sky->text(), QString());
 }
 
 // A Delete is a macro: its pushes arrive while nothing can be undone yet. The Undo action (menu,
