@@ -1,6 +1,7 @@
 #include "common_options.h"
 
 #include "cli_validators.h"
+#include "scene/core/tonemapper_names.h"
 
 #include <charconv>
 
@@ -18,7 +19,6 @@ int parseDimension(std::string_view text, const std::string& whole) {
     return value;
 }
 
-const char* kTonemappers = "aces, neutral, none";
 const char* kConfigs = "baseline, realistic, full, heavy, accumulate, reference";
 
 } // namespace
@@ -49,8 +49,17 @@ void addCommonRenderOptions(CLI::App& cmd, CommonRenderOptions& o) {
     cmd.add_option("--exposure", o.exposure, "Exposure in stops, + brighter, added to the camera's, -64 to 64 "
                                              "(default: 0)")
         ->check(finiteIn(-64.0, 64.0));
-    cmd.add_option("--tonemap", o.tonemap, std::string("Tonemapper: ") + kTonemappers + " (default: the project's)")
-        ->transform(CLI::IsMember({"aces", "neutral", "none"}, CLI::ignore_case));
+    cmd.add_option("--tonemap", o.tonemap,
+                   std::string("Tonemapper, as the project file spells it: ") + std::string(tonemapperNames()) +
+                       "; case-insensitive (default: the project's)")
+        ->transform(CLI::Validator(
+            [](std::string& name) {
+                const auto tonemapper = parseTonemapper(name);
+                if (!tonemapper) return "unknown tonemapper '" + name + "' (" + std::string(tonemapperNames()) + ")";
+                name = std::string(tonemapperName(*tonemapper));
+                return std::string();
+            },
+            "TONEMAPPER"));
     cmd.add_option("--env", o.env, "Environment map (.hdr, .exr), anywhere on disk (default: the project's)");
     cmd.add_flag("--require-gpu", o.requireGpu, "Fail instead of falling back to software rendering (default: off)");
     cmd.add_flag("--strict", o.strict, "Treat warnings as failures (default: off)");

@@ -158,7 +158,8 @@ PropertyForm* makeRenderForm(Document& document, const Report& report, QWidget* 
         [edit](double v, std::uint64_t i) { edit([&](ProjectSettings& s) { s.render.exposure = float(v); }, i); });
     form->addChoice(
         PropertyForm::tr("Tonemapper"),
-        {PropertyForm::tr("None"), PropertyForm::tr("ACES (fitted)"), PropertyForm::tr("Khronos PBR Neutral")},
+        {PropertyForm::tr("None"), PropertyForm::tr("ACES (fitted)"), PropertyForm::tr("Khronos PBR Neutral"), PropertyForm::tr("AgX"),
+         PropertyForm::tr("Reinhard (extended)"), PropertyForm::tr("Hable (Uncharted 2)")},
         [&scene] { return static_cast<int>(scene.settings.render.tonemapper); },
         [edit](int i) { edit([&](ProjectSettings& s) { s.render.tonemapper = static_cast<Tonemapper>(i); }, 0); });
     form->addFloat(

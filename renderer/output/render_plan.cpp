@@ -2,6 +2,7 @@
 
 #include "renderer/configuration.h"
 #include "renderer/gpu_scene/camera_setup.h"
+#include "scene/core/tonemapper_names.h"
 
 #include <charconv>
 #include <cstdio>
@@ -11,20 +12,9 @@ namespace glint::renderer {
 
 namespace {
 
-const char* tonemapperName(Tonemapper t) {
-    switch (t) {
-    case Tonemapper::AcesFitted: return "aces";
-    case Tonemapper::PbrNeutral: return "neutral";
-    case Tonemapper::None: break;
-    }
-    return "none";
-}
-
 std::optional<Tonemapper> tonemapperFromName(const std::optional<std::string>& name) {
     if (!name) return std::nullopt;
-    if (*name == "aces") return Tonemapper::AcesFitted;
-    if (*name == "neutral") return Tonemapper::PbrNeutral;
-    return Tonemapper::None;
+    return parseTonemapper(*name).value_or(Tonemapper::None);
 }
 
 // FNV-1a over the canonical description: the same settings give the same hash on every machine.
@@ -108,7 +98,7 @@ RenderPlan planRender(const Scene& scene, const std::filesystem::path& sceneFile
                      {"bounces", std::to_string(r.bounces)},
                      {"clamp", formatNumber(r.clamp)},
                      {"env", r.envFile.string()},
-                     {"tonemap", tonemapperName(tonemapper)},
+                     {"tonemap", std::string(tonemapperName(tonemapper))},
                      {"exposureEv", formatNumber(double(cameraExposure) + double(r.exposure))}};
     addReconstruction(plan.metadata, project, r.configuration);
     return plan;

@@ -29,7 +29,7 @@ struct RenderOverrides {
     std::optional<std::string> config;
     std::optional<std::string> camera;
     double exposure = 0.0;              // EV added to the camera's and the project's
-    std::optional<std::string> tonemap; // aces, neutral, none
+    std::optional<std::string> tonemap; // a name of scene/core/tonemapper_names.h
     std::optional<std::string> env;     // an environment image anywhere on disk
     bool requireGpu = false;
 };

@@ -1,6 +1,6 @@
 #pragma once
 // The display transform of shaders/passes/tonemap*.glsl on the CPU: exposure, tone curve (ACES
-// fitted, Khronos PBR Neutral, none), explicit sRGB encode, 8-bit round to nearest. Used to put
+// fitted, Khronos PBR Neutral, AgX, Reinhard extended, Hable, none), explicit sRGB encode, 8-bit round to nearest. Used to put
 // EXR frames into a video as the PNG path would have shown them; a value may differ from the
 // GPU's by one code where the GPU's pow() rounds differently.
 #include "scene/core/settings.h"

@@ -3,6 +3,7 @@
 #include "renderer/output/frame_check.h"
 #include "renderer/output/tonemap_cpu.h"
 #include "scene/core/diagnostics.h"
+#include "scene/core/tonemapper_names.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -13,11 +14,7 @@ namespace glint::video {
 
 namespace {
 
-Tonemapper tonemapperNamed(const std::string& name) {
-    if (name == "none") return Tonemapper::None;
-    if (name == "neutral") return Tonemapper::PbrNeutral;
-    return Tonemapper::AcesFitted;
-}
+Tonemapper tonemapperNamed(const std::string& name) { return parseTonemapper(name).value_or(Tonemapper::AcesFitted); }
 
 float numberOr(const std::string& text, float fallback) {
     float value = fallback;

@@ -5,11 +5,15 @@
 namespace glint::renderer {
 namespace {
 
+// The shader's codes (tonemap.frag.glsl): the enum's order.
 int shaderCode(Tonemapper tonemapper) {
     switch (tonemapper) {
+    case Tonemapper::None: return 0;
     case Tonemapper::AcesFitted: return 1;
     case Tonemapper::PbrNeutral: return 2;
-    case Tonemapper::None: break;
+    case Tonemapper::AgX: return 3;
+    case Tonemapper::Reinhard: return 4;
+    case Tonemapper::Hable: return 5;
     }
     return 0;
 }

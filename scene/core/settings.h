@@ -11,7 +11,10 @@
 namespace glint {
 
 enum class LightUnits { Blender, Raw };
-enum class Tonemapper { None, AcesFitted, PbrNeutral };
+// Display transforms (shaders/passes/tonemap_curves.glsl; names: tonemapper_names.h). AgX is the
+// published minimal AgX (Blender's default view since 4.0, approximated); Reinhard is the extended
+// operator on luminance with white at 4; Hable is John Hable's Uncharted 2 filmic curve.
+enum class Tonemapper { None, AcesFitted, PbrNeutral, AgX, Reinhard, Hable };
 
 struct Environment {
     std::string file;       // relative to the project folder; empty = uniform colour

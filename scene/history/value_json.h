@@ -58,7 +58,8 @@ NLOHMANN_JSON_SERIALIZE_ENUM(RotationInterpolation, {{RotationInterpolation::Sle
 NLOHMANN_JSON_SERIALIZE_ENUM(AlphaMode, {{AlphaMode::Opaque, "opaque"}, {AlphaMode::Mask, "mask"}, {AlphaMode::Blend, "blend"}})
 NLOHMANN_JSON_SERIALIZE_ENUM(LightUnits, {{LightUnits::Blender, "blender"}, {LightUnits::Raw, "raw"}})
 NLOHMANN_JSON_SERIALIZE_ENUM(Tonemapper, {{Tonemapper::None, "none"}, {Tonemapper::AcesFitted, "acesFitted"},
-                                          {Tonemapper::PbrNeutral, "pbrNeutral"}})
+                                          {Tonemapper::PbrNeutral, "pbrNeutral"}, {Tonemapper::AgX, "agx"},
+                                          {Tonemapper::Reinhard, "reinhard"}, {Tonemapper::Hable, "hable"}})
 
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Transform, translation, rotation, scale)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(MeshInstance, mesh)

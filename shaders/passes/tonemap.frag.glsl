@@ -3,7 +3,7 @@
 
 uniform sampler2D uRadiance;
 uniform float uExposureScale; // 2^EV
-uniform int uTonemapper;      // 0 none, 1 ACES fitted, 2 Khronos PBR Neutral
+uniform int uTonemapper;      // 0 none, 1 ACES fitted, 2 Khronos PBR Neutral, 3 AgX, 4 Reinhard, 5 Hable
 
 out vec4 outColor;
 

@@ -5,6 +5,7 @@
 
 #include "renderer/gl/headless_context.h"
 #include "renderer/offline_render.h"
+#include "renderer/output/tonemap_cpu.h"
 
 #include <QTest>
 
@@ -45,7 +46,11 @@ private slots:
 
     // 8x8, 2 spp, seed 5. Linear radiance r -> exposure 2^EV -> curve -> sRGB -> round(x * 255):
     // 0.5 with no curve is 188 (sRGB 0.7354); +1 EV saturates at 255; PBR Neutral maps 0.18 to
-    // 0.14 (sRGB 0.4100, byte 105). Alpha is coverage: 255.
+    // 0.14 (sRGB 0.4100, byte 105). The published curves, evaluated by hand (double precision):
+    // AgX (minimal AgX: inset matrix, log2 in [-12.47393, 4.026069], the 6th-order contrast fit,
+    // outset matrix, ^2.2) takes 0.18 to 0.2139 (128) and 1 to 0.589 (202); Reinhard extended (white
+    // 4) takes 0.18 to 0.1543 (109) and 4 to exactly 1 (255); Hable (bias 2, white 11.2) takes 0.18 to
+    // 0.1283 (100) and 5.6 to exactly 1 (255). Alpha is coverage: 255.
     void tonemappedBytes_data() {
         QTest::addColumn<float>("radiance");
         QTest::addColumn<int>("tonemapper");
@@ -55,6 +60,13 @@ private slots:
         QTest::newRow("none, 0.5 at +1 EV") << 0.5f << int(Tonemapper::None) << 1.0f << 255;
         QTest::newRow("none, 0.0") << 0.0f << int(Tonemapper::None) << 0.0f << 0;
         QTest::newRow("PBR Neutral, 0.18") << 0.18f << int(Tonemapper::PbrNeutral) << 0.0f << 105;
+        QTest::newRow("AgX, 0.18") << 0.18f << int(Tonemapper::AgX) << 0.0f << 128;
+        QTest::newRow("AgX, 1.0") << 1.0f << int(Tonemapper::AgX) << 0.0f << 202;
+        QTest::newRow("AgX, 0.0") << 0.0f << int(Tonemapper::AgX) << 0.0f << 0;
+        QTest::newRow("Reinhard, 0.18") << 0.18f << int(Tonemapper::Reinhard) << 0.0f << 109;
+        QTest::newRow("Reinhard, white 4") << 4.0f << int(Tonemapper::Reinhard) << 0.0f << 255;
+        QTest::newRow("Hable, 0.18") << 0.18f << int(Tonemapper::Hable) << 0.0f << 100;
+        QTest::newRow("Hable, white 11.2 / 2") << 5.6f << int(Tonemapper::Hable) << 0.0f << 255;
     }
     void tonemappedBytes() {
         QFETCH(float, radiance);
@@ -65,6 +77,9 @@ private slots:
         QCOMPARE(out.radiance[0], radiance); // exposure and curve never touch the linear image
         for (std::size_t i = 0; i < out.tonemapped.size(); ++i)
             QCOMPARE(int(out.tonemapped[i]), i % 4 == 3 ? 255 : expected);
+        // The CPU twin (videos from EXR frames) gives the same byte.
+        const auto cpu = video::tonemapToSrgb8({radiance, radiance, radiance, 1.0f}, exposure, static_cast<Tonemapper>(tonemapper));
+        QCOMPARE(int(cpu[0]), expected);
     }
 
     // 8x8: an orthographic camera 2 m above a ground plane: depth 2, normal +Y, id of the ground

@@ -161,8 +161,9 @@ private:
 };
 
 constexpr std::array<std::pair<const char*, LightUnits>, 2> kLightUnitNames{{{"blender", LightUnits::Blender}, {"raw", LightUnits::Raw}}};
-constexpr std::array<std::pair<const char*, Tonemapper>, 3> kTonemapperNames{
-    {{"none", Tonemapper::None}, {"aces", Tonemapper::AcesFitted}, {"pbrNeutral", Tonemapper::PbrNeutral}}};
+constexpr std::array<std::pair<const char*, Tonemapper>, 6> kTonemapperNames{
+    {{"none", Tonemapper::None}, {"aces", Tonemapper::AcesFitted}, {"pbrNeutral", Tonemapper::PbrNeutral},
+     {"agx", Tonemapper::AgX}, {"reinhard", Tonemapper::Reinhard}, {"hable", Tonemapper::Hable}}};
 
 constexpr std::array<std::pair<const char*, TaaClip>, 3> kTaaClipNames{
     {{"variance", TaaClip::Variance}, {"minmax", TaaClip::MinMax}, {"none", TaaClip::None}}};
