@@ -172,6 +172,8 @@ struct FrameRenderer::State {
     TonemapPass tonemap{programs};
     MeanDenoisePass meanDenoise{programs};
     MeanDenoisePass previewDenoise{programs};
+    BloomPass bloom{programs};
+    BloomPass previewBloom{programs};
     std::unique_ptr<FrameTargets> targets;
     std::unique_ptr<PreviewTargets> preview;
 
@@ -399,7 +401,7 @@ FrameImages FrameRenderer::State::readPreview() {
     out.width = mean.width();
     out.height = mean.height();
     out.window = imageWindowOf(PixelRect{0, 0, out.width, out.height}, out.height);
-    tonemap.render(shown, camera.exposure + settings.exposure, settings.tonemapper.value_or(document().settings.render.tonemapper),
+    tonemap.render(previewBloom.execute(shown, settings.bloom), camera.exposure + settings.exposure, settings.tonemapper.value_or(document().settings.render.tonemapper),
                    preview->display);
     out.tonemapped = topDown(preview->display.readRgba8(0), out.width, out.height, 4);
     out.radiance = topDown(shown.readRgba(0), out.width, out.height, 4);
@@ -584,7 +586,9 @@ bool FrameRenderer::drawTo(unsigned int framebuffer, int width, int height) {
     if (!s.result && !preview) return false;
     CallerGlState guard;
     const gl::RenderTarget& display = preview ? s.preview->display : s.targets->display;
-    s.tonemap.render(preview ? s.shownPreview() : s.shown(false), s.camera.exposure + s.settings.exposure,
+    const gl::RenderTarget& linear = preview ? s.previewBloom.execute(s.shownPreview(), s.settings.bloom)
+                                             : s.bloom.execute(s.shown(false), s.settings.bloom);
+    s.tonemap.render(linear, s.camera.exposure + s.settings.exposure,
                      s.settings.tonemapper.value_or(s.document().settings.render.tonemapper), display);
     display.bindForDrawing(); // the display target becomes the read framebuffer below
     GLint displayFbo = 0;
@@ -609,10 +613,11 @@ FrameImages FrameRenderer::readImages() {
     out.height = t.sample.height();
     out.window = imageWindowOf(regionPixels(s.settings.region, out.width, out.height), out.height);
     const gl::RenderTarget& shown = s.shown(true);
-    s.tonemap.render(shown, s.camera.exposure + s.settings.exposure,
+    const gl::RenderTarget& bloomed = s.bloom.execute(shown, s.settings.bloom);
+    s.tonemap.render(bloomed, s.camera.exposure + s.settings.exposure,
                      s.settings.tonemapper.value_or(s.document().settings.render.tonemapper), t.display);
     out.tonemapped = topDown(t.display.readRgba8(0), out.width, out.height, 4);
-    out.radiance = topDown(shown.readRgba(0), out.width, out.height, 4);
+    out.radiance = topDown((s.settings.bloomLinear ? bloomed : shown).readRgba(0), out.width, out.height, 4);
     if (traitsOf(s.settings.configuration).accumulate) {
         readGBuffer(t.stillMean.mean(), out);
         out.variance = sampleVariance(out.radiance, topDown(t.stillMean.mean().readRgba(radianceSquaredAttachment), out.width, out.height, 4),

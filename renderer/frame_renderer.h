@@ -12,6 +12,7 @@
 #include "renderer/configuration.h"
 #include "renderer/gpu_scene/camera_setup.h"
 #include "renderer/gpu_scene/prepared_scene.h"
+#include "renderer/passes/bloom_pass.h"
 #include "renderer/passes/path_trace_pass.h"
 #include "renderer/render_region.h"
 #include "scene/core/scene.h"
@@ -59,6 +60,11 @@ struct FrameSettings {
     // preview too; the mean itself stays raw. Display-only: changing it keeps the mean. (The
     // real-time configurations always fade into the filtered mean.) Not with a region.
     bool denoise = false;
+    // Bloom on what drawTo() and readImages() show, before tone mapping (display-only: it keeps
+    // every history). The linear radiance readImages() gives (EXR) stays unbloomed unless
+    // bloomLinear.
+    BloomSettings bloom;
+    bool bloomLinear = false;
     friend bool operator==(const FrameSettings&, const FrameSettings&) = default;
 };
 

@@ -57,6 +57,8 @@ FrameSettings frameSettingsFor(const RenderRequest& request, int sppPerFrame) {
     s.tonemapper = request.tonemapper;
     s.view = request.view;
     s.clamp = request.clamp;
+    s.bloom = request.bloom;
+    s.bloomLinear = request.bloomLinear;
     s.independentSampler = request.independentSampler;
     s.aoDistance = request.aoDistance;
     s.width = request.width;

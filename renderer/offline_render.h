@@ -38,6 +38,8 @@ struct RenderRequest {
     std::optional<ImageWindow> region;
     DebugView view = DebugView::None;
     float aoDistance = 1.0f;              // metres, for DebugView::AmbientOcclusion
+    BloomSettings bloom;                  // on the tonemapped outputs; EXR radiance too with bloomLinear
+    bool bloomLinear = false;
     std::function<void(int done, int total)> progress; // after each sample (real-time: frame); may be empty
 };
 

@@ -61,6 +61,13 @@ void addCommonRenderOptions(CLI::App& cmd, CommonRenderOptions& o) {
             },
             "TONEMAPPER"));
     cmd.add_option("--env", o.env, "Environment map (.hdr, .exr), anywhere on disk (default: the project's)");
+    cmd.add_option("--bloom", o.bloom, "Bloom strength, the share of light spread into glare, 0 (off) to 1 (default: the "
+                                       "project's, 0)")
+        ->check(finiteIn(0.0, 1.0));
+    cmd.add_option("--bloom-radius", o.bloomRadius, "Bloom's widest blur as a fraction of the image height, above 0 to 1 "
+                                                    "(default: the project's, 0.05)")
+        ->check(finiteIn(1e-6, 1.0));
+    cmd.add_flag("--bloom-exr", o.bloomLinear, "Bloom the EXR's radiance too (default: off, EXR stays unbloomed)");
     cmd.add_flag("--require-gpu", o.requireGpu, "Fail instead of falling back to software rendering (default: off)");
     cmd.add_flag("--strict", o.strict, "Treat warnings as failures (default: off)");
 }

@@ -165,6 +165,12 @@ PropertyForm* makeRenderForm(Document& document, const Report& report, QWidget* 
     form->addFloat(
         PropertyForm::tr("Radiance clamp (0 = off)"), 0.0, 100.0, 2, [&scene] { return double(scene.settings.render.clamp); },
         [edit](double v, std::uint64_t i) { edit([&](ProjectSettings& s) { s.render.clamp = float(v); }, i); });
+    form->addFloat(
+        PropertyForm::tr("Bloom strength (0 = off)"), 0.0, 1.0, 3, [&scene] { return double(scene.settings.render.bloom.strength); },
+        [edit](double v, std::uint64_t i) { edit([&](ProjectSettings& s) { s.render.bloom.strength = float(v); }, i); });
+    form->addFloat(
+        PropertyForm::tr("Bloom radius (of the height)"), 0.001, 1.0, 3, [&scene] { return double(scene.settings.render.bloom.radius); },
+        [edit](double v, std::uint64_t i) { edit([&](ProjectSettings& s) { s.render.bloom.radius = float(v); }, i); });
     form->addChoice(
         PropertyForm::tr("Light units"), {PropertyForm::tr("Blender (W = lm / 683)"), PropertyForm::tr("Raw")},
         [&scene] { return static_cast<int>(scene.settings.lightUnits); },

@@ -284,6 +284,7 @@ void RenderHost::configure(const ViewRequest& request) {
     s.seed = project.seed;
     s.exposure = project.exposure;
     s.clamp = project.clamp;
+    s.bloom = {project.bloom.strength, project.bloom.radius};
     s.view = request.mode == ViewMode::AmbientOcclusion ? renderer::DebugView::AmbientOcclusion
              : request.mode == ViewMode::BvhCost        ? renderer::DebugView::BvhCost
                                                         : renderer::DebugView::None;

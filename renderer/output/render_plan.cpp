@@ -85,6 +85,9 @@ RenderPlan planRender(const Scene& scene, const std::filesystem::path& sceneFile
     r.requireGpu = o.requireGpu;
     r.clamp = project.clamp;
     r.configuration = configurationOf(scene, o);
+    r.bloom.strength = o.bloom.value_or(project.bloom.strength);
+    r.bloom.radius = o.bloomRadius.value_or(project.bloom.radius);
+    r.bloomLinear = o.bloomLinear && r.bloom.strength > 0.0f;
 
     const Tonemapper tonemapper = r.tonemapper.value_or(project.tonemapper);
     // The camera's own exposure is part of what the PNG shows and what `glint encode` applies to EXRs.
@@ -100,6 +103,11 @@ RenderPlan planRender(const Scene& scene, const std::filesystem::path& sceneFile
                      {"env", r.envFile.string()},
                      {"tonemap", std::string(tonemapperName(tonemapper))},
                      {"exposureEv", formatNumber(double(cameraExposure) + double(r.exposure))}};
+    if (r.bloom.strength > 0.0f) { // only when on: frames rendered before bloom existed keep their hash
+        plan.metadata["bloom"] = formatNumber(r.bloom.strength);
+        plan.metadata["bloomRadius"] = formatNumber(r.bloom.radius);
+        if (r.bloomLinear) plan.metadata["bloomLinear"] = "1";
+    }
     addReconstruction(plan.metadata, project, r.configuration);
     return plan;
 }

@@ -32,6 +32,9 @@ struct RenderOverrides {
     std::optional<std::string> tonemap; // a name of scene/core/tonemapper_names.h
     std::optional<std::string> env;     // an environment image anywhere on disk
     bool requireGpu = false;
+    std::optional<float> bloom;         // strength, 0 (off) to 1; unset: the project's
+    std::optional<float> bloomRadius;   // fraction of the image height; unset: the project's
+    bool bloomLinear = false;           // the EXR's radiance bloomed too
 };
 
 struct RenderPlan {

@@ -39,6 +39,14 @@ struct TaaParameters {
     friend bool operator==(const TaaParameters&, const TaaParameters&) = default;
 };
 
+// Bloom on the displayed image (renderer/passes/bloom_pass.h): the share of light spread into
+// glare, 0 (off) to 1, and the widest blur as a fraction of the image height.
+struct BloomParameters {
+    float strength = 0.0f;
+    float radius = 0.05f;
+    friend bool operator==(const BloomParameters&, const BloomParameters&) = default;
+};
+
 struct SvgfParameters {
     int iterations = 5;            // a-trous passes, 1..10 (the first also filters the history)
     float alpha = 0.2f;            // the current frame's minimum weight in the temporal mean, (0, 1]
@@ -62,6 +70,7 @@ struct RenderSettings {
     float clamp = 0.0f;     // radiance clamp for fireflies; 0 = off (unbiased)
     TaaParameters taa;
     SvgfParameters svgf;
+    BloomParameters bloom;
     friend bool operator==(const RenderSettings&, const RenderSettings&) = default;
 };
 

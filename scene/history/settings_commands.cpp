@@ -10,8 +10,10 @@ ChangeSet settingsChange(const ProjectSettings& before, const ProjectSettings& a
     RenderSettings renderWithoutDisplay = after.render;
     renderWithoutDisplay.exposure = before.render.exposure;
     renderWithoutDisplay.tonemapper = before.render.tonemapper;
+    renderWithoutDisplay.bloom = before.render.bloom;
     if (renderWithoutDisplay != before.render || before.lightUnits != after.lightUnits) changes.add(Change::Settings);
-    if (before.render.exposure != after.render.exposure || before.render.tonemapper != after.render.tonemapper)
+    if (before.render.exposure != after.render.exposure || before.render.tonemapper != after.render.tonemapper ||
+        before.render.bloom != after.render.bloom)
         changes.add(Change::Display);
     if (before.environment != after.environment) changes.add(Change::Environment);
     if (before.activeCamera != after.activeCamera) {

@@ -83,9 +83,10 @@ NLOHMANN_JSON_SERIALIZE_ENUM(TaaClip, {{TaaClip::Variance, "variance"}, {TaaClip
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(TaaParameters, blend, clip, clipGamma, perceptualBlend)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(SvgfParameters, iterations, alpha, momentsAlpha, sigmaLuminance,
                                                 sigmaNormal, sigmaDepth, fireflyRatio)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(BloomParameters, strength, radius)
 // With defaults: command logs written before the reconstruction parameters existed still replay.
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(RenderSettings, configuration, width, height, spp, bounces, seed,
-                                                exposure, tonemapper, clamp, taa, svgf)
+                                                exposure, tonemapper, clamp, taa, svgf, bloom)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Timeline, start, end, fpsNumerator, fpsDenominator)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(OutputSettings, path, aovs, codec)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(ProjectSettings, render, environment, activeCamera, timeline, output,

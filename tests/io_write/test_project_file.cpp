@@ -20,6 +20,7 @@ ProjectFile sampleProject()
     p.settings.render.exposure = 0.1f;
     p.settings.render.seed = 4000000000u;
     p.settings.render.tonemapper = Tonemapper::PbrNeutral;
+    p.settings.render.bloom = {.strength = 0.25f, .radius = 0.1f};
     p.settings.environment = {.file = "studio.hdr", .color = {0.1f, 0.2f, 0.3f}, .intensity = 1.5f, .rotationDegrees = 33.3f};
     p.settings.timeline = {.start = 0.5, .end = 10.1, .fpsNumerator = 24000, .fpsDenominator = 1001};
     p.settings.output = {.path = "frames/shot_####.exr", .aovs = "none", .codec = "prores"};

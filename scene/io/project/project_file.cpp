@@ -207,6 +207,13 @@ bool inRange(int v, int low, int high) { return v >= low && v <= high; }
 bool finiteFloat(float v) { return std::isfinite(v); }
 bool nonNegativeFinite(float v) { return std::isfinite(v) && v >= 0.0f; }
 
+void readBloom(ObjectReader& r, BloomParameters& b)
+{
+    r.readChecked("strength", b.strength, [](float v) { return v >= 0.0f && v <= 1.0f; }, "a number from 0 (off) to 1");
+    r.readChecked("radius", b.radius, [](float v) { return v > 0.0f && v <= 1.0f; },
+                  "a fraction of the image height above 0, at most 1");
+}
+
 void readRender(ObjectReader& r, RenderSettings& s)
 {
     r.read("configuration", s.configuration);
@@ -226,6 +233,7 @@ void readRender(ObjectReader& r, RenderSettings& s)
     r.readChecked("clamp", s.clamp, nonNegativeFinite, "0 (off) or a positive number");
     r.object("taa", [&](ObjectReader& nested) { readTaa(nested, s.taa); });
     r.object("svgf", [&](ObjectReader& nested) { readSvgf(nested, s.svgf); });
+    r.object("bloom", [&](ObjectReader& nested) { readBloom(nested, s.bloom); });
 }
 
 void readEnvironment(ObjectReader& r, Environment& e)
@@ -297,6 +305,15 @@ json taaJson(const TaaParameters& t)
     if (t.clip != d.clip) j["clip"] = enumName(t.clip, kTaaClipNames);
     if (t.clipGamma != d.clipGamma) j["clipGamma"] = jsonFloat(t.clipGamma);
     if (t.perceptualBlend != d.perceptualBlend) j["perceptualBlend"] = t.perceptualBlend;
+    return j;
+}
+
+json bloomJson(const BloomParameters& b)
+{
+    const BloomParameters d;
+    json j = json::object();
+    if (b.strength != d.strength) j["strength"] = jsonFloat(b.strength);
+    if (b.radius != d.radius) j["radius"] = jsonFloat(b.radius);
     return j;
 }
 
@@ -378,6 +395,7 @@ std::string writeProjectFileText(const ProjectFile& project)
                       {"tonemapper", enumName(r.tonemapper, kTonemapperNames)}, {"clamp", jsonFloat(r.clamp)}};
     if (json taa = taaJson(r.taa); !taa.empty()) root["render"]["taa"] = std::move(taa);
     if (json svgf = svgfJson(r.svgf); !svgf.empty()) root["render"]["svgf"] = std::move(svgf);
+    if (json bloom = bloomJson(r.bloom); !bloom.empty()) root["render"]["bloom"] = std::move(bloom);
     const Environment& e = s.environment;
     root["environment"] = {{"color", {jsonFloat(e.color.x), jsonFloat(e.color.y), jsonFloat(e.color.z)}},
                            {"intensity", jsonFloat(e.intensity)}, {"rotation", jsonFloat(e.rotationDegrees)}};
