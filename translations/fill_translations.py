@@ -458,6 +458,12 @@ T = {
 "Change double sided": ("Cambia doppia faccia", "Doppelseitig ändern", "Modifier le double face", "Cambiar doble cara"),
 "Change texture": ("Cambia texture", "Textur ändern", "Modifier la texture", "Cambiar textura"),
 "Rename material": ("Rinomina materiale", "Material umbenennen", "Renommer le matériau", "Renombrar material"),
+"Change bloom": ("Cambia bloom", "Bloom ändern", "Modifier le bloom", "Cambiar bloom"),
+"AgX": ("AgX", "AgX", "AgX", "AgX"),
+"Reinhard (extended)": ("Reinhard (esteso)", "Reinhard (erweitert)", "Reinhard (étendu)", "Reinhard (extendido)"),
+"Hable (Uncharted 2)": ("Hable (Uncharted 2)", "Hable (Uncharted 2)", "Hable (Uncharted 2)", "Hable (Uncharted 2)"),
+"Bloom strength (0 = off)": ("Intensità del bloom (0 = spento)", "Bloom-Stärke (0 = aus)", "Intensité du bloom (0 = désactivé)", "Intensidad del bloom (0 = desactivado)"),
+"Bloom radius (of the height)": ("Raggio del bloom (rispetto all'altezza)", "Bloom-Radius (relativ zur Höhe)", "Rayon du bloom (par rapport à la hauteur)", "Radio del bloom (respecto a la altura)"),
 }
 
 

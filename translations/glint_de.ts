@@ -363,6 +363,10 @@
         <source>Rename material</source>
         <translation>Material umbenennen</translation>
     </message>
+    <message>
+        <source>Change bloom</source>
+        <translation>Bloom ändern</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Configurations</name>
@@ -1822,6 +1826,26 @@
     <message>
         <source>Half height (m)</source>
         <translation>Halbe Höhe (m)</translation>
+    </message>
+    <message>
+        <source>AgX</source>
+        <translation>AgX</translation>
+    </message>
+    <message>
+        <source>Reinhard (extended)</source>
+        <translation>Reinhard (erweitert)</translation>
+    </message>
+    <message>
+        <source>Hable (Uncharted 2)</source>
+        <translation>Hable (Uncharted 2)</translation>
+    </message>
+    <message>
+        <source>Bloom strength (0 = off)</source>
+        <translation>Bloom-Stärke (0 = aus)</translation>
+    </message>
+    <message>
+        <source>Bloom radius (of the height)</source>
+        <translation>Bloom-Radius (relativ zur Höhe)</translation>
     </message>
 </context>
 <context>

@@ -363,6 +363,10 @@
         <source>Rename material</source>
         <translation>Renombrar material</translation>
     </message>
+    <message>
+        <source>Change bloom</source>
+        <translation>Cambiar bloom</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Configurations</name>
@@ -1822,6 +1826,26 @@
     <message>
         <source>Half height (m)</source>
         <translation>Semialtura (m)</translation>
+    </message>
+    <message>
+        <source>AgX</source>
+        <translation>AgX</translation>
+    </message>
+    <message>
+        <source>Reinhard (extended)</source>
+        <translation>Reinhard (extendido)</translation>
+    </message>
+    <message>
+        <source>Hable (Uncharted 2)</source>
+        <translation>Hable (Uncharted 2)</translation>
+    </message>
+    <message>
+        <source>Bloom strength (0 = off)</source>
+        <translation>Intensidad del bloom (0 = desactivado)</translation>
+    </message>
+    <message>
+        <source>Bloom radius (of the height)</source>
+        <translation>Radio del bloom (respecto a la altura)</translation>
     </message>
 </context>
 <context>

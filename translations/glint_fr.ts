@@ -363,6 +363,10 @@
         <source>Rename material</source>
         <translation>Renommer le matériau</translation>
     </message>
+    <message>
+        <source>Change bloom</source>
+        <translation>Modifier le bloom</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Configurations</name>
@@ -1822,6 +1826,26 @@
     <message>
         <source>Half height (m)</source>
         <translation>Demi-hauteur (m)</translation>
+    </message>
+    <message>
+        <source>AgX</source>
+        <translation>AgX</translation>
+    </message>
+    <message>
+        <source>Reinhard (extended)</source>
+        <translation>Reinhard (étendu)</translation>
+    </message>
+    <message>
+        <source>Hable (Uncharted 2)</source>
+        <translation>Hable (Uncharted 2)</translation>
+    </message>
+    <message>
+        <source>Bloom strength (0 = off)</source>
+        <translation>Intensité du bloom (0 = désactivé)</translation>
+    </message>
+    <message>
+        <source>Bloom radius (of the height)</source>
+        <translation>Rayon du bloom (par rapport à la hauteur)</translation>
     </message>
 </context>
 <context>

@@ -363,6 +363,10 @@
         <source>Rename material</source>
         <translation>Rinomina materiale</translation>
     </message>
+    <message>
+        <source>Change bloom</source>
+        <translation>Cambia bloom</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Configurations</name>
@@ -1822,6 +1826,26 @@
     <message>
         <source>Half height (m)</source>
         <translation>Semialtezza (m)</translation>
+    </message>
+    <message>
+        <source>AgX</source>
+        <translation>AgX</translation>
+    </message>
+    <message>
+        <source>Reinhard (extended)</source>
+        <translation>Reinhard (esteso)</translation>
+    </message>
+    <message>
+        <source>Hable (Uncharted 2)</source>
+        <translation>Hable (Uncharted 2)</translation>
+    </message>
+    <message>
+        <source>Bloom strength (0 = off)</source>
+        <translation>Intensità del bloom (0 = spento)</translation>
+    </message>
+    <message>
+        <source>Bloom radius (of the height)</source>
+        <translation>Raggio del bloom (rispetto all&apos;altezza)</translation>
     </message>
 </context>
 <context>
