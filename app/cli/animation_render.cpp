@@ -108,7 +108,8 @@ int renderAnimation(const RenderOptions& o, const Scene& scene) {
         printError(e.what());
         return kUsage;
     }
-    renderer::checkOutputWritable(pattern.frame(range.first));
+    renderer::prepareOutputFolder(pattern.frame(range.first));
+    if (o.video) renderer::prepareOutputFolder(*o.video); // before the frames, not after them
     const StopSignal stop;
     int exitCode = kSuccess;
     std::fprintf(stderr, "glint: frames %d-%d at %d/%d fps, shard %d/%d: ", range.first, range.last, fps.numerator,

@@ -4,6 +4,8 @@
 #include "report.h"
 #include "scene_file.h"
 
+#include "renderer/output/image_files.h"
+
 #include <algorithm>
 #include <cctype>
 
@@ -21,6 +23,7 @@ int runConvert(const ConvertOptions& o) {
     LoadResult loaded = openSceneFile(o.input);
     if (reportWarnings(loaded.warnings, o.strict)) return kFailure;
     // The project's environment image resolves in the input's folder: copied beside OUT like textures.
+    renderer::prepareOutputFolder(o.output);
     SaveOptions save;
     save.sourceFolder = std::filesystem::absolute(o.input).parent_path();
     SaveReport report = saveScene(loaded.scene, o.output, save);

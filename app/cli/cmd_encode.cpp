@@ -4,6 +4,7 @@
 #include "exit_codes.h"
 #include "video_from_frames.h"
 
+#include "renderer/output/image_files.h"
 #include "renderer/output/video_settings.h"
 
 #include <memory>
@@ -21,6 +22,7 @@ struct EncodeOptions {
 };
 
 int runEncode(const EncodeOptions& o) {
+    renderer::prepareOutputFolder(o.out);
     encodeFrames(parseFramePattern(o.pattern), o.frames, o.fps, o.out, o.codec);
     return kSuccess;
 }

@@ -23,7 +23,7 @@ namespace {
 
 int renderStill(const RenderOptions& o, Scene& scene) {
     const StopSignal stop;
-    renderer::checkOutputWritable(o.out); // before a long render, not after
+    renderer::prepareOutputFolder(o.out); // before a long render, not after
     if (o.time) poseSceneAt(scene, *o.time);
     FrameJob job;
     WarningsOnce warnings;

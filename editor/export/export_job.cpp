@@ -37,7 +37,7 @@ void ExportJob::run() {
     QStringList files;
     try {
         std::vector<ExportFrame> frames = planExport(scene_, settings_);
-        renderer::checkOutputWritable(frames.front().out);
+        renderer::prepareOutputFolder(frames.front().out);
         renderer::OfflineRenderer gpu;
         const int total = int(frames.size()) * std::max(1, settings_.spp);
         int before = 0;

@@ -181,13 +181,20 @@ ExrLayers parseAovList(const std::string& list) {
     return none;
 }
 
-void checkOutputWritable(const std::filesystem::path& file) {
+void prepareOutputFolder(const std::filesystem::path& file) {
     const std::filesystem::path folder = file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
     std::error_code ec;
-    if (!std::filesystem::is_directory(folder, ec))
-        throw FileError(file.string(), "no-folder",
-                        std::filesystem::exists(folder, ec) ? "'" + folder.string() + "' is a file, not a folder"
-                                                            : "the output folder does not exist");
+    // The first part of the path that exists must be a folder: name it when it is a file.
+    for (std::filesystem::path part = folder; !part.empty(); part = part.parent_path()) {
+        if (std::filesystem::exists(part, ec)) {
+            if (!std::filesystem::is_directory(part, ec))
+                throw FileError(file.string(), "no-folder", "'" + part.string() + "' is a file, not a folder");
+            break;
+        }
+        if (part == part.parent_path()) break;
+    }
+    if (!std::filesystem::is_directory(folder, ec) && !std::filesystem::create_directories(folder, ec))
+        throw FileError(file.string(), "no-folder", "cannot create the output folder '" + folder.string() + "': " + ec.message());
     if (::access(folder.c_str(), W_OK) != 0)
         throw FileError(file.string(), "not-writable", "the output folder is not writable");
 }

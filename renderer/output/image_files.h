@@ -36,9 +36,10 @@ using ImageMetadata = std::map<std::string, std::string>; // written as string a
 // Every format also gets ImageDescription = this prefix + the "settingsHash" entry.
 inline constexpr const char* kSettingsHashPrefix = "glint:settingsHash=";
 
-// Fails early (FileError naming the file) when the folder of `file` does not exist or is not writable,
-// so a long render is not wasted on an output that cannot be saved.
-void checkOutputWritable(const std::filesystem::path& file);
+// Makes sure the folder of `file` exists and is writable, creating the missing folders on its path
+// (as mkdir -p does), so a long render is not wasted on an output that cannot be saved. FileError
+// naming the file when a part of the path is a file, or the folder cannot be made or written.
+void prepareOutputFolder(const std::filesystem::path& file);
 
 // Throws FileError(file, ...) when the file cannot be written.
 void writeRenderImage(const std::filesystem::path& file, const RenderOutput& image, const ExrLayers& layers,

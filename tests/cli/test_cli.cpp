@@ -132,6 +132,19 @@ private slots:
         QVERIFY(QDir(dir.path()).entryList(QDir::Hidden | QDir::Files).filter("partial").isEmpty());
     }
 
+    // A missing output folder is made, as the README's frames/shot_####.exr examples need.
+    void renderCreatesTheOutputFolder() {
+        QTemporaryDir dir;
+        const QString still = dir.filePath("stills/day one/x.png");
+        auto r = runGlint({"render", cornell, "--out", still, "--size", "8x8", "--spp", "1"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY(QFileInfo(still).isFile());
+        const QString converted = dir.filePath("converted/deep/scene.glb");
+        r = runGlint({"convert", cornell, converted});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY(QFileInfo(converted).isFile());
+    }
+
     void renderSameSeedIsBitIdentical() {
         QTemporaryDir dir;
         const QString a = dir.filePath("a.png"), b = dir.filePath("b.png");
@@ -143,7 +156,8 @@ private slots:
     void renderToUnwritableFolderFails() {
         auto r = runGlint({"render", cornell, "--out", "/proc/no-such-dir/x.png", "--size", "8x8", "--spp", "1"});
         QCOMPARE(r.exitCode, 1);
-        QVERIFY2(r.err.startsWith("glint: /proc/no-such-dir/x.png: the output folder does not exist"), qPrintable(r.err));
+        QVERIFY2(r.err.startsWith("glint: /proc/no-such-dir/x.png: cannot create the output folder '/proc/no-such-dir'"),
+                 qPrintable(r.err));
         // A file where the folder should be is named as such.
         QTemporaryDir dir;
         const QString file = dir.filePath("a-file");
