@@ -212,6 +212,7 @@ void RenderHost::paint(const ViewRequest& request, unsigned int framebuffer) {
 // is a queued update, not a loop, so the event loop answers in between.
 void RenderHost::finishPaint() {
     ++stats_.paints;
+    stats_.moving = lastMoving_;
     stats_.sampleCap = sampleCap_;
     emit statsChanged();
     if (workRemains()) QTimer::singleShot(0, this, &RenderHost::paintRequested);

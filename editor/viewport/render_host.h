@@ -57,6 +57,7 @@ struct ViewportStats {
     int samples = 0;        // in the running mean behind the shown image (0 while the scene is prepared)
     int sampleCap = 0;      // the viewport's cap (0: none)
     ViewStage stage = ViewStage::Coarse;
+    bool moving = false;    // the last paint rendered a moving view (real-time frames)
     int refinePercent = 0;  // of the sample being traced in bands
     int framesThisPaint = 0;
     double paintMs = 0.0;   // GL work of the last paint (frames finished on the GPU)
