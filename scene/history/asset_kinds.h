@@ -55,4 +55,14 @@ struct AssetKind<Sampler> {
     static void touch(ChangeSet& changes, IdT id) { changes.samplers.insert(id); }
 };
 
+// Node animations: keyframes the timeline edits (scene/anim/node_keys.h).
+template <>
+struct AssetKind<Animation> {
+    using IdT = AnimationId;
+    static constexpr const char* name = "animation";
+    static constexpr Change contentChange = Change::Animation;
+    static AssetTable<IdT, Animation>& table(Scene& scene) { return scene.animations; }
+    static void touch(ChangeSet&, IdT) {}
+};
+
 } // namespace glint

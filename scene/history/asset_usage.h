@@ -10,5 +10,6 @@ bool isInUse(const Scene& scene, MaterialId material); // shapes and mesh primit
 bool isInUse(const Scene& scene, TextureId texture);   // material texture slots
 bool isInUse(const Scene& scene, ImageId image);       // textures
 bool isInUse(const Scene& scene, SamplerId sampler);   // textures
+inline bool isInUse(const Scene&, AnimationId) { return false; } // nothing refers to an animation
 
 } // namespace glint

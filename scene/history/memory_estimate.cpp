@@ -32,4 +32,10 @@ std::size_t approxBytes(const Material& material) { return sizeof(Material) + ma
 std::size_t approxBytes(const Texture& texture) { return sizeof(Texture) + texture.name.size(); }
 std::size_t approxBytes(const Sampler& sampler) { return sizeof(Sampler) + sampler.name.size(); }
 
+std::size_t approxBytes(const Animation& animation) {
+    std::size_t bytes = sizeof(Animation) + animation.name.size();
+    for (const AnimationChannel& c : animation.channels) bytes += sizeof(c) + (c.times.size() + c.values.size()) * sizeof(float);
+    return bytes;
+}
+
 } // namespace glint

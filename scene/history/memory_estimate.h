@@ -13,5 +13,6 @@ std::size_t approxBytes(const Image& image);
 std::size_t approxBytes(const Material& material);
 std::size_t approxBytes(const Texture& texture);
 std::size_t approxBytes(const Sampler& sampler);
+std::size_t approxBytes(const Animation& animation);
 
 } // namespace glint

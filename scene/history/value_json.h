@@ -55,6 +55,10 @@ NLOHMANN_JSON_SERIALIZE_ENUM(ShapeKind, {{ShapeKind::Sphere, "sphere"}, {ShapeKi
 NLOHMANN_JSON_SERIALIZE_ENUM(LightType, {{LightType::Sun, "sun"}, {LightType::Point, "point"}, {LightType::Spot, "spot"}})
 NLOHMANN_JSON_SERIALIZE_ENUM(Projection, {{Projection::Perspective, "perspective"}, {Projection::Orthographic, "orthographic"}})
 NLOHMANN_JSON_SERIALIZE_ENUM(RotationInterpolation, {{RotationInterpolation::Slerp, "slerp"}, {RotationInterpolation::Squad, "squad"}})
+NLOHMANN_JSON_SERIALIZE_ENUM(Interpolation, {{Interpolation::Step, "step"}, {Interpolation::Linear, "linear"},
+                                             {Interpolation::CubicSpline, "cubicSpline"}})
+NLOHMANN_JSON_SERIALIZE_ENUM(AnimationPath, {{AnimationPath::Translation, "translation"}, {AnimationPath::Rotation, "rotation"},
+                                             {AnimationPath::Scale, "scale"}, {AnimationPath::Weights, "weights"}})
 NLOHMANN_JSON_SERIALIZE_ENUM(AlphaMode, {{AlphaMode::Opaque, "opaque"}, {AlphaMode::Mask, "mask"}, {AlphaMode::Blend, "blend"}})
 NLOHMANN_JSON_SERIALIZE_ENUM(LightUnits, {{LightUnits::Blender, "blender"}, {LightUnits::Raw, "raw"}})
 NLOHMANN_JSON_SERIALIZE_ENUM(Tonemapper, {{Tonemapper::None, "none"}, {Tonemapper::AcesFitted, "acesFitted"},
@@ -75,6 +79,8 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(TextureRef, texture, texCoord, scale, transfo
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Primitive, positions, normals, tangents, uv0, uv1, colors, indices, material,
                                    unknown)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Mesh, name, primitives, unknown)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(AnimationChannel, node, path, interpolation, times, values)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Animation, name, channels, bakedCameraPath, unknown)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Image, name, uri, mimeType, encoded, width, height, missing, unknown)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Sampler, name, magFilter, minFilter, wrapS, wrapT, unknown)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Texture, name, image, sampler, unknown)

@@ -6,6 +6,7 @@
 #include "scene/history/node_commands.h"
 #include "scene/history/set_node_field.h"
 #include "scene/history/settings_commands.h"
+#include "scene/anim/node_keys.h"
 
 namespace glint::test {
 namespace {
@@ -16,6 +17,7 @@ constexpr MaterialId kNewMaterial{100};
 constexpr TextureId kNewTexture{100};
 constexpr ImageId kNewImage{100};
 constexpr SamplerId kNewSampler{100};
+constexpr AnimationId kNewAnimation{100};
 
 void addNodeCommands(std::vector<CommandPtr>& out, const SampleIds& ids) {
     Node lamp;
@@ -85,6 +87,16 @@ void addCameraCommands(std::vector<CommandPtr>& out, const SampleIds& ids) {
     out.push_back(std::make_unique<SetCameraPathMode>(ids.camera, RotationInterpolation::Slerp, true));
 }
 
+// A node's transform keys: a new animation, a second key, then the animation removed.
+void addAnimationCommands(std::vector<CommandPtr>& out, const Scene& start, const SampleIds& ids) {
+    Transform local = start.at(ids.ball).local;
+    Animation animation = withNodeKey({}, ids.ball, 0.0, local, Interpolation::Linear);
+    out.push_back(std::make_unique<AddAsset<Animation>>(animation, kNewAnimation));
+    local.translation.y += 1.0f;
+    out.push_back(std::make_unique<SetAsset<Animation>>(kNewAnimation, withNodeKey(animation, ids.ball, 1.0, local, Interpolation::Linear)));
+    out.push_back(std::make_unique<RemoveAsset<Animation>>(kNewAnimation));
+}
+
 void addDocumentCommands(std::vector<CommandPtr>& out, const Scene& start, const SampleIds& ids) {
     ProjectSettings settings = start.settings;
     settings.render.spp = 128;
@@ -106,6 +118,7 @@ std::vector<CommandPtr> oneOfEachCommand(const SampleIds& ids) {
     addNodeCommands(out, ids);
     addAssetCommands(out, start, ids);
     addCameraCommands(out, ids);
+    addAnimationCommands(out, start, ids);
     addDocumentCommands(out, start, ids);
     return out;
 }

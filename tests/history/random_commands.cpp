@@ -1,6 +1,7 @@
 #include "random_commands.h"
 
 #include "sample_scene.h"
+#include "scene/anim/node_keys.h"
 #include "scene/history/asset_commands.h"
 #include "scene/history/asset_usage.h"
 #include "scene/history/camera_path_commands.h"
@@ -235,6 +236,27 @@ CommandPtr cameraPathCommand(RandomSource& random, const Scene& scene) {
     return std::make_unique<AddCameraKey>(camera, randomKey(random, *time));
 }
 
+// Keys a random node at a free time on a 0.5 s grid, or moves, deletes or re-times its keys, or
+// removes its animation: the edits the timeline makes (scene/anim/node_keys.h).
+CommandPtr nodeKeyCommand(RandomSource& random, const Scene& scene) {
+    const std::vector<NodeId> nodes = scene.depthFirst();
+    if (nodes.empty()) return addNode(random, scene);
+    const NodeId node = random.pick(nodes);
+    const double time = 0.5 * random.below(8);
+    const auto interpolation = static_cast<Interpolation>(random.below(3));
+    const std::optional<AnimationId> id = nodeKeyAnimation(scene, node);
+    if (!id) return std::make_unique<AddAsset<Animation>>(withNodeKey({}, node, time, randomTransform(random), interpolation));
+    const Animation& animation = scene.animations.at(*id);
+    const std::vector<double> times = nodeKeyTimes(animation, node);
+    switch (random.below(5)) {
+    case 0: return std::make_unique<RemoveAsset<Animation>>(*id);
+    case 1: return std::make_unique<SetAsset<Animation>>(*id, withoutNodeKey(animation, node, random.pick(times)));
+    case 2: return std::make_unique<SetAsset<Animation>>(*id, withNodeKeyMoved(animation, node, random.pick(times), time));
+    case 3: return std::make_unique<SetAsset<Animation>>(*id, withNodeInterpolation(animation, node, interpolation));
+    default: return std::make_unique<SetAsset<Animation>>(*id, withNodeKey(animation, node, time, randomTransform(random), interpolation));
+    }
+}
+
 CommandPtr settingsCommand(RandomSource& random, const Scene& scene) {
     ProjectSettings settings = scene.settings;
     switch (random.below(5)) {
@@ -273,7 +295,8 @@ CommandPtr randomCommand(RandomSource& random, const Scene& scene) {
     const std::uint32_t family = random.below(10);
     if (family < 5) return nodeCommand(random, scene);
     if (family < 7) return anyAssetCommand(random, scene);
-    if (family < 9) return cameraPathCommand(random, scene);
+    if (family < 8) return cameraPathCommand(random, scene);
+    if (family < 9) return nodeKeyCommand(random, scene);
     return settingsCommand(random, scene);
 }
 
