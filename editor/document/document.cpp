@@ -114,9 +114,9 @@ void Document::setCurrentTime(double seconds) {
     emit timeChanged(time_);
 }
 
-void Document::newScene() {
+void Document::newScene(Scene scene) {
     cancelLoading();
-    replaceScene(Scene{});
+    replaceScene(std::move(scene));
     recovered_ = false;
     onHistoryIndex();
     path_.clear();

@@ -69,7 +69,7 @@ public:
     // --- files: each returns an empty string on success, a message for people otherwise ----
     // open, importFile and recover read on the calling thread (tests); the editor uses the
     // start* forms below. Each cancels the background loads first.
-    void newScene(); // cancels the background loads
+    void newScene(Scene scene = {}); // an untitled document with `scene` (a template); cancels the background loads
     QString open(const QString& path);
     QString save();
     QString saveAs(const QString& path);

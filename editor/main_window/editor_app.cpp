@@ -78,6 +78,7 @@ int runEditor(int argc, char** argv, const char* version) {
     window.show();
     // The file asked for opens as usual; work an earlier session left unsaved is offered beside it.
     if (!parser.positionalArguments().isEmpty()) window.beginOpen(parser.positionalArguments().first());
+    else window.newFromTemplate(SceneTemplate::Studio); // as File > New: something to look at and light
     window.offerRecovery();
     return app.exec();
 }

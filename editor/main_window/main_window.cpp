@@ -261,6 +261,15 @@ void MainWindow::report(const QString& message) {
     statusBar()->showMessage(message, 8000);
 }
 
+void MainWindow::newFromTemplate(SceneTemplate kind) {
+    if (!maybeSave()) return;
+    try {
+        document_->newScene(buildTemplate(kind));
+    } catch (const std::exception& e) {
+        QMessageBox::warning(this, tr("New scene"), QString::fromStdString(e.what()));
+    }
+}
+
 bool MainWindow::maybeSave() {
     if (!document_->isModified()) return true;
     const auto answer = QMessageBox::warning(

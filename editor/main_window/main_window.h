@@ -5,6 +5,7 @@
 #include "autosave.h"
 
 #include "editor/document/document.h"
+#include "editor/document/scene_templates.h"
 #include "editor/preferences/preferences.h"
 
 #include <QKeySequence>
@@ -85,6 +86,8 @@ public:
     void openDropped(const QList<QUrl>& urls, bool merge);
     // Asks about unsaved changes; false when the user cancels.
     bool maybeSave();
+    // File > New (Studio) and File > New from template: after asking about unsaved changes.
+    void newFromTemplate(SceneTemplate kind);
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -146,6 +149,7 @@ private:
     LoadProgress* loadProgress_ = nullptr;
     QAction* import_ = nullptr;
     QList<QAction*> actions_;
+    QList<QAction*> templateActions_;
     QList<QAction*> viewportActions_;
     QAction* undo_ = nullptr;
     QAction* redo_ = nullptr;

@@ -53,10 +53,14 @@ QList<QAction*> MainWindow::keymapActions() const { return actions_ + viewportAc
 
 void MainWindow::createActions() {
     QStyle* s = style();
-    auto* newScene = makeAction("file.new", QT_TR_NOOP("&New"), QKeySequence::New);
-    connect(newScene, &QAction::triggered, this, [this] {
-        if (maybeSave()) document_->newScene();
-    });
+    auto* newScene = makeAction("file.new", QT_TR_NOOP("&New"), QKeySequence::New); // the Studio template
+    connect(newScene, &QAction::triggered, this, [this] { newFromTemplate(SceneTemplate::Studio); });
+    for (const SceneTemplate kind : kSceneTemplates) {
+        QAction* action = makeAction(templateActionId(kind), templateTitle(kind), {});
+        keepTranslated(action, TextRole::Text, "glint::editor::SceneTemplates", templateTitle(kind));
+        connect(action, &QAction::triggered, this, [this, kind] { newFromTemplate(kind); });
+        templateActions_ << action;
+    }
     auto* open = makeAction("file.open", QT_TR_NOOP("&Open..."), QKeySequence::Open);
     open->setIcon(s->standardIcon(QStyle::SP_DialogOpenButton));
     connect(open, &QAction::triggered, this, [this] {
@@ -121,6 +125,8 @@ void MainWindow::createMenus() {
     QMenu* file = keptMenu(menuBar()->addMenu(QString()), QT_TR_NOOP("&File"));
     auto find = [this](const char* name) { return findChild<QAction*>(name, Qt::FindDirectChildrenOnly); };
     file->addAction(find("file.new"));
+    QMenu* fromTemplate = keptMenu(file->addMenu(QString()), QT_TR_NOOP("New from &template"));
+    fromTemplate->addActions(templateActions_);
     file->addAction(find("file.open"));
     recentMenu_ = keptMenu(file->addMenu(QString()), QT_TR_NOOP("Open &Recent"));
     rebuildRecentMenu();

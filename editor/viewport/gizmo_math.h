@@ -12,6 +12,10 @@
 
 namespace glint::editor {
 
+// Whether the move and rotate handles follow the world's axes or the node's own (scale handles are
+// always the node's).
+enum class GizmoSpace { World, Local };
+
 enum class GizmoMode { Translate, Rotate, Scale };
 
 struct GizmoSnap {

@@ -161,7 +161,7 @@ GizmoFrame RenderView::gizmoFrame(NodeId node) const {
     GizmoFrame frame;
     const glm::dmat4 world(document_.scene().worldFromNode(node));
     frame.origin = glm::dvec3(world[3]);
-    if (tools_.gizmoMode() == GizmoMode::Scale)
+    if (tools_.gizmoMode() == GizmoMode::Scale || tools_.gizmoSpace() == GizmoSpace::Local)
         for (int a = 0; a < 3; ++a) frame.axes[a] = glm::normalize(glm::dvec3(world[a]));
     frame.size = 0.15 * std::max(1e-3, glm::length(frame.origin - camera_.position())) * std::tan(0.5 * camera_.yfov) * 2.0;
     return frame;

@@ -41,6 +41,8 @@ public:
     void setMode(ViewMode mode);
     GizmoMode gizmoMode() const { return tools_.gizmoMode(); }
     void setGizmoMode(GizmoMode mode) { tools_.setGizmoMode(mode); }
+    GizmoSpace gizmoSpace() const { return tools_.gizmoSpace(); }
+    void setGizmoSpace(GizmoSpace space) { tools_.setGizmoSpace(space); }
     GizmoSnap& snap() { return tools_.snap(); }
     const ViewTools& tools() const { return tools_; }
     void setLookThrough(NodeId camera); // none: the viewport's own camera

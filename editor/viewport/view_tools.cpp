@@ -50,6 +50,12 @@ void ViewTools::setGizmoMode(GizmoMode mode) {
     view_.update();
 }
 
+void ViewTools::setGizmoSpace(GizmoSpace space) {
+    gizmoSpace_ = space;
+    emit gizmoSpaceChanged(space);
+    view_.update();
+}
+
 void ViewTools::armRenderRegion() {
     region_.arm();
     enter(Tool::RegionArmed);

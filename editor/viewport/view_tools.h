@@ -50,6 +50,8 @@ public:
 
     GizmoMode gizmoMode() const { return gizmoMode_; }
     void setGizmoMode(GizmoMode mode);
+    GizmoSpace gizmoSpace() const { return gizmoSpace_; }
+    void setGizmoSpace(GizmoSpace space);
     GizmoSnap& snap() { return snap_; }
     int activeGizmoAxis() const; // -1: none
 
@@ -73,6 +75,7 @@ signals:
     void inspected(QPointF at);            // the same with the pixel inspector on
     void focusClicked(QPointF at);
     void gizmoModeChanged(GizmoMode mode);
+    void gizmoSpaceChanged(GizmoSpace space);
 
 private:
     void enter(Tool tool);
@@ -83,6 +86,7 @@ private:
     Document& document_;
     Tool tool_ = Tool::Idle;
     GizmoMode gizmoMode_ = GizmoMode::Translate;
+    GizmoSpace gizmoSpace_ = GizmoSpace::World;
     GizmoSnap snap_;
     std::unique_ptr<GizmoDrag> gizmoDrag_;
     RegionTool region_;

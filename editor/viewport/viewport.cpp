@@ -128,6 +128,12 @@ void Viewport::createActions() {
     addAction(lookThrough_);
     connect(lookThrough_, &QAction::triggered, this, &Viewport::toggleLookThrough);
 
+    localAxes_ = checkable(this, QT_TR_NOOP("Local axes"), QKeySequence(Qt::Key_L));
+    keepTranslated(localAxes_, TextRole::ToolTip, staticMetaObject.className(),
+                   QT_TR_NOOP("Move and rotate along the selected node's own axes (off: the world's)"));
+    addAction(localAxes_);
+    connect(localAxes_, &QAction::toggled, this, [this](bool on) { view_->setGizmoSpace(on ? GizmoSpace::Local : GizmoSpace::World); });
+
     snap_ = checkable(this, QT_TR_NOOP("Snap (Ctrl inverts while dragging)"), QKeySequence());
     connect(snap_, &QAction::toggled, this, [this](bool on) { view_->snap().enabled = on; });
 
@@ -169,7 +175,7 @@ void Viewport::createActions() {
     createPickFocusAction();
     const std::pair<QAction*, const char*> ids[] = {
         {frameSelection_, "view.frameSelection"}, {makeSceneCamera_, "view.makeSceneCamera"}, {lookThrough_, "view.lookThrough"},
-        {snap_, "view.snap"}, {inspect_, "view.inspect"}, {snapshot_, "view.snapshot"}, {compare_, "view.compare"},
+        {snap_, "view.snap"}, {localAxes_, "view.localAxes"}, {inspect_, "view.inspect"}, {snapshot_, "view.snapshot"}, {compare_, "view.compare"},
         {renderRegion_, "view.renderRegion"}, {clearRenderRegion_, "view.clearRenderRegion"}, {pickFocus_, "view.pickFocus"},
         {pause_, "view.pause"}, {denoise_, "view.denoise"}};
     for (const auto& [action, id] : ids) action->setObjectName(id);
@@ -203,7 +209,7 @@ QList<QAction*> Viewport::gizmoActions() const { return gizmos_->actions(); }
 
 QList<QAction*> Viewport::allActions() const {
     QList<QAction*> all = viewModeActions();
-    all << gizmoActions() << frameSelection_ << makeSceneCamera_ << lookThrough_ << snap_ << inspect_ << snapshot_ << compare_ << renderRegion_
+    all << gizmoActions() << localAxes_ << frameSelection_ << makeSceneCamera_ << lookThrough_ << snap_ << inspect_ << snapshot_ << compare_ << renderRegion_
         << clearRenderRegion_ << pickFocus_ << pause_ << denoise_;
     return all;
 }

@@ -29,6 +29,8 @@ public:
     QAction* makeSceneCameraAction() const { return makeSceneCamera_; }
     QAction* lookThroughAction() const { return lookThrough_; }
     QAction* snapAction() const { return snap_; }
+    // L: the move and rotate handles follow the selected node's own axes (off: the world's).
+    QAction* localAxesAction() const { return localAxes_; }
     QAction* inspectAction() const { return inspect_; }
     QAction* snapshotAction() const { return snapshot_; }
     QAction* compareAction() const { return compare_; }
@@ -70,6 +72,7 @@ private:
     QAction* makeSceneCamera_ = nullptr;
     QAction* lookThrough_ = nullptr;
     QAction* snap_ = nullptr;
+    QAction* localAxes_ = nullptr;
     QAction* inspect_ = nullptr;
     QAction* snapshot_ = nullptr;
     QAction* compare_ = nullptr;

@@ -1,0 +1,130 @@
+#include "scene_templates.h"
+
+#include "scene/io/scene_io.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFile>
+#include <QStandardPaths>
+
+#include <glm/gtc/quaternion.hpp>
+
+#include <numbers>
+#include <stdexcept>
+
+namespace glint::editor {
+
+namespace {
+
+// A file compiled into the editor (":/templates/NAME"), written to the user's data folder once (again
+// when it differs, e.g. after an upgrade): scenes name files on disk.
+std::filesystem::path shippedFile(const QString& name) {
+    QFile source(QStringLiteral(":/templates/") + name);
+    if (!source.open(QIODevice::ReadOnly)) throw std::runtime_error("missing template resource " + name.toStdString());
+    const QByteArray bytes = source.readAll();
+    const QString folder = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/templates");
+    const QString path = folder + QLatin1Char('/') + name;
+    QFile existing(path);
+    if (existing.open(QIODevice::ReadOnly) && existing.readAll() == bytes) return path.toStdString();
+    existing.close();
+    QDir().mkpath(folder);
+    QFile out(path);
+    if (!out.open(QIODevice::WriteOnly) || out.write(bytes) != bytes.size())
+        throw std::runtime_error("cannot write " + path.toStdString() + ": " + out.errorString().toStdString());
+    return path.toStdString();
+}
+
+glm::quat lookAlong(glm::vec3 direction) {
+    const glm::vec3 f = glm::normalize(direction);
+    const glm::vec3 right = glm::normalize(glm::cross(f, glm::vec3(0.0f, 1.0f, 0.0f)));
+    const glm::vec3 up = glm::cross(right, f);
+    return glm::quat_cast(glm::mat3(right, up, -f)); // glTF cameras look along their -Z
+}
+
+NodeId addNode(Scene& scene, std::string name, Component component, glm::vec3 at, glm::quat rotation = glm::quat(1, 0, 0, 0)) {
+    Node node;
+    node.name = std::move(name);
+    node.component = std::move(component);
+    node.local.translation = at;
+    node.local.rotation = rotation;
+    return scene.addNode(std::move(node));
+}
+
+// A ground plane in a mid-grey dielectric, and a camera 5 m back and 1.6 m up looking at the origin.
+void addGroundAndCamera(Scene& scene) {
+    Material grey;
+    grey.name = "Ground";
+    grey.baseColorFactor = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
+    grey.metallicFactor = 0.0f;
+    grey.roughnessFactor = 0.6f;
+    Shape ground;
+    ground.kind = ShapeKind::GroundPlane;
+    ground.material = scene.materials.add(grey);
+    addNode(scene, "Ground", ground, glm::vec3(0.0f));
+    Camera camera;
+    camera.focusDistance = 5.2f;
+    const glm::vec3 eye(0.0f, 1.6f, 5.0f);
+    scene.settings.activeCamera = addNode(scene, "Camera", camera, eye, lookAlong(glm::vec3(0.0f, 0.3f, 0.0f) - eye));
+}
+
+Scene studio() {
+    Scene scene;
+    addGroundAndCamera(scene);
+    scene.settings.environment.file = shippedFile(QStringLiteral("studio_small_03_1k.hdr")).string();
+    // The studio's lamps give the ground about 11 W/m^2: 2.5 stops down keeps the mid-grey ground a
+    // light grey instead of white.
+    scene.settings.render.exposure = -2.5f;
+    return scene;
+}
+
+// A sun of 3 W/m^2 (2049 lux; Blender's new sun is 1 W/m^2, which reads as dusk) 50 degrees up,
+// and a sky that adds about a sixth of its light (a clear sky's share).
+Scene sunAndSky() {
+    Scene scene;
+    addGroundAndCamera(scene);
+    Light sun;
+    sun.type = LightType::Sun;
+    sun.intensity = 3.0f * 683.0f;
+    sun.angularDiameter = 0.0093f; // the sun's 0.53 degrees: soft shadow edges
+    const float elevation = float(50.0 * std::numbers::pi / 180.0), azimuth = float(30.0 * std::numbers::pi / 180.0);
+    const glm::vec3 shine(-std::cos(elevation) * std::sin(azimuth), -std::sin(elevation), -std::cos(elevation) * std::cos(azimuth));
+    addNode(scene, "Sun", sun, glm::vec3(0.0f, 5.0f, 0.0f), lookAlong(shine));
+    scene.settings.environment.color = glm::vec3(0.096f, 0.144f, 0.24f);
+    return scene;
+}
+
+Scene cornellBox() { return loadScene(shippedFile(QStringLiteral("cornell_box.gltf"))).scene; }
+
+} // namespace
+
+const char* templateTitle(SceneTemplate kind) {
+    switch (kind) {
+    case SceneTemplate::Studio: return QT_TRANSLATE_NOOP("glint::editor::SceneTemplates", "Studio");
+    case SceneTemplate::Empty: return QT_TRANSLATE_NOOP("glint::editor::SceneTemplates", "Empty");
+    case SceneTemplate::SunAndSky: return QT_TRANSLATE_NOOP("glint::editor::SceneTemplates", "Sun and sky");
+    case SceneTemplate::CornellBox: return QT_TRANSLATE_NOOP("glint::editor::SceneTemplates", "Cornell box");
+    }
+    return "";
+}
+
+const char* templateActionId(SceneTemplate kind) {
+    switch (kind) {
+    case SceneTemplate::Studio: return "file.new.studio";
+    case SceneTemplate::Empty: return "file.new.empty";
+    case SceneTemplate::SunAndSky: return "file.new.sun_and_sky";
+    case SceneTemplate::CornellBox: return "file.new.cornell_box";
+    }
+    return "";
+}
+
+Scene buildTemplate(SceneTemplate kind) {
+    switch (kind) {
+    case SceneTemplate::Studio: return studio();
+    case SceneTemplate::Empty: return Scene{};
+    case SceneTemplate::SunAndSky: return sunAndSky();
+    case SceneTemplate::CornellBox: return cornellBox();
+    }
+    return Scene{};
+}
+
+} // namespace glint::editor
