@@ -4,6 +4,7 @@
 #include "editor/outliner/node_names.h"
 #include "editor/preferences/retranslate.h"
 #include "editor/timeline/time_ruler.h"
+#include "scene/anim/node_keys.h"
 #include "scene/history/camera_path_commands.h"
 
 #include <QAction>
@@ -37,23 +38,37 @@ TimelinePanel::TimelinePanel(Document& document, QWidget* parent) : QWidget(pare
     bar->addActions({addKey_, deleteKey_});
     bar->addSeparator();
     bar->addActions({play_, loop_, constantSpeed_});
+    bar->addSeparator();
+    bar->addActions({keyNode_, copyNodeKey_, pasteNodeKey_});
+    bar->addWidget(createInterpolationBox(bar));
     timeLabel_ = new QLabel(bar);
     bar->addWidget(timeLabel_);
     layout->addWidget(bar);
     ruler_ = new TimeRuler(document, this);
     layout->addWidget(ruler_);
+    tracks_ = new NodeKeyTracks(document, *ruler_, this);
+    layout->addWidget(tracks_);
     layout->addWidget(createKeyEditor());
 
     timer_.setTimerType(Qt::PreciseTimer);
     connect(&timer_, &QTimer::timeout, this, &TimelinePanel::stepFrame);
     connect(cameras_, &QComboBox::activated, this, [this](int i) { setCamera(NodeId{cameras_->itemData(i).toUInt()}); });
-    connect(ruler_, &TimeRuler::keySelected, this, [this] { refreshKeyEditor(); });
+    connect(ruler_, &TimeRuler::keySelected, this, [this](std::optional<std::size_t> key) {
+        if (key) tracks_->setSelectedKey(std::nullopt); // one selected key at a time: Delete acts on it
+        refreshKeyEditor();
+    });
+    connect(tracks_, &NodeKeyTracks::keySelected, this, [this](std::optional<NodeKey> key) {
+        if (key) ruler_->setSelectedKey(std::nullopt);
+        refreshKeyEditor();
+    });
     connect(&document_, &Document::changed, this, [this] {
         refreshCameras();
         refreshKeyEditor();
+        refreshInterpolation();
     });
     connect(&document_, &Document::fileChanged, this, [this] { refreshCameras(); });
     connect(&document_, &Document::selectionChanged, this, [this] {
+        refreshInterpolation();
         const NodeId node = document_.currentNode();
         if (node.valid() && document_.scene().contains(node) && document_.scene().at(node).get<Camera>()) setCamera(node);
     });
@@ -62,9 +77,11 @@ TimelinePanel::TimelinePanel(Document& document, QWidget* parent) : QWidget(pare
     });
     refreshCameras();
     refreshKeyEditor();
+    refreshInterpolation();
 }
 
 void TimelinePanel::createActions() {
+    createNodeKeyActions();
     addKey_ = new QAction(this);
     keepTranslated(addKey_, TextRole::Text, staticMetaObject.className(), QT_TR_NOOP("Add key"));
     keepTranslated(addKey_, TextRole::ToolTip, staticMetaObject.className(),
@@ -92,6 +109,61 @@ void TimelinePanel::createActions() {
         if (!p || p->constantSpeed == on) return;
         document_.push(std::make_unique<SetCameraPathMode>(camera_, p->rotation, on));
     });
+}
+
+void TimelinePanel::createNodeKeyActions() {
+    keyNode_ = new QAction(this);
+    keepTranslated(keyNode_, TextRole::Text, staticMetaObject.className(), QT_TR_NOOP("Key transform"));
+    keepTranslated(keyNode_, TextRole::ToolTip, staticMetaObject.className(),
+                   QT_TR_NOOP("Key the selected nodes' position, rotation and scale at the current time (K)"));
+    keyNode_->setShortcut(Qt::Key_K); // I (Blender's) is the pixel inspector here
+    keyNode_->setShortcutContext(Qt::WindowShortcut);
+    keyNode_->setObjectName("timeline.keyNode");
+    connect(keyNode_, &QAction::triggered, this, [this] { keyNodes(document_, document_.selection(), document_.currentTime()); });
+    copyNodeKey_ = new QAction(this);
+    keepTranslated(copyNodeKey_, TextRole::Text, staticMetaObject.className(), QT_TR_NOOP("Copy key"));
+    copyNodeKey_->setShortcut(QKeySequence::Copy);
+    copyNodeKey_->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    addAction(copyNodeKey_);
+    connect(copyNodeKey_, &QAction::triggered, this, [this] {
+        if (tracks_->selectedKey()) copied_ = tracks_->selectedKey();
+        pasteNodeKey_->setEnabled(copied_.has_value());
+    });
+    pasteNodeKey_ = new QAction(this);
+    keepTranslated(pasteNodeKey_, TextRole::Text, staticMetaObject.className(), QT_TR_NOOP("Paste key"));
+    keepTranslated(pasteNodeKey_, TextRole::ToolTip, staticMetaObject.className(),
+                   QT_TR_NOOP("Key the selected nodes at the current time with the copied key's transform"));
+    pasteNodeKey_->setShortcut(QKeySequence::Paste);
+    pasteNodeKey_->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    pasteNodeKey_->setEnabled(false);
+    addAction(pasteNodeKey_);
+    connect(pasteNodeKey_, &QAction::triggered, this, [this] {
+        if (!copied_) return;
+        for (const NodeId node : document_.selection()) pasteNodeKey(document_, *copied_, node, document_.currentTime());
+    });
+}
+
+// Step, linear or cubic for the current node's row (glTF interpolates per channel, so per row).
+QWidget* TimelinePanel::createInterpolationBox(QWidget* parent) {
+    interpolation_ = new QComboBox(parent);
+    keepTranslated(interpolation_, TextRole::AccessibleName, staticMetaObject.className(), QT_TR_NOOP("Interpolation"));
+    interpolation_->addItem(tr("Step"), int(Interpolation::Step));
+    interpolation_->addItem(tr("Linear"), int(Interpolation::Linear));
+    interpolation_->addItem(tr("Cubic"), int(Interpolation::CubicSpline));
+    connect(interpolation_, &QComboBox::activated, this, [this](int i) {
+        setNodeInterpolation(document_, document_.currentNode(), interpolation_->itemData(i).toInt());
+    });
+    return interpolation_;
+}
+
+void TimelinePanel::refreshInterpolation() {
+    const Scene& scene = document_.scene();
+    const NodeId node = document_.currentNode();
+    const std::optional<AnimationId> id = node.valid() && scene.contains(node) ? nodeKeyAnimation(scene, node) : std::nullopt;
+    QSignalBlocker block(interpolation_);
+    interpolation_->setEnabled(id.has_value());
+    if (id) interpolation_->setCurrentIndex(interpolation_->findData(int(nodeKeyInterpolation(scene.animations.at(*id), node))));
+    keyNode_->setEnabled(!document_.selection().empty());
 }
 
 QWidget* TimelinePanel::createKeyEditor() {
@@ -163,7 +235,7 @@ void TimelinePanel::refreshKeyEditor() {
     const CameraPath* p = path();
     const auto key = ruler_->selectedKey();
     const bool has = p && key && *key < p->keys.size();
-    deleteKey_->setEnabled(has);
+    deleteKey_->setEnabled(has || tracks_->selectedKey());
     refreshing_ = true;
     for (QDoubleSpinBox* field : keyFields_) field->setEnabled(has);
     if (has) {
@@ -208,6 +280,11 @@ void TimelinePanel::addKey() {
 }
 
 void TimelinePanel::deleteKey() {
+    if (const std::optional<NodeKey> nodeKey = tracks_->selectedKey()) {
+        tracks_->setSelectedKey(std::nullopt);
+        deleteNodeKey(document_, *nodeKey);
+        return;
+    }
     const auto key = ruler_->selectedKey();
     const CameraPath* p = path();
     if (!p || !key || *key >= p->keys.size()) return;

@@ -2,16 +2,25 @@
 // camera (posed scene and the viewport looking through it) matches the sampled path; key drags,
 // deletes and value edits are single undo steps; playback steps whole frames at the project fps
 // and loops. Widgets only (no GL): the viewport is never shown.
+#include "editor_fixtures.h"
 #include "test_viewport_scene.h"
 
+#include "editor/timeline/node_key_tracks.h"
 #include "editor/timeline/time_ruler.h"
 #include "editor/timeline/timeline_panel.h"
 #include "editor/viewport/render_view.h"
 #include "editor/viewport/viewport.h"
 #include "scene/anim/camera_path_sampling.h"
+#include "scene/anim/node_keys.h"
+#include "scene/history/asset_commands.h"
+#include "scene/history/set_node_field.h"
 #include "scene/anim/scene_at_time.h"
 
 #include <QAction>
+#include <QComboBox>
+#include <QImage>
+#include <QProcess>
+#include <QTemporaryDir>
 #include <QDoubleSpinBox>
 #include <QMouseEvent>
 #include <QtTest>
@@ -35,7 +44,7 @@ class TestTimelineKeys : public QObject {
 private slots:
     void init() {
         document_ = std::make_unique<Document>();
-        test::buildShapesScene(*document_);
+        shapes_ = glint::test::buildShapesScene(*document_);
         viewport_ = std::make_unique<Viewport>(*document_);
         timeline_ = std::make_unique<TimelinePanel>(*document_);
         timeline_->resize(600, 120);
@@ -128,6 +137,128 @@ private slots:
         QCOMPARE(pathOf(*document_, camera).keys[1], before);
     }
 
+    // The sphere keyed at x = -1.2 (t = 0) and x = 0.8 (t = 1) with the Key action.
+    NodeId keySphereTwice() {
+        const NodeId sphere = shapes_.sphere;
+        document_->setSelection({sphere});
+        document_->setCurrentTime(0.0);
+        timeline_->keyNodeAction()->trigger();
+        Transform moved = document_->scene().at(sphere).local;
+        moved.translation.x = 0.8f;
+        document_->push(std::make_unique<SetTransform>(sphere, moved));
+        document_->setCurrentTime(1.0);
+        timeline_->keyNodeAction()->trigger();
+        return sphere;
+    }
+
+    static float posedX(const Document& d, NodeId node, double t) { return sceneAt(d.scene(), t).at(node).local.translation.x; }
+
+    // Keys of any node: key twice, the pose between is interpolated (linear, then step); a drag on
+    // the node's row moves a key (one undo step); delete and paste; each edit undoes exactly.
+    void nodeKeysAreKeyedInterpolatedMovedAndDeleted() {
+        const NodeId sphere = keySphereTwice();
+        const auto id = nodeKeyAnimation(document_->scene(), sphere);
+        QVERIFY(id);
+        QCOMPARE(nodeKeyTimes(document_->scene().animations.at(*id), sphere), (std::vector<double>{0.0, 1.0}));
+        QVERIFY(std::abs(posedX(*document_, sphere, 0.5) - (-0.2f)) < 1e-5f);
+        NodeKeyTracks& tracks = timeline_->nodeTracks();
+        QCOMPARE(tracks.rows(), std::vector<NodeId>{sphere});
+
+        // Step: the pose holds the first key until the second.
+        QComboBox* interpolation = timeline_->interpolationBox();
+        QVERIFY(interpolation->isEnabled());
+        QCOMPARE(interpolation->currentData().toInt(), int(Interpolation::Linear));
+        interpolation->setCurrentIndex(interpolation->findData(int(Interpolation::Step)));
+        emit interpolation->activated(interpolation->currentIndex());
+        QVERIFY(std::abs(posedX(*document_, sphere, 0.5) - (-1.2f)) < 1e-5f);
+        document_->undo();
+        QVERIFY(std::abs(posedX(*document_, sphere, 0.5) - (-0.2f)) < 1e-5f);
+
+        // Drag the key at t = 1 to t = 2 on the sphere's row in several moves: one undo step.
+        tracks.resize(timeline_->ruler().width(), tracks.height());
+        const std::size_t steps = document_->history().index();
+        const double y = tracks.rowCentreY(0);
+        sendMouse(tracks, QEvent::MouseButtonPress, {timeline_->ruler().xAt(1.0), y}, Qt::LeftButton, Qt::LeftButton);
+        QVERIFY(tracks.selectedKey());
+        for (double t : {1.25, 1.5, 2.0}) sendMouse(tracks, QEvent::MouseMove, {timeline_->ruler().xAt(t), y}, Qt::NoButton, Qt::LeftButton);
+        sendMouse(tracks, QEvent::MouseButtonRelease, {timeline_->ruler().xAt(2.0), y}, Qt::LeftButton, Qt::NoButton);
+        QCOMPARE(document_->history().index(), steps + 1);
+        const auto times = nodeKeyTimes(document_->scene().animations.at(*id), sphere);
+        QCOMPARE(times.size(), std::size_t(2));
+        QVERIFY(std::abs(times[1] - 2.0) < 1.0 / 24.0 + 1e-9);
+        QVERIFY(std::abs(posedX(*document_, sphere, 0.5 * times[1]) - (-0.2f)) < 1e-5f);
+        document_->undo();
+        QCOMPARE(nodeKeyTimes(document_->scene().animations.at(*id), sphere), (std::vector<double>{0.0, 1.0}));
+
+        // Copy the key at 0 and paste it at 3: the sphere is back at -1.2 there.
+        tracks.setSelectedKey(NodeKey{sphere, 0.0});
+        timeline_->copyNodeKeyAction()->trigger();
+        document_->setCurrentTime(3.0);
+        timeline_->pasteNodeKeyAction()->trigger();
+        QCOMPARE(nodeKeyTimes(document_->scene().animations.at(*id), sphere), (std::vector<double>{0.0, 1.0, 3.0}));
+        QVERIFY(std::abs(posedX(*document_, sphere, 3.0) - (-1.2f)) < 1e-5f);
+        document_->undo();
+
+        // Delete the selected key, then the last one: the animation goes with it; undo restores.
+        tracks.setSelectedKey(NodeKey{sphere, 1.0});
+        timeline_->deleteKeyAction()->trigger();
+        QCOMPARE(nodeKeyTimes(document_->scene().animations.at(*id), sphere), std::vector<double>{0.0});
+        tracks.setSelectedKey(NodeKey{sphere, 0.0});
+        timeline_->deleteKeyAction()->trigger();
+        QVERIFY(!nodeKeyAnimation(document_->scene(), sphere));
+        document_->undo();
+        document_->undo();
+        QCOMPARE(nodeKeyTimes(document_->scene().animations.at(*id), sphere), (std::vector<double>{0.0, 1.0}));
+    }
+
+    // Keyed in the editor, saved, rendered by `glint render --time 0.5`: the same pixels as the
+    // scene with the sphere placed half way (x = -0.2) and no animation; and save -> reopen keeps
+    // the keys exactly.
+    void nodeKeysRenderBetweenKeysInTheCli() {
+        // A fixed camera: without one the CLI frames the scene's bounds, which differ between the files.
+        Node camera;
+        camera.name = "camera";
+        camera.component = Camera{};
+        camera.local.translation = {0.0f, 0.5f, 6.0f};
+        document_->push(std::make_unique<AddNode>(camera, NodeId{}));
+        const NodeId sphere = keySphereTwice();
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString animated = dir.filePath("animated.gltf");
+        QCOMPARE(document_->saveAs(animated), QString());
+        const Scene saved = document_->scene();
+
+        QCOMPARE(document_->open(animated), QString());
+        const NodeId reopened = editor::test::nodeNamed(*document_, "sphere");
+        const auto id = nodeKeyAnimation(document_->scene(), reopened);
+        QVERIFY(id);
+        QCOMPARE(nodeKeyTimes(document_->scene().animations.at(*id), reopened), (std::vector<double>{0.0, 1.0}));
+        QVERIFY(std::abs(posedX(*document_, reopened, 0.5) - (-0.2f)) < 1e-5f);
+
+        // The still reference: no animation, the sphere at -0.2.
+        document_->push(std::make_unique<RemoveAsset<Animation>>(*id));
+        Transform half = document_->scene().at(reopened).local;
+        half.translation.x = -0.2f;
+        document_->push(std::make_unique<SetTransform>(reopened, half));
+        const QString still = dir.filePath("still.gltf");
+        QCOMPARE(document_->saveAs(still), QString());
+        QVERIFY(saved.at(sphere).local.translation.x == 0.8f); // the rest pose is not the half-way one
+
+        auto render = [&](const QString& scene, const QString& time, const QString& out) {
+            QProcess cli;
+            cli.start(GLINT_EXECUTABLE, {"render", scene, "--time", time, "--size", "48x32", "--spp", "4", "--out", out});
+            QVERIFY(cli.waitForFinished(120000));
+            QVERIFY2(cli.exitStatus() == QProcess::NormalExit && cli.exitCode() == 0, cli.readAllStandardError().constData());
+        };
+        render(animated, "0.5", dir.filePath("animated.png"));
+        render(still, "0", dir.filePath("still.png"));
+        render(animated, "0", dir.filePath("start.png"));
+        const QImage a(dir.filePath("animated.png")), b(dir.filePath("still.png")), c(dir.filePath("start.png"));
+        QVERIFY(!a.isNull() && !b.isNull());
+        QCOMPARE(a, b);
+        QVERIFY(a != c); // the sphere really moved
+    }
+
     void constantSpeedToggleIsACommand() {
         const NodeId camera = addThreeKeys();
         timeline_->constantSpeedAction()->trigger();
@@ -162,6 +293,7 @@ private:
     std::unique_ptr<Document> document_;
     std::unique_ptr<Viewport> viewport_;
     std::unique_ptr<TimelinePanel> timeline_;
+    glint::test::ShapesScene shapes_;
 };
 
 QTEST_MAIN(TestTimelineKeys)
