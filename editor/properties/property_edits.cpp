@@ -6,6 +6,9 @@
 #include "scene/history/set_node_field.h"
 #include "scene/history/settings_commands.h"
 
+#include <QCoreApplication>
+
+#include <algorithm>
 #include <exception>
 
 namespace glint::editor {
@@ -23,27 +26,56 @@ QString pushTagged(Document& document, CommandPtr command, std::uint64_t interac
     return {};
 }
 
+// The nodes a field edit of `node` applies to: every selected node of the same kind when `node`
+// is one of several selected (as in Blender, a field changed there changes it on all of them).
+std::vector<NodeId> editedNodes(const Document& document, NodeId node, bool sameComponent) {
+    const Scene& scene = document.scene();
+    const std::vector<NodeId>& selected = document.selection();
+    if (selected.size() < 2 || std::find(selected.begin(), selected.end(), node) == selected.end()) return {node};
+    std::vector<NodeId> out;
+    for (const NodeId id : selected) {
+        const Node* n = scene.node(id);
+        if (n && (!sameComponent || n->component.index() == scene.at(node).component.index())) out.push_back(id);
+    }
+    return out;
+}
+
+// Pushes `edit(id)` for each node, as one undo step when there are several.
+QString editEach(Document& document, const std::vector<NodeId>& nodes, const std::function<QString(NodeId)>& edit) {
+    if (nodes.size() == 1) return edit(nodes.front());
+    document.beginMacro(QCoreApplication::translate("glint::editor::PropertyEdits", "Edit %n nodes", nullptr, int(nodes.size())));
+    QString error;
+    for (const NodeId id : nodes)
+        if (error.isEmpty()) error = edit(id);
+    document.endMacro();
+    return error;
+}
+
 } // namespace
 
 QString editTransform(Document& document, NodeId node, const std::function<void(Transform&)>& change,
                       std::uint64_t interaction) {
-    const Node* n = document.scene().node(node);
-    if (!n) return {};
-    Transform t = n->local;
-    change(t);
-    if (t == n->local) return {};
-    return pushTagged(document, std::make_unique<SetTransform>(node, t), interaction);
+    if (!document.scene().node(node)) return {};
+    return editEach(document, editedNodes(document, node, false), [&](NodeId id) {
+        const Node& n = document.scene().at(id);
+        Transform t = n.local;
+        change(t);
+        if (t == n.local) return QString();
+        return pushTagged(document, std::make_unique<SetTransform>(id, t), interaction);
+    });
 }
 
 QString editComponent(Document& document, NodeId node, const std::function<void(Component&)>& change,
                       std::uint64_t interaction) {
-    const Node* n = document.scene().node(node);
-    if (!n) return {};
-    Component c = n->component;
-    change(c);
-    if (c == n->component) return {};
-    const std::string label = describeComponentEdit(n->component, c);
-    return pushTagged(document, std::make_unique<SetComponent>(node, std::move(c)), interaction, label);
+    if (!document.scene().node(node)) return {};
+    return editEach(document, editedNodes(document, node, true), [&](NodeId id) {
+        const Node& n = document.scene().at(id);
+        Component c = n.component;
+        change(c);
+        if (c == n.component) return QString();
+        const std::string label = describeComponentEdit(n.component, c);
+        return pushTagged(document, std::make_unique<SetComponent>(id, std::move(c)), interaction, label);
+    });
 }
 
 QString editMaterial(Document& document, MaterialId material, const std::function<void(Material&)>& change,

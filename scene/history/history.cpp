@@ -76,6 +76,11 @@ void History::endMacro() {
     std::unique_ptr<MacroCommand> macro = std::move(openMacro_);
     if (macro->empty()) return;
     discardRedo();
+    macro->interaction = macro->childrenInteraction();
+    if (mergeIntoTop(*macro)) {
+        notifyIndex();
+        return;
+    }
     record(std::move(macro));
     enforceBounds();
     notifyIndex();

@@ -31,6 +31,32 @@ std::size_t MacroCommand::memoryBytes() const {
     return bytes;
 }
 
+std::string MacroCommand::mergeKey() const {
+    std::string key = "macro";
+    for (const CommandPtr& child : children_) {
+        const std::string childKey = child->mergeKey();
+        if (childKey.empty()) return {};
+        key += '|' + childKey;
+    }
+    return children_.empty() ? std::string{} : key;
+}
+
+bool MacroCommand::mergeWith(const Command& next) {
+    const auto* other = dynamic_cast<const MacroCommand*>(&next);
+    if (!other || other->children_.size() != children_.size() || other->mergeKey() != mergeKey()) return false;
+    for (std::size_t i = 0; i < children_.size(); ++i)
+        if (!children_[i]->mergeWith(*other->children_[i])) return false; // same keys: children always merge
+    return true;
+}
+
+std::uint64_t MacroCommand::childrenInteraction() const {
+    if (children_.empty()) return 0;
+    const std::uint64_t first = children_.front()->interaction;
+    for (const CommandPtr& child : children_)
+        if (child->interaction != first) return 0;
+    return first;
+}
+
 nlohmann::json MacroCommand::toJson() const {
     nlohmann::json children = nlohmann::json::array();
     for (const CommandPtr& child : children_) children.push_back(commandToJson(*child));

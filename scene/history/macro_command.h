@@ -19,6 +19,14 @@ public:
     nlohmann::json toJson() const override;
     static CommandPtr fromJson(const nlohmann::json& j);
 
+    // A continuous edit of several nodes at once (a field dragged with many selected) is a macro per
+    // step: it merges with the previous step's macro when their children pair up one to one with
+    // the same merge keys (History gives the macro its children's interaction).
+    std::string mergeKey() const override;
+    bool mergeWith(const Command& next) override;
+    // The interaction all children share (0 when they differ or have none).
+    std::uint64_t childrenInteraction() const;
+
     // For History while the macro is open: the child was applied already.
     void appendApplied(CommandPtr child) { children_.push_back(std::move(child)); }
     Command* lastChild() { return children_.empty() ? nullptr : children_.back().get(); }

@@ -56,6 +56,7 @@ private slots:
     void propertiesFollowTheSelection();
     void materialColourUndoRedoIsExact();
     void sliderDragIsOneUndoStep();
+    void aFieldChangedWithSeveralSelectedChangesAll();
     void historyPanelClickJumps();
     void filterKeepsMatchesAndTheirParents();
     void pickedColourIsStoredLinearAndShownAsPicked();
@@ -324,6 +325,47 @@ void PanelsTest::sliderDragIsOneUndoStep() {
     document.undo();
     QCOMPARE(materialNamed(document, "red").roughnessFactor, original);
     QCOMPARE(roughness->spinBox()->value(), double(original));
+}
+
+// Two of three spheres selected: a radius slider drag changes both (one undo step per drag, as
+// with one node), Position X sets both, the third sphere is untouched; undo restores each.
+void PanelsTest::aFieldChangedWithSeveralSelectedChangesAll() {
+    Document document;
+    std::vector<NodeId> spheres;
+    for (int i = 0; i < 3; ++i) {
+        QCOMPARE(addNode(document, QString("ball %1").arg(i), defaultShape(ShapeKind::Sphere)), QString());
+        spheres.push_back(document.selection().front());
+    }
+    const auto radius = [&](int i) { return document.scene().at(spheres[std::size_t(i)]).get<Shape>()->radius; };
+    const auto x = [&](int i) { return document.scene().at(spheres[std::size_t(i)]).local.translation.x; };
+    const float radiusBefore = radius(2), xBefore = x(2);
+    PropertiesPanel panel(document, false);
+    document.setSelection({spheres[0], spheres[1]});
+    QCoreApplication::processEvents();
+    const std::size_t steps = document.history().index();
+    auto* radiusField = fieldNamed<FloatField>(panel, "Radius (m)");
+    QVERIFY(radiusField);
+    QSlider* slider = radiusField->slider();
+    slider->setSliderDown(true);
+    for (int position : {100, 300, 500}) slider->setValue(position);
+    slider->setSliderDown(false);
+    QCOMPARE(document.history().index(), steps + 1);
+    QVERIFY(radius(0) != radiusBefore);
+    QCOMPARE(radius(1), radius(0));
+    QCOMPARE(radius(2), radiusBefore);
+
+    auto* positionX = fieldNamed<FloatField>(panel, "Position X");
+    QVERIFY(positionX);
+    positionX->spinBox()->setValue(2.5);
+    QCOMPARE(document.history().index(), steps + 2);
+    QCOMPARE(x(0), 2.5f);
+    QCOMPARE(x(1), 2.5f);
+    QCOMPARE(x(2), xBefore);
+    document.undo();
+    document.undo();
+    QCOMPARE(radius(0), radiusBefore);
+    QCOMPARE(radius(1), radiusBefore);
+    QVERIFY(x(0) != 2.5f && x(1) != 2.5f);
 }
 
 void PanelsTest::historyPanelClickJumps() {

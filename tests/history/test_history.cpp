@@ -203,6 +203,31 @@ private slots:
         QCOMPARE(children[0].at("value").at("translation")[0].get<float>(), 2.0f);
     }
 
+    // A field dragged with two nodes selected: a macro per drag step. Steps of one interaction merge
+    // into one undo step holding the last values and the first old ones; another drag does not merge.
+    void macroStepsOfOneDragMerge() {
+        SampleIds ids;
+        Scene scene = sampleScene(&ids);
+        const Scene start = scene;
+        History history(scene);
+        const auto step = [&](float x, std::uint64_t drag) {
+            history.beginMacro("edit 2 nodes");
+            history.push(moveTo(ids.ball, x, drag));
+            history.push(moveTo(ids.floor, x, drag));
+            history.endMacro();
+        };
+        const std::uint64_t drag = history.beginInteraction();
+        for (float x : {1.0f, 2.0f, 3.0f}) step(x, drag);
+        QCOMPARE(history.count(), std::size_t{1});
+        QCOMPARE(scene.at(ids.ball).local.translation.x, 3.0f);
+        QCOMPARE(scene.at(ids.floor).local.translation.x, 3.0f);
+        step(4.0f, history.beginInteraction());
+        QCOMPARE(history.count(), std::size_t{2});
+        history.undo();
+        history.undo();
+        QVERIFY(scene == start);
+    }
+
     void cleanStateFollowsUndoAndRedo() {
         SampleIds ids;
         Scene scene = sampleScene(&ids);
