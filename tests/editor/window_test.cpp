@@ -450,10 +450,8 @@ void WindowTest::screenshotOfTheMainWindow() {
     QVERIFY(QTest::qWaitForWindowExposed(&window));
     QVERIFY(window.openFile(cornellBox()));
     window.document().setSelection({nodeNamed(window.document(), "left_wall_red")});
-    // Give the viewport a few frames to accumulate, then grab everything (GL widgets included).
-    QElapsedTimer timer;
-    timer.start();
-    while (timer.elapsed() < 3000) QTest::qWait(50);
+    // Let the viewport accumulate 16 samples, then grab everything (GL widgets included).
+    QTRY_VERIFY_WITH_TIMEOUT(window.viewport()->view().stats().samples >= 16, 60000);
     const QImage shot = window.grab().toImage();
     QVERIFY(!shot.isNull());
     QVERIFY(shot.width() >= 1000);

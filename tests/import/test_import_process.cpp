@@ -122,7 +122,7 @@ private slots:
         const FileError e = importError(kData / "import/tetra.stl", options);
         QCOMPARE(e.code(), std::string("importer-timeout"));
         QCOMPARE(e.message(), std::string("importer timed out after 300 ms"));
-        QVERIFY(clock.elapsed() < 5000);
+        QVERIFY(clock.elapsed() < 5000); // the 300 ms timeout fired, with a 16x margin for busy cores
     }
 
     void endlessOutputIsCapped() {
