@@ -32,6 +32,17 @@ Shape scaled(Shape shape, float s) {
     return shape;
 }
 
+// How far a shape reaches below its centre; 0 for flat ones (a quad or disk on a floor would
+// coincide with it).
+double halfHeight(const Shape& shape) {
+    switch (shape.kind) {
+    case ShapeKind::Sphere: return shape.radius;
+    case ShapeKind::Box: return 0.5 * shape.size.y;
+    case ShapeKind::Cylinder: return 0.5 * shape.height;
+    default: return 0.0;
+    }
+}
+
 } // namespace
 
 double roundSize(double metres) {
@@ -54,7 +65,11 @@ Placement placeNewNode(const Component& unit, const ViewFocus& focus) {
         if (shape->kind == ShapeKind::GroundPlane) {
             out.worldFromNode.translation = glm::vec3(0.0f); // infinite: only its height would matter
         } else {
-            out.component = scaled(*shape, float(roundSize(kShapeShare * scale)));
+            const Shape sized = scaled(*shape, float(roundSize(kShapeShare * scale)));
+            const double below = halfHeight(sized);
+            if (below > 0.0 && focus.floor < 1e29) // resting on what is under the focus
+                out.worldFromNode.translation.y = float(focus.point.y - focus.floor + below);
+            out.component = sized;
         }
     } else if (const auto* light = std::get_if<Light>(&unit)) {
         Light placed = *light;

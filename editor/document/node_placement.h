@@ -1,7 +1,8 @@
 #pragma once
 // Where a node added from the menus goes, and how big and bright it is: a new user should see it
-// at once in a scene of any size. Shapes land at the view's focus (its orbit centre), a quarter of
-// the size of what is looked at, rounded to 1, 2 or 5 x 10^k metres, with a material of their own;
+// at once in a scene of any size. Shapes land at the view's focus (its orbit centre), resting on the
+// surface below it if there is one (spheres, boxes, cylinders), a quarter of the size of what is
+// looked at, rounded to 1, 2 or 5 x 10^k metres, with a material of their own;
 // point and spot lights hang above the focus (below the first surface over it, so not inside a
 // room's ceiling) with the irradiance at the focus that Blender's new 1000 W light gives in its
 // default scene; a new sun is Blender's (1 W/m^2) and shines down at an angle. Pure data, no Qt.
@@ -16,6 +17,7 @@ struct ViewFocus {
     glm::dvec3 point{0.0};  // the view's orbit centre, world space
     double scale = 1.0;     // metres: the size of what is looked at (the scene, else the view's distance)
     double headroom = 1e30; // free space straight above `point` before a surface, metres
+    double floor = 1e30;    // distance straight down from `point` to the first surface (1e30: none)
 };
 
 struct Placement {

@@ -58,6 +58,7 @@ TimelinePanel::TimelinePanel(Document& document, QWidget* parent) : QWidget(pare
         refreshKeyEditor();
     });
     connect(tracks_, &NodeKeyTracks::keySelected, this, [this](std::optional<NodeKey> key) {
+        copyNodeKey_->setEnabled(key.has_value());
         if (key) ruler_->setSelectedKey(std::nullopt);
         refreshKeyEditor();
     });
@@ -123,6 +124,7 @@ void TimelinePanel::createNodeKeyActions() {
     copyNodeKey_ = new QAction(this);
     keepTranslated(copyNodeKey_, TextRole::Text, staticMetaObject.className(), QT_TR_NOOP("Copy key"));
     copyNodeKey_->setShortcut(QKeySequence::Copy);
+    copyNodeKey_->setEnabled(false); // until a node key is selected
     copyNodeKey_->setShortcutContext(Qt::WidgetWithChildrenShortcut);
     addAction(copyNodeKey_);
     connect(copyNodeKey_, &QAction::triggered, this, [this] {
@@ -162,7 +164,8 @@ void TimelinePanel::refreshInterpolation() {
     const std::optional<AnimationId> id = node.valid() && scene.contains(node) ? nodeKeyAnimation(scene, node) : std::nullopt;
     QSignalBlocker block(interpolation_);
     interpolation_->setEnabled(id.has_value());
-    if (id) interpolation_->setCurrentIndex(interpolation_->findData(int(nodeKeyInterpolation(scene.animations.at(*id), node))));
+    const Interpolation shown = id ? nodeKeyInterpolation(scene.animations.at(*id), node) : Interpolation::Linear; // a new row's
+    interpolation_->setCurrentIndex(interpolation_->findData(int(shown)));
     keyNode_->setEnabled(!document_.selection().empty());
 }
 

@@ -176,6 +176,8 @@ ViewFocus RenderView::focus() {
     f.scale = scene.empty() ? reach : std::min(reach, double(glm::length(scene.extent())));
     const PickResult above = picker().pick({glm::vec3(f.point), glm::vec3(0.0f, 1.0f, 0.0f)});
     if (above.node.valid()) f.headroom = above.t;
+    const PickResult below = picker().pick({glm::vec3(f.point), glm::vec3(0.0f, -1.0f, 0.0f)});
+    if (below.node.valid()) f.floor = below.t;
     return f;
 }
 

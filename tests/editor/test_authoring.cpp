@@ -128,6 +128,9 @@ private slots:
         Document& document = window.document();
         QCOMPARE(addNode(document, "Sphere", defaultShape(ShapeKind::Sphere)), QString());
         const NodeId sphere = document.selection().front();
+        // It rests on the ground plane under the view's focus.
+        const float radius = document.scene().at(sphere).get<Shape>()->radius;
+        QVERIFY(std::abs(document.scene().at(sphere).local.translation.y - radius) < 1e-4f);
         const MaterialId materialId = document.scene().at(sphere).get<Shape>()->material;
         QVERIFY(document.scene().materials.contains(materialId));
         RenderView& view = window.viewport()->view();
