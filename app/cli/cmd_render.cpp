@@ -4,6 +4,7 @@
 #include "cli_validators.h"
 #include "command.h"
 #include "exit_codes.h"
+#include "frame_pattern.h"
 #include "frame_render.h"
 #include "render_options.h"
 #include "report.h"
@@ -14,6 +15,8 @@
 #include "renderer/output/image_files.h"
 #include "renderer/output/video_settings.h"
 #include "scene/anim/scene_at_time.h"
+#include "scene/io/files/confined_path.h"
+#include "scene/io/project/project_file.h"
 
 #include <cstdio>
 
@@ -59,8 +62,40 @@ bool regionFits(const RenderOptions& o, const Scene& scene) {
     return true;
 }
 
-int runRender(const RenderOptions& o) {
+// The project's output block stands in for what the command line leaves out: output.path for
+// --out (relative to the scene's folder and inside it; a '#' pattern renders the animation),
+// output.aovs for --aovs, output.codec for --codec. False: a usage error was printed.
+bool applyProjectOutput(RenderOptions& o, const Scene& scene) {
+    const OutputSettings& output = scene.settings.output;
+    if (!o.aovsGiven && !output.aovs.empty()) o.aovs = output.aovs;
+    if (o.video && !o.codec && !output.codec.empty()) o.codec = output.codec;
+    if (!o.out.empty()) return true;
+    const std::string project = projectPathFor(o.scene).string();
+    if (output.path.empty()) {
+        printError("--out is required: " + project + " sets no output.path");
+        return false;
+    }
+    const std::filesystem::path folder = std::filesystem::absolute(o.scene).parent_path();
+    if (const auto problem = confinementProblem(ConfinedFolder{folder}, output.path)) {
+        printError(project, "key 'output.path': " + *problem);
+        return false;
+    }
+    o.out = (folder / output.path).lexically_normal().string();
+    o.animation = o.animation || hasFramePlaceholder(o.out);
+    try {
+        renderer::imageFormatFor(o.out);
+        renderer::parseAovList(o.aovs);
+        validateAnimationOptions(o);
+    } catch (const std::exception& e) {
+        printError(project, "key 'output': " + std::string(e.what()));
+        return false;
+    }
+    return true;
+}
+
+int runRender(RenderOptions o) {
     LoadResult loaded = openSceneFile(o.scene);
+    if (!applyProjectOutput(o, loaded.scene)) return kUsage;
     completeForRender(loaded, o.scene, o.common.camera.value_or(""), o.common.env.has_value(), outputSize(o.common, loaded.scene));
     if (!regionFits(o, loaded.scene)) return kUsage;
     if (reportWarnings(loaded.warnings, o.common.strict)) return kFailure;
@@ -99,8 +134,8 @@ void addRenderCommand(CLI::App& app, Action& action) {
                                                  "(linear radiance + AOVs) or PNG/JPEG/TIFF (tonemapped sRGB).");
     cmd->add_option("SCENE", options->scene, "Scene: .gltf, .glb or .glint.json")->required();
     cmd->add_option("--out", options->out, "Output image: .exr, .png, .jpg or .tif; with --animation a pattern such as "
-                                           "frames/shot_####.exr")
-        ->required()
+                                           "frames/shot_####.exr (default: the project file's output.path, relative "
+                                           "to the scene's folder; a '#' pattern there renders the animation)")
         ->check(CLI::Validator(rejection([](const std::string& v) { renderer::imageFormatFor(v); }), "FILE", "image"));
     cmd->add_option("--aovs", options->aovs, "EXR layers: all, none, or a list of albedo,normal,depth,id,variance,"
                                              "bvh_cost (default: all = every layer but variance and bvh_cost; "
@@ -121,8 +156,9 @@ void addRenderCommand(CLI::App& app, Action& action) {
         ->check(CLI::Validator(rejection([](const std::string& v) { parseRegion(v); }), "X,Y,W,H", "region"));
     addAnimationOptions(*cmd, *options);
     addCommonRenderOptions(*cmd, options->common);
-    cmd->callback([options, &action] {
-        validateAnimationOptions(*options);
+    cmd->callback([options, cmd, &action] {
+        options->aovsGiven = cmd->count("--aovs") > 0;
+        if (!options->out.empty()) validateAnimationOptions(*options); // else once the project is read
         action = [options] { return runRender(*options); };
     });
 }

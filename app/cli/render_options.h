@@ -12,8 +12,9 @@ namespace glint::cli {
 
 struct RenderOptions {
     std::string scene;
-    std::string out;
+    std::string out;      // empty: the project file's output.path
     std::string aovs = "all";
+    bool aovsGiven = false; // --aovs on the command line (else the project's output.aovs)
     std::optional<double> time;
     std::optional<ImageWindow> region; // --region: pixels from the top-left corner; unset: the whole image
     bool animation = false;

@@ -50,6 +50,29 @@ private slots:
                                       ": key 'environment.file': '../../etc/passwd' leads out of the scene's folder ('..'): refused");
     }
 
+    // The project's output block stands in for --out: its path, relative to the scene's folder,
+    // receives the still (folders made as for --out); a path out of the folder is refused naming
+    // the key, and with neither the command says what is missing. All usage errors: exit 2.
+    void projectOutputPathStandsInForOut() {
+        QTemporaryDir dir;
+        const QString scene = sceneWithProject(dir, "out", R"({"glint": 1, "output": {"path": "renders/still.png"}})");
+        CliResult r = runGlint({"render", scene, "--size", "8x8", "--spp", "1"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY(QFile::exists(dir.filePath("out/renders/still.png")));
+
+        const QString escaping = sceneWithProject(dir, "escape-out", R"({"glint": 1, "output": {"path": "../stolen.png"}})");
+        r = runGlint({"render", escaping, "--size", "8x8", "--spp", "1"});
+        QCOMPARE(r.exitCode, 2);
+        QCOMPARE(r.err.trimmed(), "glint: " + dir.filePath("escape-out/s.glint.json") +
+                                      ": key 'output.path': '../stolen.png' leads out of the scene's folder ('..'): refused");
+        QVERIFY(!QFile::exists(dir.filePath("stolen.png")));
+
+        const QString none = sceneWithProject(dir, "none", R"({"glint": 1})");
+        r = runGlint({"render", none, "--size", "8x8", "--spp", "1"});
+        QCOMPARE(r.exitCode, 2);
+        QCOMPARE(r.err.trimmed(), "glint: --out is required: " + dir.filePath("none/s.glint.json") + " sets no output.path");
+    }
+
     void renderValueOutOfRangeIsRefusedAtLoad() {
         QTemporaryDir dir;
         const QString scene = sceneWithProject(dir, "range", R"({"glint": 1, "render": {"width": 0, "height": 0}})");
