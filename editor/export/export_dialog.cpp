@@ -18,6 +18,7 @@
 #include <QMessageBox>
 #include <QProgressDialog>
 #include <QPushButton>
+#include <QSettings>
 #include <QSpinBox>
 
 #include <cmath>
@@ -56,9 +57,11 @@ QLabel* rowLabel(QWidget* parent, const char* text) {
 } // namespace
 
 ExportDialog::ExportDialog(Document& document, Kind kind, Viewport* viewport, QWidget* parent)
-    : QDialog(parent), document_(document), viewport_(viewport) {
+    : QDialog(parent), document_(document), viewport_(viewport), kind_(kind) {
     keepTranslated(this, TextRole::Title, staticMetaObject.className(), kind == Kind::Still ? QT_TR_NOOP("Export image") : QT_TR_NOOP("Export animation"));
     buildForm(kind);
+    applyProjectOutput(kind);
+    restoreLast();
     connect(&controller_, &ExportController::finished, this, &ExportDialog::onFinished);
     if (viewport_) connect(&controller_, &ExportController::running, viewport_, &Viewport::setPaused);
 }
@@ -172,7 +175,56 @@ void ExportDialog::setSettings(const ExportSettings& s) {
     last_->setValue(s.lastFrame);
 }
 
+// The project's output block (what `glint render SCENE` writes without --out): its path, relative
+// to the scene's folder, where it is a still's (no '#') or an animation's pattern as the dialog is.
+void ExportDialog::applyProjectOutput(Kind kind) {
+    const OutputSettings& output = document_.scene().settings.output;
+    if (!output.aovs.empty()) aovs_->setText(QString::fromStdString(output.aovs));
+    const QString path = QString::fromStdString(output.path);
+    if (path.isEmpty() || path.contains('#') != (kind == Kind::Animation)) return;
+    const QString folder = document_.filePath().isEmpty() ? QString() : QFileInfo(document_.filePath()).absolutePath();
+    out_->setText(QFileInfo(path).isAbsolute() || folder.isEmpty() ? path : folder + "/" + path);
+}
+
+QString ExportDialog::settingsGroup() const {
+    return kind_ == Kind::Still ? QStringLiteral("export/still") : QStringLiteral("export/animation");
+}
+
+// The last export of this scene file and kind, restored field by field.
+void ExportDialog::restoreLast() {
+    QSettings settings;
+    settings.beginGroup(settingsGroup());
+    if (document_.filePath().isEmpty() || settings.value("scene").toString() != document_.filePath()) return;
+    out_->setText(settings.value("out", out_->text()).toString());
+    width_->setValue(settings.value("width", width_->value()).toInt());
+    height_->setValue(settings.value("height", height_->value()).toInt());
+    spp_->setValue(settings.value("spp", spp_->value()).toInt());
+    seed_->setValue(settings.value("seed", seed_->value()).toInt());
+    configuration_->setCurrentIndex(std::max(0, configuration_->findData(settings.value("configuration", configuration_->currentData()))));
+    aovs_->setText(settings.value("aovs", aovs_->text()).toString());
+    first_->setValue(settings.value("first", first_->value()).toInt());
+    last_->setValue(settings.value("last", last_->value()).toInt());
+    if (video_) video_->setText(settings.value("video", video_->text()).toString());
+}
+
+void ExportDialog::rememberLast() const {
+    QSettings settings;
+    settings.beginGroup(settingsGroup());
+    settings.setValue("scene", document_.filePath());
+    settings.setValue("out", out_->text());
+    settings.setValue("width", width_->value());
+    settings.setValue("height", height_->value());
+    settings.setValue("spp", spp_->value());
+    settings.setValue("seed", seed_->value());
+    settings.setValue("configuration", configuration_->currentData());
+    settings.setValue("aovs", aovs_->text());
+    settings.setValue("first", first_->value());
+    settings.setValue("last", last_->value());
+    if (video_) settings.setValue("video", video_->text());
+}
+
 void ExportDialog::startExport() {
+    rememberLast();
     try {
         controller_.start(document_.scene(), settings());
     } catch (const std::exception& e) {

@@ -2,7 +2,8 @@
 // Export still / export animation: size, samples, configuration, output file (the format follows
 // its extension: .exr with AOVs, .png, .jpg, .tif), AOV layers, frame range. The export runs in
 // the background (ExportController) with a progress dialog and cancel; the viewport passed in is
-// paused meanwhile.
+// paused meanwhile. It opens with the project's output block (path, EXR layers) where it fits the
+// kind, and with what the last export of the same scene and kind used (the user's settings).
 #include "editor/export/export_job.h"
 
 #include <QDialog>
@@ -33,6 +34,11 @@ public slots:
 
 private:
     void buildForm(Kind kind);
+    void applyProjectOutput(Kind kind);
+    void restoreLast();
+    void rememberLast() const;
+    QString settingsGroup() const; // "export/still" or "export/animation"
+
     void onFinished(const QString& error, bool cancelled);
 
     Document& document_;
@@ -50,6 +56,7 @@ private:
     QSpinBox* last_ = nullptr;
     QLineEdit* video_ = nullptr;
     QProgressDialog* progress_ = nullptr;
+    Kind kind_;
 };
 
 } // namespace glint::editor

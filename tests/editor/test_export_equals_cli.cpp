@@ -12,6 +12,7 @@
 #include "editor/export/export_job.h"
 #include "scene/history/camera_path_commands.h"
 #include "scene/history/node_commands.h"
+#include "scene/history/settings_commands.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -233,6 +234,39 @@ private slots:
         s.fpsNumerator = 24000;
         s.fpsDenominator = 1001;
         QCOMPARE(exportFrameTime(document_.scene(), s, 24), 24.0 * 1001.0 / 24000.0);
+    }
+
+    // The dialog opens with the project's output block where it fits the kind (a still's path in the
+    // still dialog, not in the animation one), and after an export with what that export used.
+    void dialogOpensWithTheProjectOutputThenTheLastExport() {
+        ProjectSettings settings = document_.scene().settings;
+        settings.output.path = "renders/shot.png";
+        settings.output.aovs = "none";
+        document_.push(std::make_unique<SetProjectSettings>(settings));
+        const QString expected = QFileInfo(document_.filePath()).absolutePath() + "/renders/shot.png";
+        {
+            ExportDialog still(document_, ExportDialog::Kind::Still);
+            QCOMPARE(QString::fromStdString(still.settings().out.string()), expected);
+            QCOMPARE(still.settings().aovs, std::string("none"));
+            ExportDialog animation(document_, ExportDialog::Kind::Animation);
+            QVERIFY(QString::fromStdString(animation.settings().out.string()).contains("####"));
+        }
+        ExportDialog dialog(document_, ExportDialog::Kind::Still);
+        ExportSettings chosen = dialog.settings();
+        chosen.out = dir_.filePath("chosen.png").toStdString();
+        chosen.width = 24;
+        chosen.height = 16;
+        chosen.spp = 3;
+        dialog.setSettings(chosen);
+        QSignalSpy finished(&dialog.controller(), &ExportController::finished);
+        dialog.startExport();
+        QVERIFY(finished.wait(60000));
+        QVERIFY(QFile::exists(dir_.filePath("chosen.png")));
+        ExportDialog again(document_, ExportDialog::Kind::Still);
+        QCOMPARE(QString::fromStdString(again.settings().out.string()), dir_.filePath("chosen.png"));
+        QCOMPARE(again.settings().width, 24);
+        QCOMPARE(again.settings().spp, 3);
+        document_.undo();
     }
 
 private:
