@@ -1,5 +1,7 @@
 #include "renderer/gpu_scene/environment_image.h"
 
+#include "renderer/gpu_scene/environment_cube.h"
+
 #include "scene/core/diagnostics.h"
 
 #include <OpenImageIO/imageio.h>
@@ -24,6 +26,8 @@ EnvironmentImage loadEnvironmentImage(const std::filesystem::path& file) {
     for (std::size_t i = 0; i < image.rgb.size() / 3; ++i)
         for (std::size_t c = 0; c < 3; ++c)
             image.rgb[i * 3 + c] = pixels[i * static_cast<std::size_t>(channels) + std::min<std::size_t>(c, static_cast<std::size_t>(channels) - 1)];
+    // A cube map (a cross or a strip of six faces, told by its shape) becomes a latitude-longitude map.
+    if (const auto layout = cubeLayoutOf(image.width, image.height)) return equirectFromCube(image, *layout);
     return image;
 }
 

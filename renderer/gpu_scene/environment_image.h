@@ -1,6 +1,7 @@
 #pragma once
 // An equirectangular environment image read through OpenImageIO as linear float RGB, row 0 at the
-// top of the image (docs/UNITS.md, "Environment").
+// top of the image (docs/UNITS.md, "Environment"). A cube map (a cross or a strip of six faces,
+// environment_cube.h) is read into the same form.
 #include <filesystem>
 #include <vector>
 

@@ -4,9 +4,13 @@
 #include "render_scene.h"
 #include "scene_builder.h"
 
+#include "renderer/gpu_scene/environment_cube.h"
 #include "renderer/gpu_scene/environment_image.h"
 #include "renderer/offline_render.h"
 
+#include <OpenImageIO/imageio.h>
+
+#include <QTemporaryDir>
 #include <QTest>
 
 #include <cmath>
@@ -30,6 +34,44 @@ double bilinearGreen(const renderer::EnvironmentImage& image, double u, double v
         return static_cast<double>(image.rgb[(static_cast<std::size_t>(py) * static_cast<std::size_t>(image.width) + static_cast<std::size_t>(px)) * 3 + 1]);
     };
     return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) + fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
+}
+
+// Cube faces in the order +X, -X, +Y, -Y, +Z, -Z (cube-map names): a colour each, and on +Z a left
+// half in red and a right half in blue, which tells a mirrored map from a right one.
+constexpr float kFaceGreen[6] = {0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f};
+
+std::array<float, 3> faceColour(int face, double s) {
+    if (face == 4) return s < 0.5 ? std::array<float, 3>{1.0f, kFaceGreen[4], 0.0f} : std::array<float, 3>{0.0f, kFaceGreen[4], 1.0f};
+    return {0.0f, kFaceGreen[face], 0.0f};
+}
+
+// Writes the six faces (side n) in `layout` as an EXR: crosses with their empty cells black.
+std::filesystem::path writeCube(const std::filesystem::path& folder, renderer::CubeLayout layout, int n) {
+    struct Cell { int column, row; bool rotated; };
+    std::array<Cell, 6> cells{};
+    int columns = 0, rows = 0;
+    switch (layout) {
+    case renderer::CubeLayout::HorizontalCross: cells = {{{2, 1, false}, {0, 1, false}, {1, 0, false}, {1, 2, false}, {1, 1, false}, {3, 1, false}}}; columns = 4; rows = 3; break;
+    case renderer::CubeLayout::VerticalCross: cells = {{{2, 1, false}, {0, 1, false}, {1, 0, false}, {1, 2, false}, {1, 1, false}, {1, 3, true}}}; columns = 3; rows = 4; break;
+    case renderer::CubeLayout::HorizontalStrip: for (int f = 0; f < 6; ++f) cells[std::size_t(f)] = {f, 0, false}; columns = 6; rows = 1; break;
+    case renderer::CubeLayout::VerticalStrip: for (int f = 0; f < 6; ++f) cells[std::size_t(f)] = {0, f, false}; columns = 1; rows = 6; break;
+    }
+    const int width = columns * n, height = rows * n;
+    std::vector<float> rgb(std::size_t(width) * std::size_t(height) * 3, 0.0f);
+    for (int f = 0; f < 6; ++f)
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const Cell c = cells[std::size_t(f)];
+                const int fi = c.rotated ? n - 1 - i : i; // the face's column stored here
+                const auto colour = faceColour(f, (fi + 0.5) / n);
+                const std::size_t at = (std::size_t(c.row * n + j) * std::size_t(width) + std::size_t(c.column * n + i)) * 3;
+                std::copy(colour.begin(), colour.end(), rgb.begin() + std::ptrdiff_t(at));
+            }
+    const std::filesystem::path file = folder / ("cube" + std::to_string(int(layout)) + ".exr");
+    auto out = OIIO::ImageOutput::create(file.string());
+    OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::FLOAT);
+    if (!out || !out->open(file.string(), spec) || !out->write_image(OIIO::TypeDesc::FLOAT, rgb.data()) || !out->close()) return {};
+    return file;
 }
 
 } // namespace
@@ -77,6 +119,42 @@ private slots:
         const double expected = bilinearGreen(image, 0.5 + std::atan2(d.z, d.x) / (2 * M_PI), std::acos(d.y) / M_PI);
         const double actual = channelStats(out.radiance, 1).mean;
         QVERIFY2(std::abs(actual - expected) < 0.01 * expected, qPrintable(QString("%1 vs %2").arg(actual).arg(expected)));
+    }
+
+    // Cube maps in every layout: looking along each world axis through a 0.001 rad view shows the face
+    // docs/UNITS.md names (+X, +Y as glTF's; the cube's +Z in front of the default camera, towards
+    // glTF's -Z), and a view a little right of the default camera's shows +Z's right (blue) half.
+    void cubeMapsFaceTheirNamedDirections_data() {
+        QTest::addColumn<int>("layout");
+        QTest::newRow("horizontal cross") << int(renderer::CubeLayout::HorizontalCross);
+        QTest::newRow("vertical cross") << int(renderer::CubeLayout::VerticalCross);
+        QTest::newRow("horizontal strip") << int(renderer::CubeLayout::HorizontalStrip);
+        QTest::newRow("vertical strip") << int(renderer::CubeLayout::VerticalStrip);
+    }
+    void cubeMapsFaceTheirNamedDirections() {
+        QFETCH(int, layout);
+        QTemporaryDir dir;
+        const auto file = writeCube(dir.path().toStdString(), renderer::CubeLayout(layout), 16);
+        QVERIFY(!file.empty());
+        const renderer::EnvironmentImage loaded = renderer::loadEnvironmentImage(file);
+        QCOMPARE(loaded.width, 64); // read as a latitude-longitude map 4 faces wide, 2 high
+        QCOMPARE(loaded.height, 32);
+        struct View { glm::vec3 direction; int face; };
+        const View views[] = {{{1, 0, 0}, 0}, {{-1, 0, 0}, 1}, {{0, 1, 0}, 2}, {{0, -1, 0}, 3}, {{0, 0, -1}, 4}, {{0, 0, 1}, 5}};
+        for (const View& v : views) {
+            Scene scene;
+            addPerspectiveCamera(scene, glm::vec3(0.0f), v.direction, 0.001f);
+            renderer::RenderRequest request = test::stillRequest(4, 1, 0, 0);
+            request.envFile = file;
+            const double green = channelStats(renderer_->render(scene, request).radiance, 1).mean;
+            QVERIFY2(std::abs(green - kFaceGreen[v.face]) < 1e-3, qPrintable(QString("face %1: %2").arg(v.face).arg(green)));
+        }
+        Scene scene;
+        addPerspectiveCamera(scene, glm::vec3(0.0f), glm::vec3(0.3f, 0.0f, -1.0f), 0.001f);
+        renderer::RenderRequest request = test::stillRequest(4, 1, 0, 0);
+        request.envFile = file;
+        const auto out = renderer_->render(scene, request);
+        QVERIFY(channelStats(out.radiance, 2).mean > 0.99 && channelStats(out.radiance, 0).mean < 0.01); // blue, not red
     }
 
     // 16x16, 256 spp, seed 7, 0 bounces. An orthographic camera looks down on a white Lambert ground
