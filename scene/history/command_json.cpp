@@ -3,6 +3,7 @@
 #include "asset_commands.h"
 #include "camera_path_commands.h"
 #include "macro_command.h"
+#include "material_commands.h"
 #include "node_commands.h"
 #include "set_node_field.h"
 #include "settings_commands.h"
@@ -37,6 +38,7 @@ std::span<const CommandType> commandTypes() {
         {"set_texture", &SetAsset<Texture>::fromJson},
         {"set_image", &SetAsset<Image>::fromJson},
         {"set_sampler", &SetAsset<Sampler>::fromJson},
+        {"set_primitive_material", &SetPrimitiveMaterial::fromJson},
         {"add_animation", &AddAsset<Animation>::fromJson},
         {"remove_animation", &RemoveAsset<Animation>::fromJson},
         {"set_animation", &SetAsset<Animation>::fromJson},

@@ -3,6 +3,7 @@
 #include "scene/history/asset_commands.h"
 #include "scene/history/camera_path_commands.h"
 #include "scene/history/macro_command.h"
+#include "scene/history/material_commands.h"
 #include "scene/history/node_commands.h"
 #include "scene/history/set_node_field.h"
 #include "scene/history/settings_commands.h"
@@ -53,6 +54,7 @@ void addAssetCommands(std::vector<CommandPtr>& out, const Scene& start, const Sa
     out.push_back(std::make_unique<SetAsset<Material>>(ids.red, red));
     out.push_back(std::make_unique<AddAsset<Mesh>>(start.meshes.at(ids.triangleMesh), kNewMesh));
     out.push_back(std::make_unique<SetAsset<Mesh>>(ids.triangleMesh, editedMesh(start.meshes.at(ids.triangleMesh))));
+    out.push_back(std::make_unique<SetPrimitiveMaterial>(ids.triangleMesh, 0, ids.red));
     Image image = start.images.at(ids.checkerImage);
     image.name = "copy";
     out.push_back(std::make_unique<AddAsset<Image>>(image, kNewImage));

@@ -5,6 +5,7 @@
 #include "scene/history/asset_commands.h"
 #include "scene/history/asset_usage.h"
 #include "scene/history/camera_path_commands.h"
+#include "scene/history/material_commands.h"
 #include "scene/history/node_commands.h"
 #include "scene/history/set_node_field.h"
 #include "scene/history/settings_commands.h"
@@ -189,7 +190,16 @@ CommandPtr assetCommand(RandomSource& random, const Scene& scene, const AssetTab
     return std::make_unique<SetAsset<T>>(random.pick(idsOf(table)), make());
 }
 
+// Points a random primitive at a random material (or none), as the materials panel assigns.
+CommandPtr primitiveMaterialCommand(RandomSource& random, const Scene& scene) {
+    const MeshId mesh = maybeOneOf(random, scene.meshes, 0);
+    if (!mesh || scene.meshes.at(mesh).primitives.empty()) return std::make_unique<AddAsset<Mesh>>(randomMesh(random, scene));
+    const auto primitives = static_cast<std::uint32_t>(scene.meshes.at(mesh).primitives.size());
+    return std::make_unique<SetPrimitiveMaterial>(mesh, random.below(primitives), maybeOneOf(random, scene.materials, 20));
+}
+
 CommandPtr anyAssetCommand(RandomSource& random, const Scene& scene) {
+    if (random.chance(10)) return primitiveMaterialCommand(random, scene);
     switch (random.below(5)) {
     case 0: return assetCommand(random, scene, scene.meshes, [&] { return randomMesh(random, scene); });
     case 1: return assetCommand(random, scene, scene.materials, [&] { return randomMaterial(random, scene, Material{}); });

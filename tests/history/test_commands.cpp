@@ -3,6 +3,7 @@
 #include "sample_scene.h"
 #include "scene/history/asset_commands.h"
 #include "scene/history/camera_path_commands.h"
+#include "scene/history/material_commands.h"
 #include "scene/history/node_commands.h"
 #include "scene/history/set_node_field.h"
 #include "scene/history/settings_commands.h"
@@ -230,6 +231,28 @@ private slots:
         QCOMPARE(changes.nodes, std::set<NodeId>{NodeId{3}});
         QCOMPARE(changes.materials, std::set<MaterialId>{MaterialId{2}});
         QVERIFY(affectsImage(changes));
+    }
+
+    // A primitive's material: refuses a material or primitive that does not exist (scene untouched),
+    // names the mesh and both materials, and a drag over several materials merges into one step.
+    void primitiveMaterialIsCheckedAndMerges() {
+        SampleIds ids;
+        Scene scene = sampleScene(&ids);
+        const Scene start = scene;
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, SetPrimitiveMaterial(ids.triangleMesh, 0, MaterialId{999}).apply(scene));
+        QVERIFY_THROWS_EXCEPTION(std::out_of_range, SetPrimitiveMaterial(ids.triangleMesh, 7, ids.red).apply(scene));
+        QVERIFY(scene == start);
+        SetPrimitiveMaterial first(ids.triangleMesh, 0, ids.red);
+        const ChangeSet changes = first.apply(scene);
+        QVERIFY(changes.has(Change::Geometry));
+        QCOMPARE(changes.meshes, std::set<MeshId>{ids.triangleMesh});
+        QCOMPARE(changes.materials, (std::set<MaterialId>{ids.red, ids.textured}));
+        SetPrimitiveMaterial second(ids.triangleMesh, 0, ids.glass);
+        second.apply(scene);
+        QVERIFY(first.mergeWith(second));
+        QVERIFY(!first.mergeWith(SetPrimitiveMaterial(ids.triangleMesh, 1, ids.glass)));
+        first.revert(scene);
+        QVERIFY(scene == start);
     }
 
     void addNodeReusesItsIdOnRedo() {
