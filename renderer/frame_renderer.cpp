@@ -194,6 +194,7 @@ struct FrameRenderer::State {
     std::map<NodeId, glm::mat4> previousInstances;
     std::map<NodeId, glm::mat4> instances;
     bool pictureChanged = true; // the still mean must restart
+    bool shutterSample = false; // the next frame is one instant of a motion-blurred still: keep the mean
     bool historyValid = false;  // reprojection has a previous frame to read
     int frames = 0;
     std::uint32_t frameSampleIndex = 0; // real-time frames' sample counter: decorrelates frames
@@ -554,6 +555,14 @@ void FrameRenderer::setTime(double seconds) {
     s.pictureChanged = true;
 }
 
+void FrameRenderer::setShutterTime(double seconds) {
+    State& s = *state_;
+    const bool changed = s.pictureChanged;
+    setTime(seconds);
+    s.pictureChanged = changed;
+    s.shutterSample = true;
+}
+
 void FrameRenderer::cut() { state_->historyValid = false; state_->pictureChanged = true; }
 
 void FrameRenderer::resetHistory() { state_->resetAll(); }
@@ -565,7 +574,7 @@ void FrameRenderer::renderFrame() {
     s.sized();
     if (s.followSceneCamera || !s.cameraSet) {
         const CameraSetup camera = resolveCamera(s.posed(), s.cameraName, s.settings.width, s.settings.height);
-        if (!s.cameraSet || !sameCamera(camera, s.camera)) s.pictureChanged = true;
+        if (!s.cameraSet || (!sameCamera(camera, s.camera) && !s.shutterSample)) s.pictureChanged = true;
         s.camera = camera;
         s.cameraSet = true;
     }
@@ -577,6 +586,7 @@ void FrameRenderer::renderFrame() {
     s.endRegion();
     s.previousCamera = s.camera;
     s.previousInstances = s.instances;
+    s.shutterSample = false;
     ++s.frames;
 }
 

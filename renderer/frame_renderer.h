@@ -134,6 +134,9 @@ public:
     // Follow the scene's camera (by name, empty = active) at the current time instead of setCamera.
     void useSceneCamera(const std::string& name = {});
     void setTime(double seconds); // node animations (and a followed camera) at this time
+    // The same for the next sample of a motion-blurred still: the accumulation goes on, so the mean
+    // averages the scene over the instants its samples were given.
+    void setShutterTime(double seconds);
     void cut();                   // camera cut: history is dropped, as after a resize
 
     void renderFrame();

@@ -1,11 +1,14 @@
 #include "renderer/offline_render.h"
 
 #include "renderer/gl/headless_context.h"
+#include "scene/anim/scene_at_time.h"
 #include "scene/io/project/project_file.h"
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <chrono>
+#include <numeric>
 #include <stdexcept>
 
 namespace glint::renderer {
@@ -19,6 +22,18 @@ struct OfflineRenderer::State {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// The instant of sample i of a motion-blurred still: the spp samples take the centres of spp equal
+// parts of the shutter interval, each part once (a stratified set, so a moving edge blurs to an
+// even ramp at any spp), visited in an order that strides through the interval (i x a step coprime
+// with spp), so the first samples already span it and the order is not the sampler's own.
+double shutterInstant(const RenderRequest& request, int i) {
+    const auto n = static_cast<std::uint64_t>(std::max(1, request.spp));
+    std::uint64_t step = std::max<std::uint64_t>(1, n * 5 / 8);
+    while (std::gcd(step, n) != 1) ++step;
+    const double part = double((std::uint64_t(i) * step) % n);
+    return request.time + request.shutterSeconds * ((part + 0.5) / double(n) - 0.5);
+}
 
 double millisecondsSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -91,7 +106,9 @@ RenderOutput OfflineRenderer::render(const Scene& scene, const RenderRequest& re
 
     const auto renderStart = Clock::now();
     const int count = accumulate ? request.spp : request.frames;
+    const bool blurred = accumulate && request.shutterSeconds > 0.0 && sceneAnimates(scene);
     for (int i = 0; i < count; ++i) {
+        if (blurred) frames.setShutterTime(shutterInstant(request, i));
         frames.renderFrame();
         if (request.progress) {
             glFinish();

@@ -27,6 +27,9 @@ struct RenderRequest {
     // Seconds: node animations and camera paths are posed at this time. The scene passed may
     // already be posed at it (posing twice at one time changes nothing).
     double time = 0.0;
+    // Motion blur (Accumulate and Reference): samples spread evenly over this many seconds centred on
+    // `time`, each path at one instant of it; 0, or a scene where nothing moves: none.
+    double shutterSeconds = 0.0;
     std::optional<Tonemapper> tonemapper; // unset: the project's
     std::filesystem::path envFile;        // overrides the project's environment image
     std::filesystem::path sceneFolder;    // resolves the project's relative environment path

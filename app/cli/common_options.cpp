@@ -67,6 +67,9 @@ void addCommonRenderOptions(CLI::App& cmd, CommonRenderOptions& o) {
     cmd.add_option("--bloom-radius", o.bloomRadius, "Bloom's widest blur as a fraction of the image height, above 0 to 1 "
                                                     "(default: the project's, 0.05)")
         ->check(finiteIn(1e-6, 1.0));
+    cmd.add_option("--shutter", o.shutter, "Motion blur: the shutter's open time in frames, 0 (off) to 1, centred on the "
+                                           "frame; Accumulate and Reference (default: the project's, 0)")
+        ->check(finiteIn(0.0, 1.0));
     cmd.add_flag("--bloom-exr", o.bloomLinear, "Bloom the EXR's radiance too (default: off, EXR stays unbloomed)");
     cmd.add_flag("--require-gpu", o.requireGpu, "Fail instead of falling back to software rendering (default: off)");
     cmd.add_flag("--strict", o.strict, "Treat warnings as failures (default: off)");

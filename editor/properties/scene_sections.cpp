@@ -166,6 +166,9 @@ PropertyForm* makeRenderForm(Document& document, const Report& report, QWidget* 
         PropertyForm::tr("Radiance clamp (0 = off)"), 0.0, 100.0, 2, [&scene] { return double(scene.settings.render.clamp); },
         [edit](double v, std::uint64_t i) { edit([&](ProjectSettings& s) { s.render.clamp = float(v); }, i); });
     form->addFloat(
+        PropertyForm::tr("Motion blur shutter (frames, 0 = off)"), 0.0, 1.0, 2, [&scene] { return double(scene.settings.render.shutter); },
+        [edit](double v, std::uint64_t i) { edit([&](ProjectSettings& s) { s.render.shutter = float(v); }, i); });
+    form->addFloat(
         PropertyForm::tr("Bloom strength (0 = off)"), 0.0, 1.0, 3, [&scene] { return double(scene.settings.render.bloom.strength); },
         [edit](double v, std::uint64_t i) { edit([&](ProjectSettings& s) { s.render.bloom.strength = float(v); }, i); });
     form->addFloat(

@@ -88,6 +88,11 @@ RenderPlan planRender(const Scene& scene, const std::filesystem::path& sceneFile
     r.bloom.strength = o.bloom.value_or(project.bloom.strength);
     r.bloom.radius = o.bloomRadius.value_or(project.bloom.radius);
     r.bloomLinear = o.bloomLinear && r.bloom.strength > 0.0f;
+    const Timeline& timeline = scene.settings.timeline;
+    const double frameSeconds = timeline.fpsNumerator > 0 && timeline.fpsDenominator > 0
+                                    ? double(timeline.fpsDenominator) / double(timeline.fpsNumerator)
+                                    : 1.0 / 24.0;
+    r.shutterSeconds = double(o.shutter.value_or(project.shutter)) * frameSeconds;
 
     const Tonemapper tonemapper = r.tonemapper.value_or(project.tonemapper);
     // The camera's own exposure is part of what the PNG shows and what `glint encode` applies to EXRs.
@@ -108,6 +113,7 @@ RenderPlan planRender(const Scene& scene, const std::filesystem::path& sceneFile
         plan.metadata["bloomRadius"] = formatNumber(r.bloom.radius);
         if (r.bloomLinear) plan.metadata["bloomLinear"] = "1";
     }
+    if (r.shutterSeconds > 0.0) plan.metadata["shutterSeconds"] = formatNumber(r.shutterSeconds); // as bloom: only when on
     addReconstruction(plan.metadata, project, r.configuration);
     return plan;
 }

@@ -35,6 +35,7 @@ struct RenderOverrides {
     std::optional<float> bloom;         // strength, 0 (off) to 1; unset: the project's
     std::optional<float> bloomRadius;   // fraction of the image height; unset: the project's
     bool bloomLinear = false;           // the EXR's radiance bloomed too
+    std::optional<float> shutter;       // motion blur, frames the shutter is open (0 off to 1); unset: the project's
 };
 
 struct RenderPlan {

@@ -68,6 +68,7 @@ struct RenderSettings {
     float exposure = 0.0f;  // EV added to the camera's
     Tonemapper tonemapper = Tonemapper::AcesFitted;
     float clamp = 0.0f;     // radiance clamp for fireflies; 0 = off (unbiased)
+    float shutter = 0.0f;   // motion blur: the shutter's open time in frames (0..1), centred on the frame; 0 = off
     TaaParameters taa;
     SvgfParameters svgf;
     BloomParameters bloom;
