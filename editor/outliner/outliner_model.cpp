@@ -2,6 +2,7 @@
 
 #include "editor/document/document.h"
 #include "editor/document/edit_operations.h"
+#include "editor/materials/material_operations.h"
 #include "node_names.h"
 
 #include <QApplication>
@@ -160,8 +161,13 @@ std::vector<NodeId> OutlinerModel::decode(const QMimeData* data) {
     return nodes;
 }
 
-bool OutlinerModel::canDropMimeData(const QMimeData* data, Qt::DropAction action, int, int,
+QStringList OutlinerModel::mimeTypes() const { return {kMimeType, QString::fromLatin1(kMaterialMimeType)}; }
+
+bool OutlinerModel::canDropMimeData(const QMimeData* data, Qt::DropAction action, int row, int,
                                     const QModelIndex& parent) const {
+    // A material lands on a node (not between nodes) that can show it.
+    if (data && data->hasFormat(kMaterialMimeType))
+        return row < 0 && !decodeMaterials(data).empty() && takesMaterial(document_.scene(), nodeAt(parent));
     if (action != Qt::MoveAction) return false;
     const std::vector<NodeId> nodes = decode(data);
     if (nodes.empty()) return false;
@@ -176,6 +182,18 @@ bool OutlinerModel::canDropMimeData(const QMimeData* data, Qt::DropAction action
 bool OutlinerModel::dropMimeData(const QMimeData* data, Qt::DropAction action, int row, int column,
                                  const QModelIndex& parent) {
     if (!canDropMimeData(data, action, row, column, parent)) return false;
+    if (data->hasFormat(kMaterialMimeType)) {
+        const MaterialId material = decodeMaterials(data).front();
+        const NodeId node = nodeAt(parent);
+        QMetaObject::invokeMethod(
+            this,
+            [this, material, node] {
+                const QString error = assignMaterial(document_, material, {node});
+                if (!error.isEmpty()) emit editFailed(error);
+            },
+            Qt::QueuedConnection);
+        return true;
+    }
     const std::vector<NodeId> nodes = decode(data);
     const NodeId target = nodeAt(parent);
     const std::size_t index = row < 0 ? SIZE_MAX : static_cast<std::size_t>(row);

@@ -34,7 +34,9 @@ PropertiesPanel::Key PropertiesPanel::currentKey() const {
     const Node* node = document_.scene().node(key.node);
     if (!node) return {};
     key.component = node->component.index();
-    key.material = materialOf(document_.scene(), key.node);
+    key.primitive = key.node == primitiveNode_ ? primitive_ : 0;
+    key.material = nodeMaterial(document_.scene(), key.node, key.primitive);
+    key.texturedSlots = texturedSlots(document_.scene(), key.material);
     if (const glint::Light* light = node->get<glint::Light>()) key.lightType = static_cast<int>(light->type);
     if (const glint::Shape* shape = node->get<glint::Shape>()) key.shapeKind = static_cast<int>(shape->kind);
     if (const glint::Camera* camera = node->get<glint::Camera>()) key.projection = static_cast<int>(camera->projection);
@@ -79,6 +81,18 @@ void PropertiesPanel::rebuild() {
         if (node.get<glint::Shape>()) add(makeShapeForm(document_, shown_.node, report, content_));
         if (node.get<glint::Light>()) add(makeLightForm(document_, shown_.node, report, content_));
         if (node.get<glint::Camera>()) add(makeCameraForm(document_, shown_.node, report, content_));
+        if (node.get<glint::Shape>() || node.get<glint::MeshInstance>()) {
+            const NodeId id = shown_.node;
+            add(makeMaterialSlotsForm(
+                document_, id, shown_.primitive,
+                [this, id](std::size_t primitive) {
+                    primitiveNode_ = id;
+                    primitive_ = primitive;
+                    // Not inside the clicked button's signal: it is deleted with its form.
+                    QMetaObject::invokeMethod(this, &PropertiesPanel::update, Qt::QueuedConnection);
+                },
+                report, content_));
+        }
         if (shown_.material) add(makeMaterialForm(document_, shown_.material, report, content_));
     }
     layout_->addStretch();

@@ -8,6 +8,8 @@
 
 #include <QScrollArea>
 
+#include <cstddef>
+#include <cstdint>
 #include <vector>
 
 class QVBoxLayout;
@@ -39,6 +41,8 @@ private:
         int lightType = -1;
         int shapeKind = -1;  // the fields shown depend on the kind (a sphere has no height)
         int projection = -1;
+        std::size_t primitive = 0;      // which primitive's material a mesh shows
+        std::uint32_t texturedSlots = 0; // slots with a texture show its sampler and transform
         bool operator==(const Key&) const = default;
     };
     Key currentKey() const;
@@ -51,6 +55,8 @@ private:
     QVBoxLayout* layout_ = nullptr;
     std::vector<PropertyForm*> forms_;
     Key shown_;
+    std::size_t primitive_ = 0; // the primitive of the current mesh whose material is shown
+    NodeId primitiveNode_;      // the node primitive_ belongs to
     bool built_ = false;
 };
 

@@ -7,7 +7,13 @@
 
 #include <QString>
 
+#include <cstddef>
+#include <cstdint>
 #include <functional>
+
+namespace glint {
+class Scene;
+}
 
 namespace glint::editor {
 
@@ -20,6 +26,14 @@ PropertyForm* makeShapeForm(Document& document, NodeId node, const Report& repor
 PropertyForm* makeLightForm(Document& document, NodeId node, const Report& report, QWidget* parent);
 PropertyForm* makeCameraForm(Document& document, NodeId node, const Report& report, QWidget* parent);
 PropertyForm* makeMaterialForm(Document& document, MaterialId material, const Report& report, QWidget* parent);
+// The node's material slots: a shape's one, or one per primitive of a mesh (each assignable, and
+// `showPrimitive` picks the one whose material the material form below shows).
+PropertyForm* makeMaterialSlotsForm(Document& document, NodeId node, std::size_t shownPrimitive,
+                                    const std::function<void(std::size_t)>& showPrimitive, const Report& report, QWidget* parent);
+// The material of a node's shape, or of primitive `primitive` of its mesh (clamped), or none.
+MaterialId nodeMaterial(const Scene& scene, NodeId node, std::size_t primitive);
+// Bit i set: texture slot i (material_operations.h textureSlots()) holds a texture.
+std::uint32_t texturedSlots(const Scene& scene, MaterialId material);
 PropertyForm* makeEnvironmentForm(Document& document, const Report& report, QWidget* parent);
 PropertyForm* makeRenderForm(Document& document, const Report& report, QWidget* parent);
 PropertyForm* makeProjectForm(Document& document, const Report& report, QWidget* parent);
