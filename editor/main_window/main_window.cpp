@@ -16,6 +16,7 @@
 #include "editor/properties/properties_panel.h"
 
 #include "editor/timeline/timeline_panel.h"
+#include "editor/materials/materials_panel.h"
 #include "editor/viewport/render_view.h"
 #include "editor/viewport/view_camera.h"
 #include "editor/viewport/viewport.h"
@@ -154,6 +155,8 @@ void MainWindow::createDocks() {
     auto* historyDock = addDock(history_, QT_TR_NOOP("Undo history"), "HistoryDock", Qt::LeftDockWidgetArea);
     auto* propertiesDock = addDock(properties_, QT_TR_NOOP("Properties"), "PropertiesDock", Qt::RightDockWidgetArea);
     auto* sceneDock = addDock(sceneSettings_, QT_TR_NOOP("Scene"), "SceneDock", Qt::RightDockWidgetArea);
+    materials_ = new MaterialsPanel(*document_, this);
+    auto* materialsDock = addDock(materials_, QT_TR_NOOP("Materials"), "MaterialsDock", Qt::RightDockWidgetArea);
     auto* logDock = addDock(log_, QT_TR_NOOP("Log"), "LogDock", Qt::BottomDockWidgetArea);
     timeline_ = new TimelinePanel(*document_, this);
     if (viewport_) {
@@ -166,12 +169,13 @@ void MainWindow::createDocks() {
     timelineDock->raise();
     splitDockWidget(outlinerDock, historyDock, Qt::Vertical);
     tabifyDockWidget(propertiesDock, sceneDock);
+    tabifyDockWidget(propertiesDock, materialsDock);
     propertiesDock->raise();
     // The viewport gets most of the room until the user's own layout is restored.
     resizeDocks({outlinerDock, propertiesDock}, {260, 440}, Qt::Horizontal);
     resizeDocks({logDock}, {150}, Qt::Vertical);
     for (auto* panel : {static_cast<QObject*>(outliner_), static_cast<QObject*>(properties_),
-                        static_cast<QObject*>(sceneSettings_), static_cast<QObject*>(history_)})
+                        static_cast<QObject*>(sceneSettings_), static_cast<QObject*>(history_), static_cast<QObject*>(materials_)})
         connect(panel, SIGNAL(message(QString)), log_, SLOT(warning(QString)));
 }
 

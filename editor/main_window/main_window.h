@@ -26,6 +26,7 @@ namespace glint::editor {
 class HistoryPanel;
 class LoadProgress;
 class LogPanel;
+class MaterialsPanel;
 class OutlinerPanel;
 class PropertiesPanel;
 class RecoveryBar;
@@ -50,6 +51,7 @@ public:
     PropertiesPanel& sceneSettings() { return *sceneSettings_; }
     HistoryPanel& historyPanel() { return *history_; }
     LogPanel& log() { return *log_; }
+    MaterialsPanel& materials() { return *materials_; }
     Autosave& autosave() { return *autosave_; }
     QWidget* centralView() const { return centralWidget(); }
     Viewport* viewport() const { return viewport_; } // null without the viewport
@@ -137,6 +139,7 @@ private:
     LogPanel* log_ = nullptr;
     Viewport* viewport_ = nullptr;
     TimelinePanel* timeline_ = nullptr;
+    MaterialsPanel* materials_ = nullptr;
     QMenu* recentMenu_ = nullptr;
     QMenu* recoverMenu_ = nullptr;
     RecoveryBar* recoveryBar_ = nullptr;

@@ -1,6 +1,7 @@
 #include "swatch_renderer.h"
 
 #include "renderer/offline_render.h"
+#include "scene/geometry/geometry.h"
 #include "scene/history/value_json.h"
 
 #include <QColor>
@@ -129,14 +130,18 @@ Scene SwatchRenderer::swatchScene(const Scene& scene, MaterialId material) {
         if (const Sampler* sampler = scene.samplers.find(texture->sampler); sampler && !out.samplers.contains(texture->sampler))
             out.samplers.insert(texture->sampler, *sampler);
     }
-    // A sphere of radius 0.5 at the origin, seen from +Z and a little above.
+    // A sphere of radius 0.5 at the origin, seen from +Z and a little above: a uv-sphere mesh, since
+    // the renderer textures triangles (uv0 and tangents), not analytic shapes.
+    Shape round;
+    round.kind = ShapeKind::Sphere;
+    round.radius = 0.5f;
+    Mesh mesh;
+    mesh.name = "swatch";
+    mesh.primitives.push_back(tessellateShape(round, 32)); // 2k triangles: smooth at 48 px
+    mesh.primitives.back().material = material;
     Node sphere;
     sphere.name = "swatch";
-    Shape shape;
-    shape.kind = ShapeKind::Sphere;
-    shape.radius = 0.5f;
-    shape.material = material;
-    sphere.component = shape;
+    sphere.component = MeshInstance{out.meshes.add(std::move(mesh))};
     out.addNode(sphere);
     Node camera;
     camera.name = "camera";
@@ -206,6 +211,7 @@ void SwatchRenderer::startNext() {
 void SwatchRenderer::onRendered(quint64 hash, const QImage& image, double ms, const QString& error, bool unavailable) {
     inFlight_ = 0;
     lastMs_ = ms;
+    if (rendered_ == 0) firstMs_ = ms;
     ++rendered_;
     if (unavailable && error_.isEmpty()) error_ = error;
     if (!error.isEmpty()) lastFailure_ = error;

@@ -44,6 +44,7 @@ public:
     bool busy() const { return inFlight_ != 0 || !queue_.empty(); }
     // Milliseconds of the last render (upload + samples; the first one includes compiling).
     double lastRenderMs() const { return lastMs_; }
+    double firstRenderMs() const { return firstMs_; } // with the context and the programs' compilation
     int rendered() const { return rendered_; }
     // Set when the path tracer is not available (no OpenGL 4.1): swatches are flat base colours.
     const QString& error() const { return error_; }
@@ -69,6 +70,7 @@ private:
     std::uint64_t inFlight_ = 0;
     QImage inFlightFallback_;
     double lastMs_ = 0.0;
+    double firstMs_ = 0.0;
     int rendered_ = 0;
     QString error_;
     QString lastFailure_;
