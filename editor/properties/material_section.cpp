@@ -5,6 +5,7 @@
 #include "property_edits.h"
 
 #include "editor/materials/material_operations.h"
+#include "editor/preferences/retranslate.h"
 #include "scene/history/asset_commands.h"
 
 #include <QComboBox>
@@ -329,7 +330,10 @@ PropertyForm* makeMaterialSlotsForm(Document& document, NodeId node, std::size_t
                                          : assignMaterial(document, material, {node});
             if (!error.isEmpty()) report(error);
         });
-        const QString label = mesh ? PropertyForm::tr("Primitive %1 (%n triangles)", nullptr, int(mesh->primitives[p].triangleCount())).arg(p + 1)
+        const QString label = mesh ? countText("glint::editor::PropertyForm",
+                                               QT_TRANSLATE_N_NOOP("glint::editor::PropertyForm", "Primitive %1 (%n triangles)"),
+                                               "Primitive %1 (%n triangle)", int(mesh->primitives[p].triangleCount()))
+                                         .arg(p + 1)
                                    : PropertyForm::tr("Material");
         form->addWidget(label, row, [&document, node, p, choice] {
             const Scene& scene = document.scene();

@@ -9,8 +9,13 @@
 #include "editor/materials/material_presets.h"
 #include "editor/materials/materials_panel.h"
 #include "editor/outliner/outliner_model.h"
+#include "editor/properties/properties_panel.h"
+#include "editor/properties/property_form.h"
 
 #include <QAbstractItemModelTester>
+#include <QComboBox>
+#include <QLabel>
+#include <QToolButton>
 #include <QImage>
 #include <QLineEdit>
 #include <QListView>
@@ -241,6 +246,53 @@ private slots:
         document.undo();
         document.undo();
         QVERIFY(document.scene() == before);
+    }
+
+    // The property panel of a two-primitive mesh: one material row per primitive, each assignable,
+    // Edit shows that primitive's material; a slot with a texture shows its UV set, sampler and
+    // transform, and editing them is undoable (a texture without a sampler gets its own).
+    void propertyPanelListsPrimitivesAndTextureFields() {
+        Document document;
+        Sample s = sample();
+        document.newScene(s.scene);
+        PropertiesPanel panel(document, false);
+        document.setSelection({s.pair});
+        auto* second = panel.findChild<QToolButton*>("primitive.edit.1");
+        QVERIFY(second);
+        auto* materialRow = glint::editor::test::fieldNamed<QWidget>(panel, "Primitive 2 (1 triangle)");
+        QVERIFY(materialRow);
+        auto* choice = materialRow->findChild<QComboBox*>();
+        QVERIFY(choice);
+        QCOMPARE(choice->currentText(), QString("blue"));
+        // Assign grey to primitive 2 through its row.
+        choice->setCurrentIndex(choice->findText("grey"));
+        emit choice->activated(choice->currentIndex());
+        QCOMPARE(document.scene().meshes.at(s.mesh).primitives[1].material, s.grey);
+        document.undo();
+        QCOMPARE(document.scene().meshes.at(s.mesh).primitives[1].material, s.blue);
+        // Edit on primitive 2: the material form below is blue's.
+        QTest::mouseClick(panel.findChild<QToolButton*>("primitive.edit.1"), Qt::LeftButton);
+        QTRY_VERIFY(panel.findChild<QToolButton*>("primitive.edit.1") && panel.findChild<QToolButton*>("primitive.edit.1")->isChecked());
+        QTRY_VERIFY(glint::editor::test::fieldNamed<QWidget>(panel, "Base colour") != nullptr);
+        QVERIFY(glint::editor::test::fieldNamed<QWidget>(panel, "    Wrap U") == nullptr); // no texture yet
+
+        // A texture in blue's base colour: its fields appear; Wrap U and Offset U are undoable edits.
+        QCOMPARE(loadTextureFile(document, s.blue, *findTextureSlot("baseColor"), checkerPng()), QString());
+        QTRY_VERIFY(glint::editor::test::fieldNamed<QComboBox>(panel, "    Wrap U") != nullptr);
+        auto* wrap = glint::editor::test::fieldNamed<QComboBox>(panel, "    Wrap U");
+        wrap->setCurrentIndex(1);
+        emit wrap->activated(1);
+        const TextureId texture = document.scene().materials.at(s.blue).baseColorTexture.texture;
+        const SamplerId sampler = document.scene().textures.at(texture).sampler;
+        QCOMPARE(document.scene().samplers.at(sampler).wrapS, Wrap::ClampToEdge);
+        auto* offset = glint::editor::test::fieldNamed<FloatField>(panel, "    Offset U");
+        QVERIFY(offset);
+        emit offset->edited(0.25);
+        QCOMPARE(document.scene().materials.at(s.blue).baseColorTexture.transform.offset.x, 0.25f);
+        document.undo();
+        document.undo();
+        QCOMPARE(document.scene().samplers.at(sampler).wrapS, Wrap::Repeat);
+        QCOMPARE(document.scene().materials.at(s.blue).baseColorTexture.transform.offset.x, 0.0f);
     }
 
     void missingAndBrokenFilesAreNamed() {
