@@ -32,6 +32,61 @@
     </message>
 </context>
 <context>
+    <name>glint::editor</name>
+    <message>
+        <source>%1 cannot be read as an image: %2</source>
+        <translation>%1 kann nicht als Bild gelesen werden: %2</translation>
+    </message>
+    <message>
+        <source>%1 cannot be converted: %2</source>
+        <translation>%1 kann nicht umgewandelt werden: %2</translation>
+    </message>
+    <message>
+        <source>%1 cannot be converted to PNG: %2</source>
+        <translation>%1 kann nicht in PNG umgewandelt werden: %2</translation>
+    </message>
+    <message>
+        <source>The material no longer exists.</source>
+        <translation>Das Material existiert nicht mehr.</translation>
+    </message>
+    <message>
+        <source>A material needs a name.</source>
+        <translation>Ein Material braucht einen Namen.</translation>
+    </message>
+    <message>
+        <source>Delete unused materials</source>
+        <translation>Unbenutzte Materialien löschen</translation>
+    </message>
+    <message>
+        <source>Select a shape or a mesh to assign the material to.</source>
+        <translation>Eine Form oder ein Netz auswählen, dem das Material zugewiesen wird.</translation>
+    </message>
+    <message>
+        <source>Assign material</source>
+        <translation>Material zuweisen</translation>
+    </message>
+    <message>
+        <source>The mesh no longer exists.</source>
+        <translation>Das Netz existiert nicht mehr.</translation>
+    </message>
+    <message>
+        <source>%1 does not exist.</source>
+        <translation>%1 existiert nicht.</translation>
+    </message>
+    <message>
+        <source>%1 cannot be read: %2</source>
+        <translation>%1 kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <source>%1 is empty.</source>
+        <translation>%1 ist leer.</translation>
+    </message>
+    <message>
+        <source>Load texture %1</source>
+        <translation>Textur %1 laden</translation>
+    </message>
+</context>
+<context>
     <name>glint::editor::Autosave</name>
     <message>
         <source>Cannot create the autosave folder %1</source>
@@ -366,6 +421,18 @@
     <message>
         <source>Change bloom</source>
         <translation>Bloom ändern</translation>
+    </message>
+    <message>
+        <source>New material</source>
+        <translation>Neues Material</translation>
+    </message>
+    <message>
+        <source>Duplicate material</source>
+        <translation>Material duplizieren</translation>
+    </message>
+    <message>
+        <source>Assign material</source>
+        <translation>Material zuweisen</translation>
     </message>
 </context>
 <context>
@@ -1021,6 +1088,143 @@
 %2</source>
         <translation>%1 kann nicht importiert werden:
 %2</translation>
+    </message>
+    <message>
+        <source>Materials</source>
+        <translation>Materialien</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::MaterialListModel</name>
+    <message>
+        <source>Material %1</source>
+        <translation>Material %1</translation>
+    </message>
+    <message>
+        <source>%1
+%2</source>
+        <translation>%1
+%2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n users</source>
+        <translation>
+            <numerusform>%n Nutzer</numerusform>
+            <numerusform>%n Nutzer</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: no node uses it (Delete unused removes it)</source>
+        <translation>%1: kein Knoten verwendet es (Unbenutzte löschen entfernt es)</translation>
+    </message>
+    <message>
+        <source>%1: drag it onto a node in the outliner or the viewport to assign it</source>
+        <translation>%1: auf einen Knoten in der Gliederung oder der Ansicht ziehen, um es zuzuweisen</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::MaterialPresets</name>
+    <message>
+        <source>Plastic</source>
+        <translation>Kunststoff</translation>
+    </message>
+    <message>
+        <source>Rough</source>
+        <translation>Rau</translation>
+    </message>
+    <message>
+        <source>Glossy (clear coat)</source>
+        <translation>Glänzend (Klarlack)</translation>
+    </message>
+    <message>
+        <source>Metal</source>
+        <translation>Metall</translation>
+    </message>
+    <message>
+        <source>Gold</source>
+        <translation>Gold</translation>
+    </message>
+    <message>
+        <source>Brushed metal</source>
+        <translation>Gebürstetes Metall</translation>
+    </message>
+    <message>
+        <source>Glass</source>
+        <translation>Glas</translation>
+    </message>
+    <message>
+        <source>Frosted glass</source>
+        <translation>Milchglas</translation>
+    </message>
+    <message>
+        <source>Emitter</source>
+        <translation>Strahler</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::MaterialsPanel</name>
+    <message>
+        <source>Search materials</source>
+        <translation>Materialien suchen</translation>
+    </message>
+    <message>
+        <source>Material search</source>
+        <translation>Materialsuche</translation>
+    </message>
+    <message>
+        <source>Materials</source>
+        <translation>Materialien</translation>
+    </message>
+    <message>
+        <source>New</source>
+        <translation>Neu</translation>
+    </message>
+    <message>
+        <source>A new material from a preset</source>
+        <translation>Ein neues Material aus einer Vorlage</translation>
+    </message>
+    <message>
+        <source>Duplicate</source>
+        <translation>Duplizieren</translation>
+    </message>
+    <message>
+        <source>A copy of the selected material</source>
+        <translation>Eine Kopie des ausgewählten Materials</translation>
+    </message>
+    <message>
+        <source>Rename</source>
+        <translation>Umbenennen</translation>
+    </message>
+    <message>
+        <source>Rename the selected material</source>
+        <translation>Das ausgewählte Material umbenennen</translation>
+    </message>
+    <message>
+        <source>Delete unused</source>
+        <translation>Unbenutzte löschen</translation>
+    </message>
+    <message>
+        <source>Remove every material no node uses</source>
+        <translation>Entfernt jedes Material, das kein Knoten verwendet</translation>
+    </message>
+    <message>
+        <source>Assign to selection</source>
+        <translation>Der Auswahl zuweisen</translation>
+    </message>
+    <message>
+        <source>Give the selected material to every selected shape and mesh (one undo step)</source>
+        <translation>Gibt das ausgewählte Material jeder ausgewählten Form und jedem Netz (ein Rückgängig-Schritt)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n unused materials removed.</source>
+        <translation>
+            <numerusform>%n unbenutztes Material entfernt.</numerusform>
+            <numerusform>%n unbenutzte Materialien entfernt.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Select a material in the list first.</source>
+        <translation>Zuerst ein Material in der Liste auswählen.</translation>
     </message>
 </context>
 <context>
@@ -1847,6 +2051,113 @@
         <source>Bloom radius (of the height)</source>
         <translation>Bloom-Radius (relativ zur Höhe)</translation>
     </message>
+    <message>
+        <source>Edit sampler</source>
+        <translation>Sampler bearbeiten</translation>
+    </message>
+    <message>
+        <source>Load texture</source>
+        <translation>Textur laden</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.jpg *.jpeg *.exr *.hdr *.tif *.tiff)</source>
+        <translation>Bilder (*.png *.jpg *.jpeg *.exr *.hdr *.tif *.tiff)</translation>
+    </message>
+    <message>
+        <source>Load…</source>
+        <translation>Laden…</translation>
+    </message>
+    <message>
+        <source>Load an image file (PNG, JPEG, EXR, HDR, TIFF) into this slot</source>
+        <translation>Eine Bilddatei (PNG, JPEG, EXR, HDR, TIFF) in diesen Platz laden</translation>
+    </message>
+    <message>
+        <source>Load %1</source>
+        <translation>%1 laden</translation>
+    </message>
+    <message>
+        <source>UV set</source>
+        <translation>UV-Satz</translation>
+    </message>
+    <message>
+        <source>Repeat</source>
+        <translation>Wiederholen</translation>
+    </message>
+    <message>
+        <source>Clamp to edge</source>
+        <translation>Am Rand festhalten</translation>
+    </message>
+    <message>
+        <source>Mirrored repeat</source>
+        <translation>Gespiegelt wiederholen</translation>
+    </message>
+    <message>
+        <source>Wrap U</source>
+        <translation>Umbruch U</translation>
+    </message>
+    <message>
+        <source>Wrap V</source>
+        <translation>Umbruch V</translation>
+    </message>
+    <message>
+        <source>Filter</source>
+        <translation>Filter</translation>
+    </message>
+    <message>
+        <source>Linear</source>
+        <translation>Linear</translation>
+    </message>
+    <message>
+        <source>Nearest</source>
+        <translation>Nächster</translation>
+    </message>
+    <message>
+        <source>Offset U</source>
+        <translation>Versatz U</translation>
+    </message>
+    <message>
+        <source>Offset V</source>
+        <translation>Versatz V</translation>
+    </message>
+    <message>
+        <source>Scale U</source>
+        <translation>Skalierung U</translation>
+    </message>
+    <message>
+        <source>Scale V</source>
+        <translation>Skalierung V</translation>
+    </message>
+    <message>
+        <source>Materials</source>
+        <translation>Materialien</translation>
+    </message>
+    <message>
+        <source>Edit</source>
+        <translation>Bearbeiten</translation>
+    </message>
+    <message>
+        <source>Show this primitive&apos;s material below</source>
+        <translation>Das Material dieses Primitivs unten zeigen</translation>
+    </message>
+    <message numerus="yes">
+        <source>Primitive %1 (%n triangles)</source>
+        <translation>
+            <numerusform>Primitiv %1 (%n Dreieck)</numerusform>
+            <numerusform>Primitiv %1 (%n Dreiecke)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Material</source>
+        <translation>Material</translation>
+    </message>
+    <message>
+        <source>(default)</source>
+        <translation>(Standard)</translation>
+    </message>
+    <message>
+        <source>Material %1</source>
+        <translation>Material %1</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::RecoveryBar</name>
@@ -2022,6 +2333,10 @@ R %3  G %4  B %5 (linear)</translation>
     <message>
         <source>Key %1</source>
         <translation>Schlüssel %1</translation>
+    </message>
+    <message>
+        <source>Linear</source>
+        <translation>Linear</translation>
     </message>
 </context>
 <context>

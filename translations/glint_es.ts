@@ -32,6 +32,61 @@
     </message>
 </context>
 <context>
+    <name>glint::editor</name>
+    <message>
+        <source>%1 cannot be read as an image: %2</source>
+        <translation>%1 no se puede leer como imagen: %2</translation>
+    </message>
+    <message>
+        <source>%1 cannot be converted: %2</source>
+        <translation>%1 no se puede convertir: %2</translation>
+    </message>
+    <message>
+        <source>%1 cannot be converted to PNG: %2</source>
+        <translation>%1 no se puede convertir a PNG: %2</translation>
+    </message>
+    <message>
+        <source>The material no longer exists.</source>
+        <translation>El material ya no existe.</translation>
+    </message>
+    <message>
+        <source>A material needs a name.</source>
+        <translation>Un material necesita un nombre.</translation>
+    </message>
+    <message>
+        <source>Delete unused materials</source>
+        <translation>Eliminar materiales no usados</translation>
+    </message>
+    <message>
+        <source>Select a shape or a mesh to assign the material to.</source>
+        <translation>Seleccione una forma o una malla a la que asignar el material.</translation>
+    </message>
+    <message>
+        <source>Assign material</source>
+        <translation>Asignar material</translation>
+    </message>
+    <message>
+        <source>The mesh no longer exists.</source>
+        <translation>La malla ya no existe.</translation>
+    </message>
+    <message>
+        <source>%1 does not exist.</source>
+        <translation>%1 no existe.</translation>
+    </message>
+    <message>
+        <source>%1 cannot be read: %2</source>
+        <translation>%1 no se puede leer: %2</translation>
+    </message>
+    <message>
+        <source>%1 is empty.</source>
+        <translation>%1 está vacío.</translation>
+    </message>
+    <message>
+        <source>Load texture %1</source>
+        <translation>Cargar textura %1</translation>
+    </message>
+</context>
+<context>
     <name>glint::editor::Autosave</name>
     <message>
         <source>Cannot create the autosave folder %1</source>
@@ -366,6 +421,18 @@
     <message>
         <source>Change bloom</source>
         <translation>Cambiar bloom</translation>
+    </message>
+    <message>
+        <source>New material</source>
+        <translation>Material nuevo</translation>
+    </message>
+    <message>
+        <source>Duplicate material</source>
+        <translation>Duplicar material</translation>
+    </message>
+    <message>
+        <source>Assign material</source>
+        <translation>Asignar material</translation>
     </message>
 </context>
 <context>
@@ -1021,6 +1088,143 @@
 %2</source>
         <translation>No se puede importar %1:
 %2</translation>
+    </message>
+    <message>
+        <source>Materials</source>
+        <translation>Materiales</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::MaterialListModel</name>
+    <message>
+        <source>Material %1</source>
+        <translation>Material %1</translation>
+    </message>
+    <message>
+        <source>%1
+%2</source>
+        <translation>%1
+%2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n users</source>
+        <translation>
+            <numerusform>%n usuario</numerusform>
+            <numerusform>%n usuarios</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: no node uses it (Delete unused removes it)</source>
+        <translation>%1: ningún nodo lo usa (Eliminar no usados lo quita)</translation>
+    </message>
+    <message>
+        <source>%1: drag it onto a node in the outliner or the viewport to assign it</source>
+        <translation>%1: arrástrelo a un nodo del esquema o de la vista para asignarlo</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::MaterialPresets</name>
+    <message>
+        <source>Plastic</source>
+        <translation>Plástico</translation>
+    </message>
+    <message>
+        <source>Rough</source>
+        <translation>Rugoso</translation>
+    </message>
+    <message>
+        <source>Glossy (clear coat)</source>
+        <translation>Brillante (laca)</translation>
+    </message>
+    <message>
+        <source>Metal</source>
+        <translation>Metal</translation>
+    </message>
+    <message>
+        <source>Gold</source>
+        <translation>Oro</translation>
+    </message>
+    <message>
+        <source>Brushed metal</source>
+        <translation>Metal cepillado</translation>
+    </message>
+    <message>
+        <source>Glass</source>
+        <translation>Vidrio</translation>
+    </message>
+    <message>
+        <source>Frosted glass</source>
+        <translation>Vidrio esmerilado</translation>
+    </message>
+    <message>
+        <source>Emitter</source>
+        <translation>Emisor</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::MaterialsPanel</name>
+    <message>
+        <source>Search materials</source>
+        <translation>Buscar materiales</translation>
+    </message>
+    <message>
+        <source>Material search</source>
+        <translation>Búsqueda de materiales</translation>
+    </message>
+    <message>
+        <source>Materials</source>
+        <translation>Materiales</translation>
+    </message>
+    <message>
+        <source>New</source>
+        <translation>Nuevo</translation>
+    </message>
+    <message>
+        <source>A new material from a preset</source>
+        <translation>Un material nuevo a partir de un preajuste</translation>
+    </message>
+    <message>
+        <source>Duplicate</source>
+        <translation>Duplicar</translation>
+    </message>
+    <message>
+        <source>A copy of the selected material</source>
+        <translation>Una copia del material seleccionado</translation>
+    </message>
+    <message>
+        <source>Rename</source>
+        <translation>Renombrar</translation>
+    </message>
+    <message>
+        <source>Rename the selected material</source>
+        <translation>Renombrar el material seleccionado</translation>
+    </message>
+    <message>
+        <source>Delete unused</source>
+        <translation>Eliminar no usados</translation>
+    </message>
+    <message>
+        <source>Remove every material no node uses</source>
+        <translation>Quita todo material que ningún nodo usa</translation>
+    </message>
+    <message>
+        <source>Assign to selection</source>
+        <translation>Asignar a la selección</translation>
+    </message>
+    <message>
+        <source>Give the selected material to every selected shape and mesh (one undo step)</source>
+        <translation>Asigna el material seleccionado a cada forma y malla seleccionadas (un solo paso de deshacer)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n unused materials removed.</source>
+        <translation>
+            <numerusform>%n material sin usar eliminado.</numerusform>
+            <numerusform>%n materiales sin usar eliminados.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Select a material in the list first.</source>
+        <translation>Seleccione primero un material en la lista.</translation>
     </message>
 </context>
 <context>
@@ -1847,6 +2051,113 @@
         <source>Bloom radius (of the height)</source>
         <translation>Radio del bloom (respecto a la altura)</translation>
     </message>
+    <message>
+        <source>Edit sampler</source>
+        <translation>Editar muestreador</translation>
+    </message>
+    <message>
+        <source>Load texture</source>
+        <translation>Cargar textura</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.jpg *.jpeg *.exr *.hdr *.tif *.tiff)</source>
+        <translation>Imágenes (*.png *.jpg *.jpeg *.exr *.hdr *.tif *.tiff)</translation>
+    </message>
+    <message>
+        <source>Load…</source>
+        <translation>Cargar…</translation>
+    </message>
+    <message>
+        <source>Load an image file (PNG, JPEG, EXR, HDR, TIFF) into this slot</source>
+        <translation>Cargar un archivo de imagen (PNG, JPEG, EXR, HDR, TIFF) en esta ranura</translation>
+    </message>
+    <message>
+        <source>Load %1</source>
+        <translation>Cargar %1</translation>
+    </message>
+    <message>
+        <source>UV set</source>
+        <translation>Conjunto UV</translation>
+    </message>
+    <message>
+        <source>Repeat</source>
+        <translation>Repetir</translation>
+    </message>
+    <message>
+        <source>Clamp to edge</source>
+        <translation>Fijar al borde</translation>
+    </message>
+    <message>
+        <source>Mirrored repeat</source>
+        <translation>Repetición reflejada</translation>
+    </message>
+    <message>
+        <source>Wrap U</source>
+        <translation>Repetición U</translation>
+    </message>
+    <message>
+        <source>Wrap V</source>
+        <translation>Repetición V</translation>
+    </message>
+    <message>
+        <source>Filter</source>
+        <translation>Filtro</translation>
+    </message>
+    <message>
+        <source>Linear</source>
+        <translation>Lineal</translation>
+    </message>
+    <message>
+        <source>Nearest</source>
+        <translation>Más cercano</translation>
+    </message>
+    <message>
+        <source>Offset U</source>
+        <translation>Desplazamiento U</translation>
+    </message>
+    <message>
+        <source>Offset V</source>
+        <translation>Desplazamiento V</translation>
+    </message>
+    <message>
+        <source>Scale U</source>
+        <translation>Escala U</translation>
+    </message>
+    <message>
+        <source>Scale V</source>
+        <translation>Escala V</translation>
+    </message>
+    <message>
+        <source>Materials</source>
+        <translation>Materiales</translation>
+    </message>
+    <message>
+        <source>Edit</source>
+        <translation>Editar</translation>
+    </message>
+    <message>
+        <source>Show this primitive&apos;s material below</source>
+        <translation>Mostrar abajo el material de esta primitiva</translation>
+    </message>
+    <message numerus="yes">
+        <source>Primitive %1 (%n triangles)</source>
+        <translation>
+            <numerusform>Primitiva %1 (%n triángulo)</numerusform>
+            <numerusform>Primitiva %1 (%n triángulos)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Material</source>
+        <translation>Material</translation>
+    </message>
+    <message>
+        <source>(default)</source>
+        <translation>(predeterminado)</translation>
+    </message>
+    <message>
+        <source>Material %1</source>
+        <translation>Material %1</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::RecoveryBar</name>
@@ -2022,6 +2333,10 @@ R %3  G %4  B %5 (lineal)</translation>
     <message>
         <source>Key %1</source>
         <translation>Clave %1</translation>
+    </message>
+    <message>
+        <source>Linear</source>
+        <translation>Lineal</translation>
     </message>
 </context>
 <context>

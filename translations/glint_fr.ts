@@ -32,6 +32,61 @@
     </message>
 </context>
 <context>
+    <name>glint::editor</name>
+    <message>
+        <source>%1 cannot be read as an image: %2</source>
+        <translation>%1 ne peut pas être lu comme une image : %2</translation>
+    </message>
+    <message>
+        <source>%1 cannot be converted: %2</source>
+        <translation>%1 ne peut pas être converti : %2</translation>
+    </message>
+    <message>
+        <source>%1 cannot be converted to PNG: %2</source>
+        <translation>%1 ne peut pas être converti en PNG : %2</translation>
+    </message>
+    <message>
+        <source>The material no longer exists.</source>
+        <translation>Le matériau n&apos;existe plus.</translation>
+    </message>
+    <message>
+        <source>A material needs a name.</source>
+        <translation>Un matériau a besoin d&apos;un nom.</translation>
+    </message>
+    <message>
+        <source>Delete unused materials</source>
+        <translation>Supprimer les matériaux inutilisés</translation>
+    </message>
+    <message>
+        <source>Select a shape or a mesh to assign the material to.</source>
+        <translation>Sélectionnez une forme ou un maillage auquel affecter le matériau.</translation>
+    </message>
+    <message>
+        <source>Assign material</source>
+        <translation>Affecter le matériau</translation>
+    </message>
+    <message>
+        <source>The mesh no longer exists.</source>
+        <translation>Le maillage n&apos;existe plus.</translation>
+    </message>
+    <message>
+        <source>%1 does not exist.</source>
+        <translation>%1 n&apos;existe pas.</translation>
+    </message>
+    <message>
+        <source>%1 cannot be read: %2</source>
+        <translation>%1 ne peut pas être lu : %2</translation>
+    </message>
+    <message>
+        <source>%1 is empty.</source>
+        <translation>%1 est vide.</translation>
+    </message>
+    <message>
+        <source>Load texture %1</source>
+        <translation>Charger la texture %1</translation>
+    </message>
+</context>
+<context>
     <name>glint::editor::Autosave</name>
     <message>
         <source>Cannot create the autosave folder %1</source>
@@ -366,6 +421,18 @@
     <message>
         <source>Change bloom</source>
         <translation>Modifier le bloom</translation>
+    </message>
+    <message>
+        <source>New material</source>
+        <translation>Nouveau matériau</translation>
+    </message>
+    <message>
+        <source>Duplicate material</source>
+        <translation>Dupliquer le matériau</translation>
+    </message>
+    <message>
+        <source>Assign material</source>
+        <translation>Affecter le matériau</translation>
     </message>
 </context>
 <context>
@@ -1021,6 +1088,143 @@
 %2</source>
         <translation>Impossible d&apos;importer %1 :
 %2</translation>
+    </message>
+    <message>
+        <source>Materials</source>
+        <translation>Matériaux</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::MaterialListModel</name>
+    <message>
+        <source>Material %1</source>
+        <translation>Matériau %1</translation>
+    </message>
+    <message>
+        <source>%1
+%2</source>
+        <translation>%1
+%2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n users</source>
+        <translation>
+            <numerusform>%n utilisateur</numerusform>
+            <numerusform>%n utilisateurs</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: no node uses it (Delete unused removes it)</source>
+        <translation>%1 : aucun nœud ne l&apos;utilise (Supprimer les inutilisés le retire)</translation>
+    </message>
+    <message>
+        <source>%1: drag it onto a node in the outliner or the viewport to assign it</source>
+        <translation>%1 : faites-le glisser sur un nœud de l&apos;arborescence ou de la vue pour l&apos;affecter</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::MaterialPresets</name>
+    <message>
+        <source>Plastic</source>
+        <translation>Plastique</translation>
+    </message>
+    <message>
+        <source>Rough</source>
+        <translation>Rugueux</translation>
+    </message>
+    <message>
+        <source>Glossy (clear coat)</source>
+        <translation>Brillant (vernis)</translation>
+    </message>
+    <message>
+        <source>Metal</source>
+        <translation>Métal</translation>
+    </message>
+    <message>
+        <source>Gold</source>
+        <translation>Or</translation>
+    </message>
+    <message>
+        <source>Brushed metal</source>
+        <translation>Métal brossé</translation>
+    </message>
+    <message>
+        <source>Glass</source>
+        <translation>Verre</translation>
+    </message>
+    <message>
+        <source>Frosted glass</source>
+        <translation>Verre dépoli</translation>
+    </message>
+    <message>
+        <source>Emitter</source>
+        <translation>Émetteur</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::MaterialsPanel</name>
+    <message>
+        <source>Search materials</source>
+        <translation>Rechercher des matériaux</translation>
+    </message>
+    <message>
+        <source>Material search</source>
+        <translation>Recherche de matériaux</translation>
+    </message>
+    <message>
+        <source>Materials</source>
+        <translation>Matériaux</translation>
+    </message>
+    <message>
+        <source>New</source>
+        <translation>Nouveau</translation>
+    </message>
+    <message>
+        <source>A new material from a preset</source>
+        <translation>Un nouveau matériau à partir d&apos;un préréglage</translation>
+    </message>
+    <message>
+        <source>Duplicate</source>
+        <translation>Dupliquer</translation>
+    </message>
+    <message>
+        <source>A copy of the selected material</source>
+        <translation>Une copie du matériau sélectionné</translation>
+    </message>
+    <message>
+        <source>Rename</source>
+        <translation>Renommer</translation>
+    </message>
+    <message>
+        <source>Rename the selected material</source>
+        <translation>Renommer le matériau sélectionné</translation>
+    </message>
+    <message>
+        <source>Delete unused</source>
+        <translation>Supprimer les inutilisés</translation>
+    </message>
+    <message>
+        <source>Remove every material no node uses</source>
+        <translation>Supprime chaque matériau qu&apos;aucun nœud n&apos;utilise</translation>
+    </message>
+    <message>
+        <source>Assign to selection</source>
+        <translation>Affecter à la sélection</translation>
+    </message>
+    <message>
+        <source>Give the selected material to every selected shape and mesh (one undo step)</source>
+        <translation>Affecte le matériau sélectionné à chaque forme et maillage sélectionnés (une seule étape d&apos;annulation)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n unused materials removed.</source>
+        <translation>
+            <numerusform>%n matériau inutilisé supprimé.</numerusform>
+            <numerusform>%n matériaux inutilisés supprimés.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Select a material in the list first.</source>
+        <translation>Sélectionnez d&apos;abord un matériau dans la liste.</translation>
     </message>
 </context>
 <context>
@@ -1847,6 +2051,113 @@
         <source>Bloom radius (of the height)</source>
         <translation>Rayon du bloom (par rapport à la hauteur)</translation>
     </message>
+    <message>
+        <source>Edit sampler</source>
+        <translation>Modifier l&apos;échantillonneur</translation>
+    </message>
+    <message>
+        <source>Load texture</source>
+        <translation>Charger une texture</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.jpg *.jpeg *.exr *.hdr *.tif *.tiff)</source>
+        <translation>Images (*.png *.jpg *.jpeg *.exr *.hdr *.tif *.tiff)</translation>
+    </message>
+    <message>
+        <source>Load…</source>
+        <translation>Charger…</translation>
+    </message>
+    <message>
+        <source>Load an image file (PNG, JPEG, EXR, HDR, TIFF) into this slot</source>
+        <translation>Charger un fichier image (PNG, JPEG, EXR, HDR, TIFF) dans cet emplacement</translation>
+    </message>
+    <message>
+        <source>Load %1</source>
+        <translation>Charger %1</translation>
+    </message>
+    <message>
+        <source>UV set</source>
+        <translation>Jeu d&apos;UV</translation>
+    </message>
+    <message>
+        <source>Repeat</source>
+        <translation>Répéter</translation>
+    </message>
+    <message>
+        <source>Clamp to edge</source>
+        <translation>Bloquer au bord</translation>
+    </message>
+    <message>
+        <source>Mirrored repeat</source>
+        <translation>Répétition en miroir</translation>
+    </message>
+    <message>
+        <source>Wrap U</source>
+        <translation>Répétition U</translation>
+    </message>
+    <message>
+        <source>Wrap V</source>
+        <translation>Répétition V</translation>
+    </message>
+    <message>
+        <source>Filter</source>
+        <translation>Filtre</translation>
+    </message>
+    <message>
+        <source>Linear</source>
+        <translation>Linéaire</translation>
+    </message>
+    <message>
+        <source>Nearest</source>
+        <translation>Plus proche</translation>
+    </message>
+    <message>
+        <source>Offset U</source>
+        <translation>Décalage U</translation>
+    </message>
+    <message>
+        <source>Offset V</source>
+        <translation>Décalage V</translation>
+    </message>
+    <message>
+        <source>Scale U</source>
+        <translation>Échelle U</translation>
+    </message>
+    <message>
+        <source>Scale V</source>
+        <translation>Échelle V</translation>
+    </message>
+    <message>
+        <source>Materials</source>
+        <translation>Matériaux</translation>
+    </message>
+    <message>
+        <source>Edit</source>
+        <translation>Modifier</translation>
+    </message>
+    <message>
+        <source>Show this primitive&apos;s material below</source>
+        <translation>Afficher le matériau de cette primitive ci-dessous</translation>
+    </message>
+    <message numerus="yes">
+        <source>Primitive %1 (%n triangles)</source>
+        <translation>
+            <numerusform>Primitive %1 (%n triangle)</numerusform>
+            <numerusform>Primitive %1 (%n triangles)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Material</source>
+        <translation>Matériau</translation>
+    </message>
+    <message>
+        <source>(default)</source>
+        <translation>(par défaut)</translation>
+    </message>
+    <message>
+        <source>Material %1</source>
+        <translation>Matériau %1</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::RecoveryBar</name>
@@ -2022,6 +2333,10 @@ R %3  V %4  B %5 (linéaire)</translation>
     <message>
         <source>Key %1</source>
         <translation>Clé %1</translation>
+    </message>
+    <message>
+        <source>Linear</source>
+        <translation>Linéaire</translation>
     </message>
 </context>
 <context>

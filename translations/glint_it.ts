@@ -32,6 +32,61 @@
     </message>
 </context>
 <context>
+    <name>glint::editor</name>
+    <message>
+        <source>%1 cannot be read as an image: %2</source>
+        <translation>%1 non può essere letto come immagine: %2</translation>
+    </message>
+    <message>
+        <source>%1 cannot be converted: %2</source>
+        <translation>%1 non può essere convertito: %2</translation>
+    </message>
+    <message>
+        <source>%1 cannot be converted to PNG: %2</source>
+        <translation>%1 non può essere convertito in PNG: %2</translation>
+    </message>
+    <message>
+        <source>The material no longer exists.</source>
+        <translation>Il materiale non esiste più.</translation>
+    </message>
+    <message>
+        <source>A material needs a name.</source>
+        <translation>Un materiale ha bisogno di un nome.</translation>
+    </message>
+    <message>
+        <source>Delete unused materials</source>
+        <translation>Elimina materiali inutilizzati</translation>
+    </message>
+    <message>
+        <source>Select a shape or a mesh to assign the material to.</source>
+        <translation>Seleziona una forma o una mesh a cui assegnare il materiale.</translation>
+    </message>
+    <message>
+        <source>Assign material</source>
+        <translation>Assegna materiale</translation>
+    </message>
+    <message>
+        <source>The mesh no longer exists.</source>
+        <translation>La mesh non esiste più.</translation>
+    </message>
+    <message>
+        <source>%1 does not exist.</source>
+        <translation>%1 non esiste.</translation>
+    </message>
+    <message>
+        <source>%1 cannot be read: %2</source>
+        <translation>%1 non può essere letto: %2</translation>
+    </message>
+    <message>
+        <source>%1 is empty.</source>
+        <translation>%1 è vuoto.</translation>
+    </message>
+    <message>
+        <source>Load texture %1</source>
+        <translation>Carica texture %1</translation>
+    </message>
+</context>
+<context>
     <name>glint::editor::Autosave</name>
     <message>
         <source>Cannot create the autosave folder %1</source>
@@ -366,6 +421,18 @@
     <message>
         <source>Change bloom</source>
         <translation>Cambia bloom</translation>
+    </message>
+    <message>
+        <source>New material</source>
+        <translation>Nuovo materiale</translation>
+    </message>
+    <message>
+        <source>Duplicate material</source>
+        <translation>Duplica materiale</translation>
+    </message>
+    <message>
+        <source>Assign material</source>
+        <translation>Assegna materiale</translation>
     </message>
 </context>
 <context>
@@ -1021,6 +1088,143 @@
 %2</source>
         <translation>Impossibile importare %1:
 %2</translation>
+    </message>
+    <message>
+        <source>Materials</source>
+        <translation>Materiali</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::MaterialListModel</name>
+    <message>
+        <source>Material %1</source>
+        <translation>Materiale %1</translation>
+    </message>
+    <message>
+        <source>%1
+%2</source>
+        <translation>%1
+%2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n users</source>
+        <translation>
+            <numerusform>%n utente</numerusform>
+            <numerusform>%n utenti</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: no node uses it (Delete unused removes it)</source>
+        <translation>%1: nessun nodo lo usa (Elimina inutilizzati lo rimuove)</translation>
+    </message>
+    <message>
+        <source>%1: drag it onto a node in the outliner or the viewport to assign it</source>
+        <translation>%1: trascinalo su un nodo nella struttura o nella vista per assegnarlo</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::MaterialPresets</name>
+    <message>
+        <source>Plastic</source>
+        <translation>Plastica</translation>
+    </message>
+    <message>
+        <source>Rough</source>
+        <translation>Ruvido</translation>
+    </message>
+    <message>
+        <source>Glossy (clear coat)</source>
+        <translation>Lucido (vernice trasparente)</translation>
+    </message>
+    <message>
+        <source>Metal</source>
+        <translation>Metallo</translation>
+    </message>
+    <message>
+        <source>Gold</source>
+        <translation>Oro</translation>
+    </message>
+    <message>
+        <source>Brushed metal</source>
+        <translation>Metallo spazzolato</translation>
+    </message>
+    <message>
+        <source>Glass</source>
+        <translation>Vetro</translation>
+    </message>
+    <message>
+        <source>Frosted glass</source>
+        <translation>Vetro satinato</translation>
+    </message>
+    <message>
+        <source>Emitter</source>
+        <translation>Emettitore</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::MaterialsPanel</name>
+    <message>
+        <source>Search materials</source>
+        <translation>Cerca materiali</translation>
+    </message>
+    <message>
+        <source>Material search</source>
+        <translation>Ricerca materiali</translation>
+    </message>
+    <message>
+        <source>Materials</source>
+        <translation>Materiali</translation>
+    </message>
+    <message>
+        <source>New</source>
+        <translation>Nuovo</translation>
+    </message>
+    <message>
+        <source>A new material from a preset</source>
+        <translation>Un nuovo materiale da un preset</translation>
+    </message>
+    <message>
+        <source>Duplicate</source>
+        <translation>Duplica</translation>
+    </message>
+    <message>
+        <source>A copy of the selected material</source>
+        <translation>Una copia del materiale selezionato</translation>
+    </message>
+    <message>
+        <source>Rename</source>
+        <translation>Rinomina</translation>
+    </message>
+    <message>
+        <source>Rename the selected material</source>
+        <translation>Rinomina il materiale selezionato</translation>
+    </message>
+    <message>
+        <source>Delete unused</source>
+        <translation>Elimina inutilizzati</translation>
+    </message>
+    <message>
+        <source>Remove every material no node uses</source>
+        <translation>Rimuove ogni materiale che nessun nodo usa</translation>
+    </message>
+    <message>
+        <source>Assign to selection</source>
+        <translation>Assegna alla selezione</translation>
+    </message>
+    <message>
+        <source>Give the selected material to every selected shape and mesh (one undo step)</source>
+        <translation>Assegna il materiale selezionato a ogni forma e mesh selezionata (un solo passo di annullamento)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n unused materials removed.</source>
+        <translation>
+            <numerusform>%n materiale inutilizzato rimosso.</numerusform>
+            <numerusform>%n materiali inutilizzati rimossi.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Select a material in the list first.</source>
+        <translation>Seleziona prima un materiale nell&apos;elenco.</translation>
     </message>
 </context>
 <context>
@@ -1847,6 +2051,113 @@
         <source>Bloom radius (of the height)</source>
         <translation>Raggio del bloom (rispetto all&apos;altezza)</translation>
     </message>
+    <message>
+        <source>Edit sampler</source>
+        <translation>Modifica campionatore</translation>
+    </message>
+    <message>
+        <source>Load texture</source>
+        <translation>Carica texture</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.jpg *.jpeg *.exr *.hdr *.tif *.tiff)</source>
+        <translation>Immagini (*.png *.jpg *.jpeg *.exr *.hdr *.tif *.tiff)</translation>
+    </message>
+    <message>
+        <source>Load…</source>
+        <translation>Carica…</translation>
+    </message>
+    <message>
+        <source>Load an image file (PNG, JPEG, EXR, HDR, TIFF) into this slot</source>
+        <translation>Carica un file immagine (PNG, JPEG, EXR, HDR, TIFF) in questo slot</translation>
+    </message>
+    <message>
+        <source>Load %1</source>
+        <translation>Carica %1</translation>
+    </message>
+    <message>
+        <source>UV set</source>
+        <translation>Set UV</translation>
+    </message>
+    <message>
+        <source>Repeat</source>
+        <translation>Ripeti</translation>
+    </message>
+    <message>
+        <source>Clamp to edge</source>
+        <translation>Blocca al bordo</translation>
+    </message>
+    <message>
+        <source>Mirrored repeat</source>
+        <translation>Ripetizione speculare</translation>
+    </message>
+    <message>
+        <source>Wrap U</source>
+        <translation>Ripetizione U</translation>
+    </message>
+    <message>
+        <source>Wrap V</source>
+        <translation>Ripetizione V</translation>
+    </message>
+    <message>
+        <source>Filter</source>
+        <translation>Filtro</translation>
+    </message>
+    <message>
+        <source>Linear</source>
+        <translation>Lineare</translation>
+    </message>
+    <message>
+        <source>Nearest</source>
+        <translation>Più vicino</translation>
+    </message>
+    <message>
+        <source>Offset U</source>
+        <translation>Offset U</translation>
+    </message>
+    <message>
+        <source>Offset V</source>
+        <translation>Offset V</translation>
+    </message>
+    <message>
+        <source>Scale U</source>
+        <translation>Scala U</translation>
+    </message>
+    <message>
+        <source>Scale V</source>
+        <translation>Scala V</translation>
+    </message>
+    <message>
+        <source>Materials</source>
+        <translation>Materiali</translation>
+    </message>
+    <message>
+        <source>Edit</source>
+        <translation>Modifica</translation>
+    </message>
+    <message>
+        <source>Show this primitive&apos;s material below</source>
+        <translation>Mostra sotto il materiale di questa primitiva</translation>
+    </message>
+    <message numerus="yes">
+        <source>Primitive %1 (%n triangles)</source>
+        <translation>
+            <numerusform>Primitiva %1 (%n triangolo)</numerusform>
+            <numerusform>Primitiva %1 (%n triangoli)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Material</source>
+        <translation>Materiale</translation>
+    </message>
+    <message>
+        <source>(default)</source>
+        <translation>(predefinito)</translation>
+    </message>
+    <message>
+        <source>Material %1</source>
+        <translation>Materiale %1</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::RecoveryBar</name>
@@ -2022,6 +2333,10 @@ R %3  G %4  B %5 (lineare)</translation>
     <message>
         <source>Key %1</source>
         <translation>Chiave %1</translation>
+    </message>
+    <message>
+        <source>Linear</source>
+        <translation>Lineare</translation>
     </message>
 </context>
 <context>

@@ -28,6 +28,14 @@ namespace {
 
 namespace OIIO = OIIO_NAMESPACE;
 
+// The labels these edits give their commands, in the history's context so the undo history
+// translates them (history_view/command_labels.h).
+[[maybe_unused]] constexpr const char* kLabels[] = {
+    QT_TRANSLATE_NOOP("glint::editor::CommandLabels", "New material"),
+    QT_TRANSLATE_NOOP("glint::editor::CommandLabels", "Duplicate material"),
+    QT_TRANSLATE_NOOP("glint::editor::CommandLabels", "Assign material"),
+};
+
 QString tr(const char* text) { return QCoreApplication::translate("glint::editor::MaterialOperations", text); }
 
 // Runs `body` inside one macro; a failure closes the macro and becomes a message.
