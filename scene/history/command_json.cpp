@@ -1,5 +1,7 @@
 #include "command_json.h"
 
+#include "checked_numbers.h"
+
 #include "asset_commands.h"
 #include "camera_path_commands.h"
 #include "macro_command.h"
@@ -60,12 +62,13 @@ nlohmann::json commandToJson(const Command& command) {
     return j;
 }
 
-CommandPtr commandFromJson(const nlohmann::json& j) {
+CommandPtr commandFromJson(const nlohmann::json& entry) {
+    const nlohmann::json j = safeNumbers(entry); // a log may come from anywhere: no number cast is undefined
     const std::string type = j.at("type").get<std::string>();
     for (const CommandType& known : commandTypes()) {
         if (known.name != type) continue;
         CommandPtr command = known.fromJson(j);
-        command->interaction = j.at("interaction").get<std::uint64_t>();
+        command->interaction = checkedNumber<std::uint64_t>(j.at("interaction"));
         return command;
     }
     throw std::invalid_argument("unknown command type \"" + type + "\"");

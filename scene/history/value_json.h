@@ -3,6 +3,7 @@
 // project file are. Numbers keep every bit (nlohmann writes doubles as shortest round-trip
 // decimals); the one infinite default (Material::attenuationDistance) is written as a string.
 #include "scene/core/scene.h"
+#include "scene/history/checked_numbers.h"
 
 #include <nlohmann/json.hpp>
 
@@ -19,7 +20,7 @@ struct adl_serializer<glm::vec<L, T, Q>> {
     }
     static void from_json(const json& j, glm::vec<L, T, Q>& v) {
         if (!j.is_array() || j.size() != static_cast<std::size_t>(L)) throw std::invalid_argument("vector of wrong size");
-        for (glm::length_t i = 0; i < L; ++i) v[i] = j.at(static_cast<std::size_t>(i)).get<T>();
+        for (glm::length_t i = 0; i < L; ++i) v[i] = glint::checkedNumber<T>(j.at(static_cast<std::size_t>(i)));
     }
 };
 
@@ -29,20 +30,30 @@ struct adl_serializer<glm::qua<T, Q>> {
     static void to_json(json& j, const glm::qua<T, Q>& q) { j = json::array({q.x, q.y, q.z, q.w}); }
     static void from_json(const json& j, glm::qua<T, Q>& q) {
         if (!j.is_array() || j.size() != 4) throw std::invalid_argument("quaternion needs 4 numbers");
-        q = glm::qua<T, Q>(j[3].get<T>(), j[0].get<T>(), j[1].get<T>(), j[2].get<T>());
+        q = glm::qua<T, Q>(glint::checkedNumber<T>(j[3]), glint::checkedNumber<T>(j[0]), glint::checkedNumber<T>(j[1]),
+                           glint::checkedNumber<T>(j[2]));
     }
 };
 
 template <class T>
 struct adl_serializer<glint::SharedArray<T>> {
     static void to_json(json& j, const glint::SharedArray<T>& a) { j = a.vector(); }
-    static void from_json(const json& j, glint::SharedArray<T>& a) { a = j.get<std::vector<T>>(); }
+    static void from_json(const json& j, glint::SharedArray<T>& a) {
+        if (!j.is_array()) throw std::invalid_argument("array expected");
+        std::vector<T> values;
+        values.reserve(j.size());
+        for (const json& element : j) {
+            if constexpr (std::is_arithmetic_v<T>) values.push_back(glint::checkedNumber<T>(element));
+            else values.push_back(element.get<T>());
+        }
+        a = std::move(values);
+    }
 };
 
 template <class Tag>
 struct adl_serializer<glint::Id<Tag>> {
     static void to_json(json& j, glint::Id<Tag> id) { j = id.value; }
-    static void from_json(const json& j, glint::Id<Tag>& id) { id = glint::Id<Tag>{j.get<std::uint32_t>()}; }
+    static void from_json(const json& j, glint::Id<Tag>& id) { id = glint::Id<Tag>{glint::checkedNumber<std::uint32_t>(j)}; }
 };
 
 } // namespace nlohmann
