@@ -16,6 +16,7 @@
 #include "editor/properties/properties_panel.h"
 
 #include "editor/timeline/timeline_panel.h"
+#include "editor/materials/material_operations.h"
 #include "editor/materials/materials_panel.h"
 #include "editor/viewport/render_view.h"
 #include "editor/viewport/view_camera.h"
@@ -382,10 +383,38 @@ void MainWindow::closeEvent(QCloseEvent* event) {
 }
 
 void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
-    if (event->mimeData()->hasUrls()) event->acceptProposedAction();
+    if (event->mimeData()->hasUrls() || event->mimeData()->hasFormat(kMaterialMimeType)) event->acceptProposedAction();
+}
+
+// Materials from the Materials panel land on the node under the cursor in the viewport.
+NodeId MainWindow::materialDropTarget(QPoint windowPos) {
+    if (!viewport_) return {};
+    RenderView& view = viewport_->view();
+    const QPoint at = view.mapFrom(this, windowPos);
+    if (!view.rect().contains(at)) return {};
+    const NodeId node = view.pickAt(QPointF(at));
+    return takesMaterial(document_->scene(), node) ? node : NodeId{};
+}
+
+void MainWindow::dragMoveEvent(QDragMoveEvent* event) {
+    if (!event->mimeData()->hasFormat(kMaterialMimeType)) {
+        if (event->mimeData()->hasUrls()) event->acceptProposedAction();
+        return;
+    }
+    if (materialDropTarget(event->position().toPoint())) event->acceptProposedAction();
+    else event->ignore();
 }
 
 void MainWindow::dropEvent(QDropEvent* event) {
+    if (event->mimeData()->hasFormat(kMaterialMimeType)) {
+        const std::vector<MaterialId> materials = decodeMaterials(event->mimeData());
+        const NodeId node = materialDropTarget(event->position().toPoint());
+        if (materials.empty() || !node) return event->ignore();
+        const QString error = assignMaterial(*document_, materials.front(), {node});
+        if (!error.isEmpty()) log_->warning(error);
+        event->acceptProposedAction();
+        return;
+    }
     // Ctrl held while dropping merges the files into the open scene.
     openDropped(event->mimeData()->urls(), event->modifiers().testFlag(Qt::ControlModifier));
     event->acceptProposedAction();

@@ -85,6 +85,8 @@ public:
     LoadProgress& loadProgress() { return *loadProgress_; }
     // What dropping files does: a scene file replaces the document (after asking about unsaved
     // changes); with `merge`, or for formats Glint only imports, files are merged into it.
+    // The node under a drop at `windowPos` in the viewport that can take a material (none elsewhere).
+    NodeId materialDropTarget(QPoint windowPos);
     void openDropped(const QList<QUrl>& urls, bool merge);
     // Asks about unsaved changes; false when the user cancels.
     bool maybeSave();
@@ -94,6 +96,7 @@ public:
 protected:
     void closeEvent(QCloseEvent* event) override;
     void dragEnterEvent(QDragEnterEvent* event) override;
+    void dragMoveEvent(QDragMoveEvent* event) override;
     void dropEvent(QDropEvent* event) override;
     void changeEvent(QEvent* event) override;
     bool eventFilter(QObject* watched, QEvent* event) override;

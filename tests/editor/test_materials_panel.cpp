@@ -208,6 +208,30 @@ private slots:
         document.setSelection({sphere});
         const auto centre = view.project(glm::dvec3(document.scene().worldFromNode(sphere)[3]));
         QVERIFY(centre);
+
+        // Metal dropped on the sphere in the viewport (the window takes drops the view passes on),
+        // once the picker knows the sphere; a drop on empty sky is refused.
+        {
+            const Scene beforeViewDrop = document.scene();
+            QTRY_COMPARE_WITH_TIMEOUT(view.pickAt(*centre), sphere, 30000);
+            const QPoint inWindow = view.mapTo(&window, centre->toPoint());
+            QDragEnterEvent viewEnter(inWindow, actions, mime.get(), Qt::LeftButton, Qt::NoModifier);
+            QCoreApplication::sendEvent(&window, &viewEnter);
+            QVERIFY(viewEnter.isAccepted());
+            QDragMoveEvent viewMove(inWindow, actions, mime.get(), Qt::LeftButton, Qt::NoModifier);
+            QCoreApplication::sendEvent(&window, &viewMove);
+            QVERIFY(viewMove.isAccepted());
+            QDropEvent viewDrop(inWindow, actions, mime.get(), Qt::LeftButton, Qt::NoModifier);
+            QCoreApplication::sendEvent(&window, &viewDrop);
+            QCOMPARE(materialOfSphere(), metal);
+            document.undo();
+            QVERIFY(document.scene() == beforeViewDrop);
+            const QPoint sky = view.mapTo(&window, QPoint(view.width() / 2, 2));
+            QVERIFY(!view.pickAt(QPointF(view.width() / 2, 2)).valid());
+            QDragMoveEvent skyMove(sky, actions, mime.get(), Qt::LeftButton, Qt::NoModifier);
+            QCoreApplication::sendEvent(&window, &skyMove);
+            QVERIFY(!skyMove.isAccepted());
+        }
         const qreal ratio = view.devicePixelRatioF();
         const QPoint pixel(int(centre->x() * ratio), int(centre->y() * ratio));
         // The edit's first frame on screen, then 8 samples of it: the mean colour at the centre.
