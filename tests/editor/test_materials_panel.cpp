@@ -25,6 +25,7 @@
 #include "scene/geometry/geometry.h"
 
 #include <QAction>
+#include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QFileDialog>
@@ -340,6 +341,10 @@ private slots:
         QCOMPARE(reopened.scene().at(sphere).component, document.scene().at(sphere).component);
         QCOMPARE(reopened.scene().at(ball).component, document.scene().at(ball).component);
         QCOMPARE(reopened.scene().meshes.at(ballMesh).primitives.front().material, plasticId);
+        // A picture of the panel with its swatches, for people (beside editor_main_window.png).
+        if (auto* dock = qobject_cast<QDockWidget*>(panel.parentWidget())) dock->raise();
+        QTRY_VERIFY_WITH_TIMEOUT(panel.swatches() && !panel.swatches()->busy(), 60000);
+        window.grab().save(QStringLiteral(GLINT_TEST_OUTPUT_DIR "/editor_materials_panel.png"));
         QCOMPARE(document.undo().flags != 0, true); // the history still undoes after the save
         Q_UNUSED(beforeNew);
     }
