@@ -101,8 +101,12 @@ ChangeSet DuplicateNode::apply(Scene& scene) {
     const bool fresh = copyIds_.empty();
     if (!fresh && copyIds_.size() != originals.size())
         throw std::invalid_argument("DuplicateNode: the recorded copy ids do not fit the subtree");
-    for (NodeId id : copyIds_)
-        if (scene.contains(id)) throw std::invalid_argument("DuplicateNode: id taken " + std::to_string(id.value));
+    // Recorded ids (a replayed log) must each name a new node: valid, unused and not repeated.
+    for (std::size_t i = 0; i < copyIds_.size(); ++i) {
+        const NodeId id = copyIds_[i];
+        if (!id.valid() || scene.contains(id) || std::find(copyIds_.begin(), copyIds_.begin() + std::ptrdiff_t(i), id) != copyIds_.begin() + std::ptrdiff_t(i))
+            throw std::invalid_argument("DuplicateNode: recorded copy id " + std::to_string(id.value) + " is invalid, taken or repeated");
+    }
 
     sourceName_ = scene.at(source_).name;
     std::map<NodeId, NodeId> copyFromOriginal;

@@ -84,6 +84,26 @@ private slots:
         QCOMPARE(scene.settings.activeCamera, ids.camera);
     }
 
+    // A replayed duplicate's recorded copy ids must each name a new node (fuzz_command_log found a
+    // log with id 0, which apply turned into a fresh id and revert then could not find).
+    void duplicateRefusesRecordedIdsThatNameNoNewNode() {
+        SampleIds ids;
+        Scene scene = sampleScene(&ids);
+        const Scene start = scene;
+        const auto refused = [&](std::vector<NodeId> copies) {
+            copies.resize(scene.subtree(ids.ball).size(), NodeId{500});
+            try {
+                DuplicateNode(ids.ball, copies).apply(scene);
+            } catch (const std::invalid_argument&) {
+                return scene == start;
+            }
+            return false;
+        };
+        QVERIFY(refused({NodeId{}}));               // invalid
+        QVERIFY(refused({ids.floor}));              // taken
+        QVERIFY(scene.subtree(ids.ball).size() < 2 || refused({NodeId{500}, NodeId{500}})); // repeated
+    }
+
     void duplicateCopiesTheSubtreeWithFreshIdsAfterTheOriginal() {
         SampleIds ids;
         Scene scene = sampleScene(&ids);
