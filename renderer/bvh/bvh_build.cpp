@@ -1,11 +1,12 @@
 #include "renderer/bvh/bvh_build.h"
 
+#include "renderer/bvh/huge_pages.h"
 #include "renderer/bvh/parallel_for.h"
 #include "renderer/bvh/sah_split.h"
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
+#include <memory>
 
 namespace glint::bvh {
 namespace {
@@ -14,16 +15,21 @@ namespace {
 // of the thread count: the set of tasks, and so the tree, is the same however many threads run them.
 constexpr std::uint32_t kTaskItems = 4096;
 
-// Children of an interior node are always allocated as a pair: `left` and `left + 1`.
-struct TempNode {
-    Aabb bounds;
-    std::uint32_t begin = 0;
-    std::uint32_t count = 0;
-    std::int32_t left = -1; // interior when >= 0
-    std::int32_t task = -1; // top-phase nodes only: the task that builds this subtree
+// A range of the top phase (more than kTaskItems items), split level by level.
+struct TopNode {
+    BuildRange range;
+    std::int32_t left = -1; // interior when >= 0: its children are `left` and `left + 1`
+    std::int32_t task = -1; // a range of at most kTaskItems items: the task that builds it
 };
 
-using TempTree = std::vector<TempNode>;
+// A node as a task writes it: BvhNode's layout (a subtree's root first, then sibling pairs depth
+// first), interior links local to the subtree. Trivial, so the scratch array is never cleared.
+struct RawNode {
+    float lo[3];
+    float hi[3];
+    std::uint32_t first;
+    std::uint32_t count;
+};
 
 bool finite(const Aabb& box)
 {
@@ -31,34 +37,30 @@ bool finite(const Aabb& box)
            std::isfinite(box.hi.x) && std::isfinite(box.hi.y) && std::isfinite(box.hi.z);
 }
 
-std::vector<Aabb> sanitised(std::span<const Aabb> boxes)
+// Non-finite boxes become empty ones.
+std::vector<BuildItem> buildItems(std::span<const Aabb> boxes)
 {
-    std::vector<Aabb> out(boxes.begin(), boxes.end());
-    for (Aabb& box : out)
-        if (!finite(box)) box = Aabb{};
-    return out;
-}
-
-void splitInto(TempTree& tree, std::size_t index, const RangeSplit& split)
-{
-    tree[index].bounds = split.bounds;
-    if (split.leaf) return;
-    const TempNode parent = tree[index];
-    tree[index].left = static_cast<std::int32_t>(tree.size());
-    tree.push_back(TempNode{{}, parent.begin, split.middle - parent.begin});
-    tree.push_back(TempNode{{}, split.middle, parent.begin + parent.count - split.middle});
+    std::vector<BuildItem> items;
+    items.reserve(boxes.size());
+    adviseHugePages(items.data(), boxes.size() * sizeof(BuildItem));
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        const Aabb box = finite(boxes[i]) ? boxes[i] : Aabb{};
+        items.push_back(BuildItem{box.lo, static_cast<std::uint32_t>(i), box.hi, 0u});
+    }
+    return items;
 }
 
 // Splits large ranges level by level; ranges on one level are independent, so they run in parallel.
 // Returns the tree of large ranges; its small ranges are marked as tasks (in index order).
-TempTree buildTopPhase(BuildItems& items, const BuildOptions& options, std::vector<std::size_t>& tasks)
+std::vector<TopNode> buildTopPhase(std::span<BuildItem> items, const BuildOptions& options, bool mayBeEmpty,
+                                   std::vector<std::size_t>& tasks)
 {
-    TempTree top{TempNode{{}, 0, static_cast<std::uint32_t>(items.order.size())}};
+    std::vector<TopNode> top{TopNode{measureRange(items, 0, static_cast<std::uint32_t>(items.size()))}};
     std::vector<std::size_t> frontier{0};
     while (!frontier.empty()) {
         std::vector<std::size_t> large;
         for (std::size_t index : frontier) {
-            if (top[index].count > kTaskItems) {
+            if (top[index].range.count > kTaskItems) {
                 large.push_back(index);
             } else {
                 top[index].task = static_cast<std::int32_t>(tasks.size());
@@ -67,68 +69,112 @@ TempTree buildTopPhase(BuildItems& items, const BuildOptions& options, std::vect
         }
         std::vector<RangeSplit> splits(large.size());
         parallelFor(large.size(), options.threads, [&](std::size_t i) {
-            const TempNode& node = top[large[i]];
-            splits[i] = splitRange(items, node.begin, node.begin + node.count, options);
+            SplitScratch scratch;
+            splits[i] = splitRange(items, top[large[i]].range, options, mayBeEmpty, scratch);
         });
         frontier.clear();
         for (std::size_t i = 0; i < large.size(); ++i) {
-            splitInto(top, large[i], splits[i]);
-            if (top[large[i]].left >= 0) {
-                frontier.push_back(static_cast<std::size_t>(top[large[i]].left));
-                frontier.push_back(static_cast<std::size_t>(top[large[i]].left) + 1);
-            }
+            if (splits[i].leaf) continue;
+            const auto left = static_cast<std::int32_t>(top.size());
+            top[large[i]].left = left;
+            top.push_back(TopNode{splits[i].left});
+            top.push_back(TopNode{splits[i].right});
+            frontier.push_back(static_cast<std::size_t>(left));
+            frontier.push_back(static_cast<std::size_t>(left) + 1);
         }
     }
     return top;
 }
 
-TempTree buildSubtree(BuildItems& items, const TempNode& range, const BuildOptions& options)
+RawNode rawNode(const Aabb& bounds, std::uint32_t first, std::uint32_t count)
 {
-    TempTree tree{TempNode{{}, range.begin, range.count}};
-    std::vector<std::size_t> pending{0};
-    while (!pending.empty()) {
-        const std::size_t index = pending.back();
-        pending.pop_back();
-        const TempNode node = tree[index];
-        splitInto(tree, index, splitRange(items, node.begin, node.begin + node.count, options));
-        if (tree[index].left >= 0) {
-            pending.push_back(static_cast<std::size_t>(tree[index].left) + 1);
-            pending.push_back(static_cast<std::size_t>(tree[index].left));
-        }
-    }
-    return tree;
+    return RawNode{{bounds.lo.x, bounds.lo.y, bounds.lo.z}, {bounds.hi.x, bounds.hi.y, bounds.hi.z}, first, count};
 }
 
-// Lays both phases out as one array: depth first, sibling pairs adjacent, root at 0.
-std::vector<BvhNode> stitch(const TempTree& top, const std::vector<TempTree>& subtrees)
+// Builds one small range depth first into `out` (room for 2 * count - 1 nodes); returns the number
+// of nodes written.
+std::uint32_t buildSubtree(std::span<BuildItem> items, const BuildRange& range, const BuildOptions& options, bool mayBeEmpty,
+                           RawNode* out)
 {
+    struct Pending {
+        std::uint32_t node;
+        BuildRange range;
+    };
+    std::vector<Pending> pending{Pending{0, range}};
+    SplitScratch scratch;
+    std::uint32_t size = 1;
+    while (!pending.empty()) {
+        const Pending next = pending.back();
+        pending.pop_back();
+        const RangeSplit split = splitRange(items, next.range, options, mayBeEmpty, scratch);
+        if (split.leaf) {
+            out[next.node] = rawNode(next.range.bounds, next.range.begin, next.range.count);
+            continue;
+        }
+        const std::uint32_t children = size;
+        size += 2;
+        out[next.node] = rawNode(next.range.bounds, children, 0);
+        pending.push_back(Pending{children + 1, split.right});
+        pending.push_back(Pending{children, split.left});
+    }
+    return size;
+}
+
+// Where a task's subtree lands: its root at `root`, the rest from `block` on, in its own order.
+struct Placement {
+    std::size_t root = 0;
+    std::size_t block = 0;
+};
+
+// Lays the top phase and the subtrees out as one array: depth first, sibling pairs adjacent, root
+// at 0. A subtree's nodes after its root are contiguous in that order, so each is copied as a block.
+std::vector<BvhNode> stitch(const std::vector<TopNode>& top, const std::vector<std::size_t>& tasks, const RawNode* scratch,
+                            const std::vector<std::uint32_t>& sizes, int threads)
+{
+    std::vector<BvhNode> topNodes; // (index, node) of the top phase, written after the resize
+    std::vector<std::size_t> topTargets;
+    std::vector<Placement> placements(tasks.size());
     struct Ref {
-        std::int32_t tree; // -1: the top phase
         std::size_t node;
         std::size_t target;
     };
-    const auto resolve = [&](Ref ref) -> std::pair<const TempNode*, std::int32_t> {
-        if (ref.tree < 0 && top[ref.node].task >= 0) return {&subtrees[static_cast<std::size_t>(top[ref.node].task)][0], top[ref.node].task};
-        const TempTree& tree = ref.tree < 0 ? top : subtrees[static_cast<std::size_t>(ref.tree)];
-        return {&tree[ref.node], ref.tree};
-    };
-    std::vector<BvhNode> nodes(1);
-    std::vector<Ref> pending{Ref{-1, 0, 0}};
+    std::vector<Ref> pending{Ref{0, 0}};
+    std::size_t next = 1;
     while (!pending.empty()) {
         const Ref ref = pending.back();
         pending.pop_back();
-        const auto [node, tree] = resolve(ref);
-        if (node->left < 0) {
-            nodes[ref.target] = BvhNode{node->bounds, node->begin, node->count};
-            continue;
+        const TopNode& node = top[ref.node];
+        if (node.task >= 0) {
+            const auto task = static_cast<std::size_t>(node.task);
+            placements[task] = Placement{ref.target, next};
+            next += sizes[task] - 1;
+        } else if (node.left < 0) {
+            topNodes.push_back(BvhNode{node.range.bounds, node.range.begin, node.range.count});
+            topTargets.push_back(ref.target);
+        } else {
+            topNodes.push_back(BvhNode{node.range.bounds, static_cast<std::uint32_t>(next), 0});
+            topTargets.push_back(ref.target);
+            const auto left = static_cast<std::size_t>(node.left);
+            pending.push_back(Ref{left + 1, next + 1});
+            pending.push_back(Ref{left, next});
+            next += 2;
         }
-        const std::size_t children = nodes.size();
-        nodes.resize(children + 2);
-        nodes[ref.target] = BvhNode{node->bounds, static_cast<std::uint32_t>(children), 0};
-        const auto left = static_cast<std::size_t>(node->left);
-        pending.push_back(Ref{tree, left + 1, children + 1});
-        pending.push_back(Ref{tree, left, children});
     }
+    std::vector<BvhNode> nodes;
+    nodes.reserve(next);
+    adviseHugePages(nodes.data(), next * sizeof(BvhNode));
+    nodes.resize(next);
+    for (std::size_t i = 0; i < topNodes.size(); ++i) nodes[topTargets[i]] = topNodes[i];
+    parallelFor(tasks.size(), threads, [&](std::size_t task) {
+        const RawNode* local = scratch + 2 * static_cast<std::size_t>(top[tasks[task]].range.begin);
+        const Placement at = placements[task];
+        for (std::size_t i = 0; i < sizes[task]; ++i) {
+            const RawNode& raw = local[i];
+            const std::uint32_t first = raw.count != 0 ? raw.first : static_cast<std::uint32_t>(at.block + raw.first - 1);
+            nodes[i == 0 ? at.root : at.block + i - 1] =
+                BvhNode{Aabb{{raw.lo[0], raw.lo[1], raw.lo[2]}, {raw.hi[0], raw.hi[1], raw.hi[2]}}, first, raw.count};
+        }
+    });
     return nodes;
 }
 
@@ -138,18 +184,22 @@ Bvh buildBvh(std::span<const Aabb> itemBounds, const BuildOptions& options)
 {
     Bvh bvh;
     if (itemBounds.empty()) return bvh;
-    const std::vector<Aabb> boxes = sanitised(itemBounds);
-    BuildItems items{boxes, std::vector<glm::vec3>(boxes.size()), std::vector<std::uint32_t>(boxes.size())};
-    for (std::size_t i = 0; i < boxes.size(); ++i) items.centroids[i] = boxes[i].empty() ? glm::vec3(0.0f) : boxes[i].centre();
-    std::iota(items.order.begin(), items.order.end(), 0u);
-
+    std::vector<BuildItem> items = buildItems(itemBounds);
+    const bool mayBeEmpty = anyEmpty(items);
     std::vector<std::size_t> tasks;
-    const TempTree top = buildTopPhase(items, options, tasks);
-    std::vector<TempTree> subtrees(tasks.size());
-    parallelFor(tasks.size(), options.threads,
-                [&](std::size_t t) { subtrees[t] = buildSubtree(items, top[tasks[t]], options); });
-    bvh.nodes = stitch(top, subtrees);
-    bvh.itemOrder = std::move(items.order);
+    const std::vector<TopNode> top = buildTopPhase(items, options, mayBeEmpty, tasks);
+    // Each task writes at twice its first item: a range of n items has at most 2n - 1 nodes, so
+    // the tasks' areas never overlap.
+    const auto scratch = std::make_unique_for_overwrite<RawNode[]>(2 * items.size());
+    adviseHugePages(scratch.get(), 2 * items.size() * sizeof(RawNode));
+    std::vector<std::uint32_t> sizes(tasks.size());
+    parallelFor(tasks.size(), options.threads, [&](std::size_t t) {
+        const BuildRange& range = top[tasks[t]].range;
+        sizes[t] = buildSubtree(items, range, options, mayBeEmpty, scratch.get() + 2 * static_cast<std::size_t>(range.begin));
+    });
+    bvh.nodes = stitch(top, tasks, scratch.get(), sizes, options.threads);
+    bvh.itemOrder.resize(items.size());
+    for (std::size_t i = 0; i < items.size(); ++i) bvh.itemOrder[i] = items[i].index;
     return bvh;
 }
 

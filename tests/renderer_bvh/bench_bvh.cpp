@@ -27,6 +27,7 @@ struct Row {
     double sah = 0.0;
     int depth = 0;
     std::size_t nodes = 0;
+    std::uint64_t tree = 0;     // FNV-1a of the nodes and the item order: equal trees, equal values
     double raysPerSecond = 0.0; // median per CPU second; single-threaded closest hit, 0 when not measured
     double hitFraction = 0.0;   // of the random rays through the mesh's box
 };
@@ -45,6 +46,23 @@ struct Stopwatch {
     double wallSeconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall).count(); }
     double cpuSeconds() const { return static_cast<double>(std::clock() - cpu) / CLOCKS_PER_SEC; }
 };
+
+// FNV-1a over the bytes of the nodes and the item order, so two builds can be compared by eye.
+std::uint64_t treeHash(const Bvh& bvh)
+{
+    std::uint64_t hash = 1469598103934665603ull;
+    const auto add = [&](const void* data, std::size_t size) {
+        const auto* bytes = static_cast<const unsigned char*>(data);
+        for (std::size_t i = 0; i < size; ++i) hash = (hash ^ bytes[i]) * 1099511628211ull;
+    };
+    for (const BvhNode& node : bvh.nodes) {
+        add(&node.bounds, sizeof(node.bounds));
+        add(&node.first, sizeof(node.first));
+        add(&node.count, sizeof(node.count));
+    }
+    add(bvh.itemOrder.data(), bvh.itemOrder.size() * sizeof(std::uint32_t));
+    return hash;
+}
 
 double measureRays(const MeshBvh& mesh, int repeats, double& hitFraction)
 {
@@ -83,6 +101,7 @@ Row measureBuild(const std::string& name, const MeshTriangles& triangles, int th
     row.sah = sahCost(mesh.bvh);
     row.depth = maxDepth(mesh.bvh);
     row.nodes = mesh.bvh.nodes.size();
+    row.tree = treeHash(mesh.bvh);
     if (rays) row.raysPerSecond = measureRays(mesh, repeats, row.hitFraction);
     return row;
 }
@@ -91,16 +110,16 @@ void writeFiles(const std::filesystem::path& dir, const std::vector<Row>& rows, 
 {
     std::filesystem::create_directories(dir);
     std::ofstream csv(dir / "bvh_bench.csv");
-    csv << "mesh,triangles,threads,build_ms_median,build_cpu_ms_median,sah_cost,depth,nodes,rays_per_cpu_s_median,ray_hit_fraction\n";
+    csv << "mesh,triangles,threads,build_ms_median,build_cpu_ms_median,sah_cost,depth,nodes,tree_fnv1a,rays_per_cpu_s_median,ray_hit_fraction\n";
     std::ofstream json(dir / "bvh_bench.json");
     json << "{\n  \"repeats\": " << repeats << ",\n  \"results\": [\n";
     for (std::size_t i = 0; i < rows.size(); ++i) {
         const Row& r = rows[i];
         csv << r.mesh << ',' << r.triangles << ',' << r.threads << ',' << r.buildMs << ',' << r.buildCpuMs << ',' << r.sah << ',' << r.depth << ','
-            << r.nodes << ',' << r.raysPerSecond << ',' << r.hitFraction << '\n';
+            << r.nodes << ',' << std::hex << r.tree << std::dec << ',' << r.raysPerSecond << ',' << r.hitFraction << '\n';
         json << "    {\"mesh\": \"" << r.mesh << "\", \"triangles\": " << r.triangles << ", \"threads\": " << r.threads
              << ", \"build_ms_median\": " << r.buildMs << ", \"build_cpu_ms_median\": " << r.buildCpuMs << ", \"sah_cost\": " << r.sah << ", \"depth\": " << r.depth
-             << ", \"nodes\": " << r.nodes << ", \"rays_per_cpu_s_median\": " << r.raysPerSecond << ", \"ray_hit_fraction\": " << r.hitFraction << "}"
+             << ", \"nodes\": " << r.nodes << ", \"tree_fnv1a\": \"" << std::hex << r.tree << std::dec << "\", \"rays_per_cpu_s_median\": " << r.raysPerSecond << ", \"ray_hit_fraction\": " << r.hitFraction << "}"
              << (i + 1 < rows.size() ? "," : "") << '\n';
     }
     json << "  ]\n}\n";
@@ -124,11 +143,12 @@ int main(int argc, char** argv)
         rows.push_back(measureBuild("bunny_x16", bunny1m, threads, repeats, threads == 1));
         rows.push_back(measureBuild("bunny_x64", bunny4m, threads, std::min(repeats, 3), threads == 1));
     }
-    std::printf("%-10s %10s %7s %10s %10s %8s %6s %10s %12s\n", "mesh", "triangles", "threads", "build ms", "cpu ms", "SAH", "depth",
-                "nodes", "rays/cpu-s");
+    std::printf("%-10s %10s %7s %10s %10s %12s %8s %6s %10s %16s %12s\n", "mesh", "triangles", "threads", "build ms", "cpu ms",
+                "Mtri/cpu-s", "SAH", "depth", "nodes", "tree", "rays/cpu-s");
     for (const Row& r : rows)
-        std::printf("%-10s %10zu %7d %10.1f %10.1f %8.3f %6d %10zu %12.0f\n", r.mesh.c_str(), r.triangles, r.threads, r.buildMs,
-                    r.buildCpuMs, r.sah, r.depth, r.nodes, r.raysPerSecond);
+        std::printf("%-10s %10zu %7d %10.1f %10.1f %12.2f %8.3f %6d %10zu %16llx %12.0f\n", r.mesh.c_str(), r.triangles, r.threads,
+                    r.buildMs, r.buildCpuMs, r.buildCpuMs > 0.0 ? 1e-3 * static_cast<double>(r.triangles) / r.buildCpuMs : 0.0, r.sah,
+                    r.depth, r.nodes, static_cast<unsigned long long>(r.tree), r.raysPerSecond);
     writeFiles(argv[1], rows, repeats);
     return 0;
 }
