@@ -1,27 +1,26 @@
-<?xml version="1.0" encoding="utf-8"?>
-<!DOCTYPE TS>
+<?xml version='1.0' encoding='utf-8'?>
 <TS version="2.1" language="de" sourcelanguage="en">
 <context>
     <name>FocusPick</name>
     <message>
         <source>Pick focus works through a scene camera: select one and look through it (0) first.</source>
-        <translation>Fokus per Klick wirkt durch eine Szenenkamera: zuerst eine auswählen und durch sie schauen (0).</translation>
+        <translation>Fokuswahl wirkt durch eine Szenenkamera: wählen Sie zuerst eine aus und schauen Sie hindurch (0).</translation>
     </message>
     <message>
         <source>Pick focus: %1 follows its camera path, whose keys set the focus; edit them in the timeline.</source>
-        <translation>Fokus per Klick: %1 folgt ihrem Kamerapfad, dessen Schlüssel den Fokus setzen; bearbeiten Sie diese in der Zeitleiste.</translation>
+        <translation>Fokuswahl: %1 folgt seinem Kamerapfad, dessen Schlüssel den Fokus setzen; bearbeiten Sie sie in der Zeitleiste.</translation>
     </message>
     <message>
         <source>Pick focus: nothing under the cursor, the focus distance is unchanged.</source>
-        <translation>Fokus per Klick: nichts unter dem Mauszeiger, die Fokusdistanz bleibt unverändert.</translation>
+        <translation>Fokuswahl: nichts unter dem Mauszeiger, der Fokusabstand bleibt.</translation>
     </message>
     <message>
         <source>Pick focus: the surface is behind the camera, the focus distance is unchanged.</source>
-        <translation>Fokus per Klick: die Oberfläche liegt hinter der Kamera, die Fokusdistanz bleibt unverändert.</translation>
+        <translation>Fokuswahl: die Fläche liegt hinter der Kamera, der Fokusabstand bleibt.</translation>
     </message>
     <message>
         <source>Focus distance of %1: %2 m (%3)</source>
-        <translation>Fokusdistanz von %1: %2 m (%3)</translation>
+        <translation>Fokusabstand von %1: %2 m (%3)</translation>
     </message>
 </context>
 <context>
@@ -84,6 +83,14 @@
     <message>
         <source>Load texture %1</source>
         <translation>Textur %1 laden</translation>
+    </message>
+    <message>
+        <source>Key transform</source>
+        <translation>Transformation verschlüsseln</translation>
+    </message>
+    <message>
+        <source>Paste key</source>
+        <translation>Schlüssel einfügen</translation>
     </message>
 </context>
 <context>
@@ -434,6 +441,10 @@
         <source>Assign material</source>
         <translation>Material zuweisen</translation>
     </message>
+    <message>
+        <source>Change motion blur</source>
+        <translation>Bewegungsunschärfe ändern</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Configurations</name>
@@ -727,10 +738,7 @@
     </message>
     <message numerus="yes">
         <source>%n nodes selected</source>
-        <translation>
-            <numerusform>%n Knoten ausgewählt</numerusform>
-            <numerusform>%n Knoten ausgewählt</numerusform>
-        </translation>
+        <translation><numerusform>%n Knoten ausgewählt</numerusform><numerusform>%n Knoten ausgewählt</numerusform></translation>
     </message>
     <message>
         <source>Selection</source>
@@ -749,8 +757,8 @@
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <source>&quot;%1&quot; has unsaved changes. Save them first?</source>
-        <translation>&quot;%1&quot; hat ungespeicherte Änderungen. Zuerst speichern?</translation>
+        <source>"%1" has unsaved changes. Save them first?</source>
+        <translation>"%1" hat ungespeicherte Änderungen. Zuerst speichern?</translation>
     </message>
     <message>
         <source>Cannot open %1: %2</source>
@@ -1008,17 +1016,11 @@
     </message>
     <message numerus="yes">
         <source>%n nodes</source>
-        <translation>
-            <numerusform>%n Knoten</numerusform>
-            <numerusform>%n Knoten</numerusform>
-        </translation>
+        <translation><numerusform>%n Knoten</numerusform><numerusform>%n Knoten</numerusform></translation>
     </message>
     <message numerus="yes">
         <source>%n triangles</source>
-        <translation>
-            <numerusform>%n Dreieck</numerusform>
-            <numerusform>%n Dreiecke</numerusform>
-        </translation>
+        <translation><numerusform>%n Dreieck</numerusform><numerusform>%n Dreiecke</numerusform></translation>
     </message>
     <message>
         <source>%1 (autosaved %2)</source>
@@ -1042,10 +1044,7 @@
     </message>
     <message numerus="yes">
         <source>%n more in File &gt; Recover.</source>
-        <translation>
-            <numerusform>%n weitere unter Datei &gt; Wiederherstellen.</numerusform>
-            <numerusform>%n weitere unter Datei &gt; Wiederherstellen.</numerusform>
-        </translation>
+        <translation><numerusform>%n weitere unter Datei &gt; Wiederherstellen.</numerusform><numerusform>%n weitere unter Datei &gt; Wiederherstellen.</numerusform></translation>
     </message>
     <message>
         <source>Re&amp;cover</source>
@@ -1093,6 +1092,14 @@
         <source>Materials</source>
         <translation>Materialien</translation>
     </message>
+    <message>
+        <source>New scene</source>
+        <translation>Neue Szene</translation>
+    </message>
+    <message>
+        <source>New from &amp;template</source>
+        <translation>Neu aus &amp;Vorlage</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::MaterialListModel</name>
@@ -1108,10 +1115,7 @@
     </message>
     <message numerus="yes">
         <source>%n users</source>
-        <translation>
-            <numerusform>%n Nutzer</numerusform>
-            <numerusform>%n Nutzer</numerusform>
-        </translation>
+        <translation><numerusform>%n Nutzer</numerusform><numerusform>%n Nutzer</numerusform></translation>
     </message>
     <message>
         <source>%1: no node uses it (Delete unused removes it)</source>
@@ -1217,14 +1221,18 @@
     </message>
     <message numerus="yes">
         <source>%n unused materials removed.</source>
-        <translation>
-            <numerusform>%n unbenutztes Material entfernt.</numerusform>
-            <numerusform>%n unbenutzte Materialien entfernt.</numerusform>
-        </translation>
+        <translation><numerusform>%n unbenutztes Material entfernt.</numerusform><numerusform>%n unbenutzte Materialien entfernt.</numerusform></translation>
     </message>
     <message>
         <source>Select a material in the list first.</source>
         <translation>Zuerst ein Material in der Liste auswählen.</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::NodeKeyTracks</name>
+    <message>
+        <source>Node keys</source>
+        <translation>Knotenschlüssel</translation>
     </message>
 </context>
 <context>
@@ -1276,6 +1284,10 @@
     <message>
         <source>Camera %1</source>
         <translation>Kamera %1</translation>
+    </message>
+    <message>
+        <source>Area light %1</source>
+        <translation>Flächenlicht %1</translation>
     </message>
 </context>
 <context>
@@ -1486,8 +1498,8 @@
         <translation>Tastenkürzel-Konflikt</translation>
     </message>
     <message>
-        <source>%1 is used by both &quot;%2&quot; and &quot;%3&quot;.</source>
-        <translation>%1 wird von &quot;%2&quot; und &quot;%3&quot; verwendet.</translation>
+        <source>%1 is used by both "%2" and "%3".</source>
+        <translation>%1 wird von "%2" und "%3" verwendet.</translation>
     </message>
     <message>
         <source>No limit</source>
@@ -1498,7 +1510,7 @@
         <translation>Samples der Ansicht</translation>
     </message>
     <message>
-        <source>The viewport stops adding samples per pixel here (renders use the Scene panel&apos;s samples)</source>
+        <source>The viewport stops adding samples per pixel here (renders use the Scene panel's samples)</source>
         <translation>Die Ansicht hört hier auf, Samples pro Pixel hinzuzufügen (Renderings verwenden die Samples des Szene-Panels)</translation>
     </message>
     <message>
@@ -1523,6 +1535,13 @@
     <message>
         <source>Select a node in the outliner or the viewport to edit it.</source>
         <translation>Einen Knoten in der Gliederung oder der Ansicht auswählen, um ihn zu bearbeiten.</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::PropertyEdits</name>
+    <message>
+        <source>Edit %1 nodes</source>
+        <translation>%1 Knoten bearbeiten</translation>
     </message>
 </context>
 <context>
@@ -1940,7 +1959,7 @@
         <translation>Beginn der Zeitleiste (s)</translation>
     </message>
     <message>
-        <source>Timeline end (s, 0 = the animation&apos;s)</source>
+        <source>Timeline end (s, 0 = the animation's)</source>
         <translation>Ende der Zeitleiste (s, 0 = das der Animation)</translation>
     </message>
     <message>
@@ -1948,8 +1967,8 @@
         <translation>Bilder pro Sekunde</translation>
     </message>
     <message>
-        <source>Frames per second must be a positive number or a ratio such as 24000/1001, not &quot;%1&quot;.</source>
-        <translation>Bilder pro Sekunde müssen eine positive Zahl oder ein Verhältnis wie 24000/1001 sein, nicht &quot;%1&quot;.</translation>
+        <source>Frames per second must be a positive number or a ratio such as 24000/1001, not "%1".</source>
+        <translation>Bilder pro Sekunde müssen eine positive Zahl oder ein Verhältnis wie 24000/1001 sein, nicht "%1".</translation>
     </message>
     <message>
         <source>Real-time reconstruction</source>
@@ -1961,7 +1980,7 @@
     </message>
     <message>
         <source>TAA clip box (std. deviations)</source>
-        <translation>TAA-Clipping-Box (Standardabweichungen)</translation>
+        <translation>TAA-Clip-Box (Standardabweichungen)</translation>
     </message>
     <message>
         <source>TAA perceptual blend</source>
@@ -1973,7 +1992,7 @@
     </message>
     <message>
         <source>SVGF temporal alpha</source>
-        <translation>SVGF zeitliches Alpha</translation>
+        <translation>SVGF-Zeit-Alpha</translation>
     </message>
     <message>
         <source>SVGF moments alpha</source>
@@ -1993,15 +2012,15 @@
     </message>
     <message>
         <source>SVGF firefly ratio</source>
-        <translation>SVGF-Firefly-Verhältnis</translation>
+        <translation>SVGF-Glühwürmchen-Verhältnis</translation>
     </message>
     <message>
         <source>TAA history clipping</source>
-        <translation>TAA-Verlaufsbegrenzung</translation>
+        <translation>TAA-Verlaufsbeschneidung</translation>
     </message>
     <message>
         <source>Variance clip (YCoCg)</source>
-        <translation>Varianz-Clipping (YCoCg)</translation>
+        <translation>Varianz-Beschneidung (YCoCg)</translation>
     </message>
     <message>
         <source>Min/max clamp</source>
@@ -2012,8 +2031,8 @@
         <translation>Keine (Geisterbilder)</translation>
     </message>
     <message>
-        <source>&quot;%1&quot; is relative, but the scene has no folder yet: choose the file with Browse, or save the scene first.</source>
-        <translation>&quot;%1&quot; ist relativ, aber die Szene hat noch keinen Ordner: Wählen Sie die Datei mit Durchsuchen oder speichern Sie zuerst die Szene.</translation>
+        <source>"%1" is relative, but the scene has no folder yet: choose the file with Browse, or save the scene first.</source>
+        <translation>"%1" ist relativ, aber die Szene hat noch keinen Ordner: Wählen Sie die Datei mit Durchsuchen oder speichern Sie zuerst die Szene.</translation>
     </message>
     <message>
         <source>Cannot read the environment image %1. Choose it again with Browse, or clear the field to use the colour below.</source>
@@ -2024,7 +2043,7 @@
         <translation>Status des Umgebungsbilds</translation>
     </message>
     <message>
-        <source>An infinite plane: the node&apos;s y = 0, facing +Y; move and turn it with the transform. It has no size. In the glTF file other programs (Blender) get a 200 m square in its place.</source>
+        <source>An infinite plane: the node's y = 0, facing +Y; move and turn it with the transform. It has no size. In the glTF file other programs (Blender) get a 200 m square in its place.</source>
         <translation>Eine unendliche Ebene: y = 0 des Knotens, nach +Y gerichtet; mit der Transformation verschieben und drehen. Sie hat keine Größe. In der glTF-Datei erhalten andere Programme (Blender) an ihrer Stelle ein Quadrat von 200 m.</translation>
     </message>
     <message>
@@ -2136,15 +2155,12 @@
         <translation>Bearbeiten</translation>
     </message>
     <message>
-        <source>Show this primitive&apos;s material below</source>
+        <source>Show this primitive's material below</source>
         <translation>Das Material dieses Primitivs unten zeigen</translation>
     </message>
     <message numerus="yes">
         <source>Primitive %1 (%n triangles)</source>
-        <translation>
-            <numerusform>Primitiv %1 (%n Dreieck)</numerusform>
-            <numerusform>Primitiv %1 (%n Dreiecke)</numerusform>
-        </translation>
+        <translation><numerusform>Primitiv %1 (%n Dreieck)</numerusform><numerusform>Primitiv %1 (%n Dreiecke)</numerusform></translation>
     </message>
     <message>
         <source>Material</source>
@@ -2157,6 +2173,10 @@
     <message>
         <source>Material %1</source>
         <translation>Material %1</translation>
+    </message>
+    <message>
+        <source>Motion blur shutter (frames, 0 = off)</source>
+        <translation>Verschluss Bewegungsunschärfe (Bilder, 0 = aus)</translation>
     </message>
 </context>
 <context>
@@ -2258,6 +2278,25 @@ R %3  G %4  B %5 (linear)</translation>
     </message>
 </context>
 <context>
+    <name>glint::editor::SceneTemplates</name>
+    <message>
+        <source>Studio</source>
+        <translation>Studio</translation>
+    </message>
+    <message>
+        <source>Empty</source>
+        <translation>Leer</translation>
+    </message>
+    <message>
+        <source>Sun and sky</source>
+        <translation>Sonne und Himmel</translation>
+    </message>
+    <message>
+        <source>Cornell box</source>
+        <translation>Cornell-Box</translation>
+    </message>
+</context>
+<context>
     <name>glint::editor::TimeRuler</name>
     <message>
         <source>Time ruler</source>
@@ -2337,6 +2376,38 @@ R %3  G %4  B %5 (linear)</translation>
     <message>
         <source>Linear</source>
         <translation>Linear</translation>
+    </message>
+    <message>
+        <source>Key transform</source>
+        <translation>Transformation verschlüsseln</translation>
+    </message>
+    <message>
+        <source>Key the selected nodes' position, rotation and scale at the current time (K)</source>
+        <translation>Setzt einen Schlüssel für Position, Drehung und Skalierung der ausgewählten Knoten zur aktuellen Zeit (K)</translation>
+    </message>
+    <message>
+        <source>Copy key</source>
+        <translation>Schlüssel kopieren</translation>
+    </message>
+    <message>
+        <source>Paste key</source>
+        <translation>Schlüssel einfügen</translation>
+    </message>
+    <message>
+        <source>Key the selected nodes at the current time with the copied key's transform</source>
+        <translation>Setzt für die ausgewählten Knoten zur aktuellen Zeit einen Schlüssel mit der Transformation des kopierten Schlüssels</translation>
+    </message>
+    <message>
+        <source>Interpolation</source>
+        <translation>Interpolation</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Stufen</translation>
+    </message>
+    <message>
+        <source>Cubic</source>
+        <translation>Kubisch</translation>
     </message>
 </context>
 <context>
@@ -2427,15 +2498,15 @@ R %3  G %4  B %5 (linear)</translation>
     </message>
     <message>
         <source>Set render region</source>
-        <translation>Render-Bereich festlegen</translation>
+        <translation>Renderbereich festlegen</translation>
     </message>
     <message>
         <source>Drag a rectangle: the path tracer renders only inside it</source>
-        <translation>Ziehen Sie ein Rechteck: der Pathtracer rendert nur darin</translation>
+        <translation>Ziehen Sie ein Rechteck auf: der Pathtracer rendert nur darin</translation>
     </message>
     <message>
         <source>Clear render region</source>
-        <translation>Render-Bereich entfernen</translation>
+        <translation>Renderbereich löschen</translation>
     </message>
     <message>
         <source>Compare A | B</source>
@@ -2443,19 +2514,19 @@ R %3  G %4  B %5 (linear)</translation>
     </message>
     <message>
         <source>Pick focus distance</source>
-        <translation>Fokusdistanz wählen</translation>
+        <translation>Fokusabstand wählen</translation>
     </message>
     <message>
         <source>Click a surface: the camera looked through focuses at its depth</source>
-        <translation>Klicken Sie auf eine Oberfläche: die Kamera, durch die Sie schauen, fokussiert auf deren Tiefe</translation>
+        <translation>Klicken Sie auf eine Fläche: die Kamera, durch die Sie schauen, fokussiert auf ihre Tiefe</translation>
     </message>
     <message>
         <source>Pick focus works through a scene camera: select one and look through it (0) first.</source>
-        <translation>Fokus per Klick wirkt durch eine Szenenkamera: zuerst eine auswählen und durch sie schauen (0).</translation>
+        <translation>Fokuswahl wirkt durch eine Szenenkamera: wählen Sie zuerst eine aus und schauen Sie hindurch (0).</translation>
     </message>
     <message>
         <source>Click the surface to focus on (Esc cancels).</source>
-        <translation>Klicken Sie auf die Oberfläche, auf die fokussiert werden soll (Esc bricht ab).</translation>
+        <translation>Klicken Sie auf die Fläche, die scharf sein soll (Esc bricht ab).</translation>
     </message>
     <message>
         <source>Pause viewport rendering</source>
@@ -2500,6 +2571,14 @@ R %3  G %4  B %5 (linear)</translation>
     <message>
         <source>%1  |  %2 ms/frame</source>
         <translation>%1  |  %2 ms/Bild</translation>
+    </message>
+    <message>
+        <source>Local axes</source>
+        <translation>Lokale Achsen</translation>
+    </message>
+    <message>
+        <source>Move and rotate along the selected node's own axes (off: the world's)</source>
+        <translation>Entlang der eigenen Achsen des ausgewählten Knotens verschieben und drehen (aus: der Welt)</translation>
     </message>
 </context>
 </TS>

@@ -1,23 +1,22 @@
-<?xml version="1.0" encoding="utf-8"?>
-<!DOCTYPE TS>
+<?xml version='1.0' encoding='utf-8'?>
 <TS version="2.1" language="es" sourcelanguage="en">
 <context>
     <name>FocusPick</name>
     <message>
         <source>Pick focus works through a scene camera: select one and look through it (0) first.</source>
-        <translation>El enfoque por clic funciona a través de una cámara de la escena: selecciona una y mira a través de ella (0) primero.</translation>
+        <translation>Elegir el enfoque funciona a través de una cámara de la escena: seleccione una y mire a través de ella (0) primero.</translation>
     </message>
     <message>
         <source>Pick focus: %1 follows its camera path, whose keys set the focus; edit them in the timeline.</source>
-        <translation>Enfoque por clic: %1 sigue su trayectoria de cámara, cuyas claves fijan el enfoque; edítalas en la línea de tiempo.</translation>
+        <translation>Elegir enfoque: %1 sigue su trayectoria, cuyas claves fijan el enfoque; edítelas en la línea de tiempo.</translation>
     </message>
     <message>
         <source>Pick focus: nothing under the cursor, the focus distance is unchanged.</source>
-        <translation>Enfoque por clic: nada bajo el cursor, la distancia de enfoque no cambia.</translation>
+        <translation>Elegir enfoque: nada bajo el cursor, la distancia de enfoque no cambia.</translation>
     </message>
     <message>
         <source>Pick focus: the surface is behind the camera, the focus distance is unchanged.</source>
-        <translation>Enfoque por clic: la superficie está detrás de la cámara, la distancia de enfoque no cambia.</translation>
+        <translation>Elegir enfoque: la superficie está detrás de la cámara, la distancia de enfoque no cambia.</translation>
     </message>
     <message>
         <source>Focus distance of %1: %2 m (%3)</source>
@@ -84,6 +83,14 @@
     <message>
         <source>Load texture %1</source>
         <translation>Cargar textura %1</translation>
+    </message>
+    <message>
+        <source>Key transform</source>
+        <translation>Clave de transformación</translation>
+    </message>
+    <message>
+        <source>Paste key</source>
+        <translation>Pegar clave</translation>
     </message>
 </context>
 <context>
@@ -434,6 +441,10 @@
         <source>Assign material</source>
         <translation>Asignar material</translation>
     </message>
+    <message>
+        <source>Change motion blur</source>
+        <translation>Cambiar desenfoque de movimiento</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Configurations</name>
@@ -727,10 +738,7 @@
     </message>
     <message numerus="yes">
         <source>%n nodes selected</source>
-        <translation>
-            <numerusform>%n nodo seleccionado</numerusform>
-            <numerusform>%n nodos seleccionados</numerusform>
-        </translation>
+        <translation><numerusform>%n nodo seleccionado</numerusform><numerusform>%n nodos seleccionados</numerusform></translation>
     </message>
     <message>
         <source>Selection</source>
@@ -749,8 +757,8 @@
         <translation>Cambios sin guardar</translation>
     </message>
     <message>
-        <source>&quot;%1&quot; has unsaved changes. Save them first?</source>
-        <translation>&quot;%1&quot; tiene cambios sin guardar. ¿Guardarlos primero?</translation>
+        <source>"%1" has unsaved changes. Save them first?</source>
+        <translation>"%1" tiene cambios sin guardar. ¿Guardarlos primero?</translation>
     </message>
     <message>
         <source>Cannot open %1: %2</source>
@@ -1008,17 +1016,11 @@
     </message>
     <message numerus="yes">
         <source>%n nodes</source>
-        <translation>
-            <numerusform>%n nodo</numerusform>
-            <numerusform>%n nodos</numerusform>
-        </translation>
+        <translation><numerusform>%n nodo</numerusform><numerusform>%n nodos</numerusform></translation>
     </message>
     <message numerus="yes">
         <source>%n triangles</source>
-        <translation>
-            <numerusform>%n triángulo</numerusform>
-            <numerusform>%n triángulos</numerusform>
-        </translation>
+        <translation><numerusform>%n triángulo</numerusform><numerusform>%n triángulos</numerusform></translation>
     </message>
     <message>
         <source>%1 (autosaved %2)</source>
@@ -1042,10 +1044,7 @@
     </message>
     <message numerus="yes">
         <source>%n more in File &gt; Recover.</source>
-        <translation>
-            <numerusform>%n más en Archivo &gt; Recuperar.</numerusform>
-            <numerusform>%n más en Archivo &gt; Recuperar.</numerusform>
-        </translation>
+        <translation><numerusform>%n más en Archivo &gt; Recuperar.</numerusform><numerusform>%n más en Archivo &gt; Recuperar.</numerusform></translation>
     </message>
     <message>
         <source>Re&amp;cover</source>
@@ -1093,6 +1092,14 @@
         <source>Materials</source>
         <translation>Materiales</translation>
     </message>
+    <message>
+        <source>New scene</source>
+        <translation>Nueva escena</translation>
+    </message>
+    <message>
+        <source>New from &amp;template</source>
+        <translation>Nueva desde &amp;plantilla</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::MaterialListModel</name>
@@ -1108,10 +1115,7 @@
     </message>
     <message numerus="yes">
         <source>%n users</source>
-        <translation>
-            <numerusform>%n usuario</numerusform>
-            <numerusform>%n usuarios</numerusform>
-        </translation>
+        <translation><numerusform>%n usuario</numerusform><numerusform>%n usuarios</numerusform></translation>
     </message>
     <message>
         <source>%1: no node uses it (Delete unused removes it)</source>
@@ -1217,14 +1221,18 @@
     </message>
     <message numerus="yes">
         <source>%n unused materials removed.</source>
-        <translation>
-            <numerusform>%n material sin usar eliminado.</numerusform>
-            <numerusform>%n materiales sin usar eliminados.</numerusform>
-        </translation>
+        <translation><numerusform>%n material sin usar eliminado.</numerusform><numerusform>%n materiales sin usar eliminados.</numerusform></translation>
     </message>
     <message>
         <source>Select a material in the list first.</source>
         <translation>Seleccione primero un material en la lista.</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::NodeKeyTracks</name>
+    <message>
+        <source>Node keys</source>
+        <translation>Claves de nodos</translation>
     </message>
 </context>
 <context>
@@ -1276,6 +1284,10 @@
     <message>
         <source>Camera %1</source>
         <translation>Cámara %1</translation>
+    </message>
+    <message>
+        <source>Area light %1</source>
+        <translation>Luz de área %1</translation>
     </message>
 </context>
 <context>
@@ -1486,8 +1498,8 @@
         <translation>Conflicto de atajos</translation>
     </message>
     <message>
-        <source>%1 is used by both &quot;%2&quot; and &quot;%3&quot;.</source>
-        <translation>%1 lo usan tanto &quot;%2&quot; como &quot;%3&quot;.</translation>
+        <source>%1 is used by both "%2" and "%3".</source>
+        <translation>%1 lo usan tanto "%2" como "%3".</translation>
     </message>
     <message>
         <source>No limit</source>
@@ -1498,7 +1510,7 @@
         <translation>Muestras de la vista</translation>
     </message>
     <message>
-        <source>The viewport stops adding samples per pixel here (renders use the Scene panel&apos;s samples)</source>
+        <source>The viewport stops adding samples per pixel here (renders use the Scene panel's samples)</source>
         <translation>La vista deja de añadir muestras por píxel aquí (los renders usan las muestras del panel Escena)</translation>
     </message>
     <message>
@@ -1523,6 +1535,13 @@
     <message>
         <source>Select a node in the outliner or the viewport to edit it.</source>
         <translation>Seleccione un nodo en el esquema o en la vista para editarlo.</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::PropertyEdits</name>
+    <message>
+        <source>Edit %1 nodes</source>
+        <translation>Editar %1 nodos</translation>
     </message>
 </context>
 <context>
@@ -1940,16 +1959,16 @@
         <translation>Inicio de la línea de tiempo (s)</translation>
     </message>
     <message>
-        <source>Timeline end (s, 0 = the animation&apos;s)</source>
-        <translation>Fin de la línea de tiempo (s, 0 = el de la animación)</translation>
+        <source>Timeline end (s, 0 = the animation's)</source>
+        <translation>Fin de la línea de tiempo (s, 0 = la de la animación)</translation>
     </message>
     <message>
         <source>Frames per second</source>
         <translation>Fotogramas por segundo</translation>
     </message>
     <message>
-        <source>Frames per second must be a positive number or a ratio such as 24000/1001, not &quot;%1&quot;.</source>
-        <translation>Los fotogramas por segundo deben ser un número positivo o una proporción como 24000/1001, no &quot;%1&quot;.</translation>
+        <source>Frames per second must be a positive number or a ratio such as 24000/1001, not "%1".</source>
+        <translation>Los fotogramas por segundo deben ser un número positivo o una razón como 24000/1001, no "%1".</translation>
     </message>
     <message>
         <source>Real-time reconstruction</source>
@@ -1961,7 +1980,7 @@
     </message>
     <message>
         <source>TAA clip box (std. deviations)</source>
-        <translation>Caja de recorte TAA (desv. estándar)</translation>
+        <translation>Caja de recorte TAA (desviaciones típ.)</translation>
     </message>
     <message>
         <source>TAA perceptual blend</source>
@@ -1993,7 +2012,7 @@
     </message>
     <message>
         <source>SVGF firefly ratio</source>
-        <translation>Proporción de luciérnagas de SVGF</translation>
+        <translation>Razón de luciérnagas de SVGF</translation>
     </message>
     <message>
         <source>TAA history clipping</source>
@@ -2005,15 +2024,15 @@
     </message>
     <message>
         <source>Min/max clamp</source>
-        <translation>Limitación mín./máx.</translation>
+        <translation>Limitación mín/máx</translation>
     </message>
     <message>
         <source>None (ghosts)</source>
-        <translation>Ninguno (estelas)</translation>
+        <translation>Ninguno (fantasmas)</translation>
     </message>
     <message>
-        <source>&quot;%1&quot; is relative, but the scene has no folder yet: choose the file with Browse, or save the scene first.</source>
-        <translation>&quot;%1&quot; es relativo, pero la escena aún no tiene carpeta: elige el archivo con Examinar o guarda primero la escena.</translation>
+        <source>"%1" is relative, but the scene has no folder yet: choose the file with Browse, or save the scene first.</source>
+        <translation>"%1" es relativo, pero la escena aún no tiene carpeta: elige el archivo con Examinar o guarda primero la escena.</translation>
     </message>
     <message>
         <source>Cannot read the environment image %1. Choose it again with Browse, or clear the field to use the colour below.</source>
@@ -2024,7 +2043,7 @@
         <translation>Estado de la imagen de entorno</translation>
     </message>
     <message>
-        <source>An infinite plane: the node&apos;s y = 0, facing +Y; move and turn it with the transform. It has no size. In the glTF file other programs (Blender) get a 200 m square in its place.</source>
+        <source>An infinite plane: the node's y = 0, facing +Y; move and turn it with the transform. It has no size. In the glTF file other programs (Blender) get a 200 m square in its place.</source>
         <translation>Un plano infinito: y = 0 del nodo, orientado hacia +Y; muévelo y gíralo con la transformación. No tiene tamaño. En el archivo glTF, otros programas (Blender) reciben en su lugar un cuadrado de 200 m.</translation>
     </message>
     <message>
@@ -2136,15 +2155,12 @@
         <translation>Editar</translation>
     </message>
     <message>
-        <source>Show this primitive&apos;s material below</source>
+        <source>Show this primitive's material below</source>
         <translation>Mostrar abajo el material de esta primitiva</translation>
     </message>
     <message numerus="yes">
         <source>Primitive %1 (%n triangles)</source>
-        <translation>
-            <numerusform>Primitiva %1 (%n triángulo)</numerusform>
-            <numerusform>Primitiva %1 (%n triángulos)</numerusform>
-        </translation>
+        <translation><numerusform>Primitiva %1 (%n triángulo)</numerusform><numerusform>Primitiva %1 (%n triángulos)</numerusform></translation>
     </message>
     <message>
         <source>Material</source>
@@ -2157,6 +2173,10 @@
     <message>
         <source>Material %1</source>
         <translation>Material %1</translation>
+    </message>
+    <message>
+        <source>Motion blur shutter (frames, 0 = off)</source>
+        <translation>Obturador de desenfoque de movimiento (fotogramas, 0 = apagado)</translation>
     </message>
 </context>
 <context>
@@ -2258,6 +2278,25 @@ R %3  G %4  B %5 (lineal)</translation>
     </message>
 </context>
 <context>
+    <name>glint::editor::SceneTemplates</name>
+    <message>
+        <source>Studio</source>
+        <translation>Estudio</translation>
+    </message>
+    <message>
+        <source>Empty</source>
+        <translation>Vacía</translation>
+    </message>
+    <message>
+        <source>Sun and sky</source>
+        <translation>Sol y cielo</translation>
+    </message>
+    <message>
+        <source>Cornell box</source>
+        <translation>Caja de Cornell</translation>
+    </message>
+</context>
+<context>
     <name>glint::editor::TimeRuler</name>
     <message>
         <source>Time ruler</source>
@@ -2338,6 +2377,38 @@ R %3  G %4  B %5 (lineal)</translation>
         <source>Linear</source>
         <translation>Lineal</translation>
     </message>
+    <message>
+        <source>Key transform</source>
+        <translation>Clave de transformación</translation>
+    </message>
+    <message>
+        <source>Key the selected nodes' position, rotation and scale at the current time (K)</source>
+        <translation>Inserta una clave de posición, rotación y escala de los nodos seleccionados en el instante actual (K)</translation>
+    </message>
+    <message>
+        <source>Copy key</source>
+        <translation>Copiar clave</translation>
+    </message>
+    <message>
+        <source>Paste key</source>
+        <translation>Pegar clave</translation>
+    </message>
+    <message>
+        <source>Key the selected nodes at the current time with the copied key's transform</source>
+        <translation>Inserta una clave en los nodos seleccionados en el instante actual con la transformación de la clave copiada</translation>
+    </message>
+    <message>
+        <source>Interpolation</source>
+        <translation>Interpolación</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Escalón</translation>
+    </message>
+    <message>
+        <source>Cubic</source>
+        <translation>Cúbica</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Viewport</name>
@@ -2383,7 +2454,7 @@ R %3  G %4  B %5 (lineal)</translation>
     </message>
     <message>
         <source>BVH traversal cost (heat map)</source>
-        <translation>Coste de recorrido del BVH (mapa de calor)</translation>
+        <translation>Coste de recorrido BVH (mapa de calor)</translation>
     </message>
     <message>
         <source>Viewport</source>
@@ -2427,15 +2498,15 @@ R %3  G %4  B %5 (lineal)</translation>
     </message>
     <message>
         <source>Set render region</source>
-        <translation>Definir región de render</translation>
+        <translation>Fijar región de render</translation>
     </message>
     <message>
         <source>Drag a rectangle: the path tracer renders only inside it</source>
-        <translation>Arrastra un rectángulo: el path tracer solo renderiza dentro de él</translation>
+        <translation>Arrastre un rectángulo: el trazador de caminos solo renderiza dentro</translation>
     </message>
     <message>
         <source>Clear render region</source>
-        <translation>Quitar la región de render</translation>
+        <translation>Borrar región de render</translation>
     </message>
     <message>
         <source>Compare A | B</source>
@@ -2443,19 +2514,19 @@ R %3  G %4  B %5 (lineal)</translation>
     </message>
     <message>
         <source>Pick focus distance</source>
-        <translation>Elegir la distancia de enfoque</translation>
+        <translation>Elegir distancia de enfoque</translation>
     </message>
     <message>
         <source>Click a surface: the camera looked through focuses at its depth</source>
-        <translation>Haz clic en una superficie: la cámara a través de la que miras enfoca a su profundidad</translation>
+        <translation>Haga clic en una superficie: la cámara a través de la que mira enfoca a su profundidad</translation>
     </message>
     <message>
         <source>Pick focus works through a scene camera: select one and look through it (0) first.</source>
-        <translation>El enfoque por clic funciona a través de una cámara de la escena: selecciona una y mira a través de ella (0) primero.</translation>
+        <translation>Elegir el enfoque funciona a través de una cámara de la escena: seleccione una y mire a través de ella (0) primero.</translation>
     </message>
     <message>
         <source>Click the surface to focus on (Esc cancels).</source>
-        <translation>Haz clic en la superficie que quieres enfocar (Esc cancela).</translation>
+        <translation>Haga clic en la superficie que enfocar (Esc cancela).</translation>
     </message>
     <message>
         <source>Pause viewport rendering</source>
@@ -2500,6 +2571,14 @@ R %3  G %4  B %5 (lineal)</translation>
     <message>
         <source>%1  |  %2 ms/frame</source>
         <translation>%1  |  %2 ms/fotograma</translation>
+    </message>
+    <message>
+        <source>Local axes</source>
+        <translation>Ejes locales</translation>
+    </message>
+    <message>
+        <source>Move and rotate along the selected node's own axes (off: the world's)</source>
+        <translation>Mover y girar según los ejes propios del nodo seleccionado (apagado: los del mundo)</translation>
     </message>
 </context>
 </TS>

@@ -1,23 +1,22 @@
-<?xml version="1.0" encoding="utf-8"?>
-<!DOCTYPE TS>
+<?xml version='1.0' encoding='utf-8'?>
 <TS version="2.1" language="fr" sourcelanguage="en">
 <context>
     <name>FocusPick</name>
     <message>
         <source>Pick focus works through a scene camera: select one and look through it (0) first.</source>
-        <translation>La mise au point par clic passe par une caméra de la scène : sélectionnez-en une et regardez à travers (0) d&apos;abord.</translation>
+        <translation>Le choix de la mise au point passe par une caméra de la scène : sélectionnez-en une et regardez à travers (0) d'abord.</translation>
     </message>
     <message>
         <source>Pick focus: %1 follows its camera path, whose keys set the focus; edit them in the timeline.</source>
-        <translation>Mise au point par clic : %1 suit son trajet de caméra, dont les clés fixent la mise au point ; modifiez-les dans la timeline.</translation>
+        <translation>Choix de la mise au point : %1 suit son trajet, dont les clés fixent la mise au point ; modifiez-les dans la chronologie.</translation>
     </message>
     <message>
         <source>Pick focus: nothing under the cursor, the focus distance is unchanged.</source>
-        <translation>Mise au point par clic : rien sous le curseur, la distance de mise au point reste inchangée.</translation>
+        <translation>Choix de la mise au point : rien sous le curseur, la distance reste inchangée.</translation>
     </message>
     <message>
         <source>Pick focus: the surface is behind the camera, the focus distance is unchanged.</source>
-        <translation>Mise au point par clic : la surface est derrière la caméra, la distance de mise au point reste inchangée.</translation>
+        <translation>Choix de la mise au point : la surface est derrière la caméra, la distance reste inchangée.</translation>
     </message>
     <message>
         <source>Focus distance of %1: %2 m (%3)</source>
@@ -47,11 +46,11 @@
     </message>
     <message>
         <source>The material no longer exists.</source>
-        <translation>Le matériau n&apos;existe plus.</translation>
+        <translation>Le matériau n'existe plus.</translation>
     </message>
     <message>
         <source>A material needs a name.</source>
-        <translation>Un matériau a besoin d&apos;un nom.</translation>
+        <translation>Un matériau a besoin d'un nom.</translation>
     </message>
     <message>
         <source>Delete unused materials</source>
@@ -67,11 +66,11 @@
     </message>
     <message>
         <source>The mesh no longer exists.</source>
-        <translation>Le maillage n&apos;existe plus.</translation>
+        <translation>Le maillage n'existe plus.</translation>
     </message>
     <message>
         <source>%1 does not exist.</source>
-        <translation>%1 n&apos;existe pas.</translation>
+        <translation>%1 n'existe pas.</translation>
     </message>
     <message>
         <source>%1 cannot be read: %2</source>
@@ -84,6 +83,14 @@
     <message>
         <source>Load texture %1</source>
         <translation>Charger la texture %1</translation>
+    </message>
+    <message>
+        <source>Key transform</source>
+        <translation>Clé de transformation</translation>
+    </message>
+    <message>
+        <source>Paste key</source>
+        <translation>Coller la clé</translation>
     </message>
 </context>
 <context>
@@ -208,7 +215,7 @@
     </message>
     <message>
         <source>Scale</source>
-        <translation>Mettre à l&apos;échelle</translation>
+        <translation>Mettre à l'échelle</translation>
     </message>
     <message>
         <source>Transform</source>
@@ -220,7 +227,7 @@
     </message>
     <message>
         <source>Change image size</source>
-        <translation>Modifier la taille de l&apos;image</translation>
+        <translation>Modifier la taille de l'image</translation>
     </message>
     <message>
         <source>Change samples per pixel</source>
@@ -236,7 +243,7 @@
     </message>
     <message>
         <source>Change exposure</source>
-        <translation>Modifier l&apos;exposition</translation>
+        <translation>Modifier l'exposition</translation>
     </message>
     <message>
         <source>Change tonemapper</source>
@@ -256,19 +263,19 @@
     </message>
     <message>
         <source>Change environment image</source>
-        <translation>Modifier l&apos;image d&apos;environnement</translation>
+        <translation>Modifier l'image d'environnement</translation>
     </message>
     <message>
         <source>Change environment colour</source>
-        <translation>Modifier la couleur d&apos;environnement</translation>
+        <translation>Modifier la couleur d'environnement</translation>
     </message>
     <message>
         <source>Change environment intensity</source>
-        <translation>Modifier l&apos;intensité d&apos;environnement</translation>
+        <translation>Modifier l'intensité d'environnement</translation>
     </message>
     <message>
         <source>Rotate environment</source>
-        <translation>Tourner l&apos;environnement</translation>
+        <translation>Tourner l'environnement</translation>
     </message>
     <message>
         <source>Change active camera</source>
@@ -300,7 +307,7 @@
     </message>
     <message>
         <source>Change light intensity</source>
-        <translation>Modifier l&apos;intensité de la lumière</translation>
+        <translation>Modifier l'intensité de la lumière</translation>
     </message>
     <message>
         <source>Change light range</source>
@@ -328,7 +335,7 @@
     </message>
     <message>
         <source>Change aperture</source>
-        <translation>Modifier l&apos;ouverture</translation>
+        <translation>Modifier l'ouverture</translation>
     </message>
     <message>
         <source>Change focus distance</source>
@@ -368,7 +375,7 @@
     </message>
     <message>
         <source>Change opacity</source>
-        <translation>Modifier l&apos;opacité</translation>
+        <translation>Modifier l'opacité</translation>
     </message>
     <message>
         <source>Change metallic</source>
@@ -380,11 +387,11 @@
     </message>
     <message>
         <source>Change emission</source>
-        <translation>Modifier l&apos;émission</translation>
+        <translation>Modifier l'émission</translation>
     </message>
     <message>
         <source>Change emission strength</source>
-        <translation>Modifier la force d&apos;émission</translation>
+        <translation>Modifier la force d'émission</translation>
     </message>
     <message>
         <source>Change specular</source>
@@ -396,7 +403,7 @@
     </message>
     <message>
         <source>Change index of refraction</source>
-        <translation>Modifier l&apos;indice de réfraction</translation>
+        <translation>Modifier l'indice de réfraction</translation>
     </message>
     <message>
         <source>Change volume</source>
@@ -434,6 +441,10 @@
         <source>Assign material</source>
         <translation>Affecter le matériau</translation>
     </message>
+    <message>
+        <source>Change motion blur</source>
+        <translation>Modifier le flou de mouvement</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Configurations</name>
@@ -466,7 +477,7 @@
     <name>glint::editor::Document</name>
     <message>
         <source>The scene has no file name yet: use Save As.</source>
-        <translation>La scène n&apos;a pas encore de nom de fichier : utilisez Enregistrer sous.</translation>
+        <translation>La scène n'a pas encore de nom de fichier : utilisez Enregistrer sous.</translation>
     </message>
     <message>
         <source>Import %1</source>
@@ -481,7 +492,7 @@
     <name>glint::editor::EditOperations</name>
     <message>
         <source>Nothing is selected.</source>
-        <translation>Rien n&apos;est sélectionné.</translation>
+        <translation>Rien n'est sélectionné.</translation>
     </message>
     <message>
         <source>Delete</source>
@@ -493,7 +504,7 @@
     </message>
     <message>
         <source>The node no longer exists.</source>
-        <translation>Le nœud n&apos;existe plus.</translation>
+        <translation>Le nœud n'existe plus.</translation>
     </message>
     <message>
         <source>A node cannot be moved into itself or its own children.</source>
@@ -622,7 +633,7 @@
     <name>glint::editor::HistoryPanel</name>
     <message>
         <source>Undo history</source>
-        <translation>Historique d&apos;annulation</translation>
+        <translation>Historique d'annulation</translation>
     </message>
 </context>
 <context>
@@ -691,7 +702,7 @@
     </message>
     <message>
         <source>The viewport is not available in this build.</source>
-        <translation>La vue n&apos;est pas disponible dans cette version.</translation>
+        <translation>La vue n'est pas disponible dans cette version.</translation>
     </message>
     <message>
         <source>Viewport</source>
@@ -703,7 +714,7 @@
     </message>
     <message>
         <source>Undo history</source>
-        <translation>Historique d&apos;annulation</translation>
+        <translation>Historique d'annulation</translation>
     </message>
     <message>
         <source>Properties</source>
@@ -727,10 +738,7 @@
     </message>
     <message numerus="yes">
         <source>%n nodes selected</source>
-        <translation>
-            <numerusform>%n nœud sélectionné</numerusform>
-            <numerusform>%n nœuds sélectionnés</numerusform>
-        </translation>
+        <translation><numerusform>%n nœud sélectionné</numerusform><numerusform>%n nœuds sélectionnés</numerusform></translation>
     </message>
     <message>
         <source>Selection</source>
@@ -749,12 +757,12 @@
         <translation>Modifications non enregistrées</translation>
     </message>
     <message>
-        <source>&quot;%1&quot; has unsaved changes. Save them first?</source>
-        <translation>« %1 » a des modifications non enregistrées. Les enregistrer d&apos;abord ?</translation>
+        <source>"%1" has unsaved changes. Save them first?</source>
+        <translation>« %1 » a des modifications non enregistrées. Les enregistrer d'abord ?</translation>
     </message>
     <message>
         <source>Cannot open %1: %2</source>
-        <translation>Impossible d&apos;ouvrir %1 : %2</translation>
+        <translation>Impossible d'ouvrir %1 : %2</translation>
     </message>
     <message>
         <source>Open</source>
@@ -766,7 +774,7 @@
     </message>
     <message>
         <source>Cannot import %1: %2</source>
-        <translation>Impossible d&apos;importer %1 : %2</translation>
+        <translation>Impossible d'importer %1 : %2</translation>
     </message>
     <message>
         <source>Imported %1</source>
@@ -774,7 +782,7 @@
     </message>
     <message>
         <source>Cannot save: %1</source>
-        <translation>Impossible d&apos;enregistrer : %1</translation>
+        <translation>Impossible d'enregistrer : %1</translation>
     </message>
     <message>
         <source>Saved %1</source>
@@ -790,7 +798,7 @@
     </message>
     <message>
         <source>Cannot save %1: %2</source>
-        <translation>Impossible d&apos;enregistrer %1 : %2</translation>
+        <translation>Impossible d'enregistrer %1 : %2</translation>
     </message>
     <message>
         <source>an untitled scene</source>
@@ -934,7 +942,7 @@
     </message>
     <message>
         <source>Main toolbar</source>
-        <translation>Barre d&apos;outils principale</translation>
+        <translation>Barre d'outils principale</translation>
     </message>
     <message>
         <source>View</source>
@@ -942,7 +950,7 @@
     </message>
     <message>
         <source>View toolbar</source>
-        <translation>Barre d&apos;outils de la vue</translation>
+        <translation>Barre d'outils de la vue</translation>
     </message>
     <message>
         <source>Clear the list</source>
@@ -978,7 +986,7 @@
     </message>
     <message>
         <source>Recovering an untitled scene</source>
-        <translation>Récupération d&apos;une scène sans titre</translation>
+        <translation>Récupération d'une scène sans titre</translation>
     </message>
     <message>
         <source>Recovering %1</source>
@@ -987,7 +995,7 @@
     <message>
         <source>Cannot open %1:
 %2</source>
-        <translation>Impossible d&apos;ouvrir %1 :
+        <translation>Impossible d'ouvrir %1 :
 %2</translation>
     </message>
     <message>
@@ -1000,7 +1008,7 @@
     </message>
     <message>
         <source>This display gives no OpenGL 4.1 core context, so the editor opens without its viewport; `glint render` renders headless (EGL).</source>
-        <translation>Cet affichage ne fournit pas de contexte OpenGL 4.1 core : l&apos;éditeur s&apos;ouvre donc sans sa vue ; `glint render` effectue le rendu sans affichage (EGL).</translation>
+        <translation>Cet affichage ne fournit pas de contexte OpenGL 4.1 core : l'éditeur s'ouvre donc sans sa vue ; `glint render` effectue le rendu sans affichage (EGL).</translation>
     </message>
     <message>
         <source>%1, %2, configuration: %3</source>
@@ -1008,17 +1016,11 @@
     </message>
     <message numerus="yes">
         <source>%n nodes</source>
-        <translation>
-            <numerusform>%n nœud</numerusform>
-            <numerusform>%n nœuds</numerusform>
-        </translation>
+        <translation><numerusform>%n nœud</numerusform><numerusform>%n nœuds</numerusform></translation>
     </message>
     <message numerus="yes">
         <source>%n triangles</source>
-        <translation>
-            <numerusform>%n triangle</numerusform>
-            <numerusform>%n triangles</numerusform>
-        </translation>
+        <translation><numerusform>%n triangle</numerusform><numerusform>%n triangles</numerusform></translation>
     </message>
     <message>
         <source>%1 (autosaved %2)</source>
@@ -1034,18 +1036,15 @@
     </message>
     <message>
         <source>Glint did not close normally: the copy of %1 autosaved at %2 is newer than the file.</source>
-        <translation>Glint ne s&apos;est pas fermé normalement : la copie de %1 enregistrée automatiquement à %2 est plus récente que le fichier.</translation>
+        <translation>Glint ne s'est pas fermé normalement : la copie de %1 enregistrée automatiquement à %2 est plus récente que le fichier.</translation>
     </message>
     <message>
         <source>Glint did not close normally: unsaved work on %1 was autosaved at %2.</source>
-        <translation>Glint ne s&apos;est pas fermé normalement : le travail non enregistré sur %1 a été enregistré automatiquement à %2.</translation>
+        <translation>Glint ne s'est pas fermé normalement : le travail non enregistré sur %1 a été enregistré automatiquement à %2.</translation>
     </message>
     <message numerus="yes">
         <source>%n more in File &gt; Recover.</source>
-        <translation>
-            <numerusform>%n autre dans Fichier &gt; Récupérer.</numerusform>
-            <numerusform>%n autres dans Fichier &gt; Récupérer.</numerusform>
-        </translation>
+        <translation><numerusform>%n autre dans Fichier &gt; Récupérer.</numerusform><numerusform>%n autres dans Fichier &gt; Récupérer.</numerusform></translation>
     </message>
     <message>
         <source>Re&amp;cover</source>
@@ -1061,11 +1060,11 @@
     </message>
     <message>
         <source>%1 is in no format Glint imports (glTF, OBJ, PLY, STL, FBX, DAE, 3DS).</source>
-        <translation>%1 n&apos;est dans aucun format que Glint importe (glTF, OBJ, PLY, STL, FBX, DAE, 3DS).</translation>
+        <translation>%1 n'est dans aucun format que Glint importe (glTF, OBJ, PLY, STL, FBX, DAE, 3DS).</translation>
     </message>
     <message>
         <source>%1 ends too early: the file is damaged or was not copied completely.</source>
-        <translation>%1 se termine trop tôt : le fichier est endommagé ou n&apos;a pas été copié entièrement.</translation>
+        <translation>%1 se termine trop tôt : le fichier est endommagé ou n'a pas été copié entièrement.</translation>
     </message>
     <message>
         <source>%1 cannot be read.</source>
@@ -1086,12 +1085,20 @@
     <message>
         <source>Cannot import %1:
 %2</source>
-        <translation>Impossible d&apos;importer %1 :
+        <translation>Impossible d'importer %1 :
 %2</translation>
     </message>
     <message>
         <source>Materials</source>
         <translation>Matériaux</translation>
+    </message>
+    <message>
+        <source>New scene</source>
+        <translation>Nouvelle scène</translation>
+    </message>
+    <message>
+        <source>New from &amp;template</source>
+        <translation>Nouveau depuis un &amp;modèle</translation>
     </message>
 </context>
 <context>
@@ -1108,18 +1115,15 @@
     </message>
     <message numerus="yes">
         <source>%n users</source>
-        <translation>
-            <numerusform>%n utilisateur</numerusform>
-            <numerusform>%n utilisateurs</numerusform>
-        </translation>
+        <translation><numerusform>%n utilisateur</numerusform><numerusform>%n utilisateurs</numerusform></translation>
     </message>
     <message>
         <source>%1: no node uses it (Delete unused removes it)</source>
-        <translation>%1 : aucun nœud ne l&apos;utilise (Supprimer les inutilisés le retire)</translation>
+        <translation>%1 : aucun nœud ne l'utilise (Supprimer les inutilisés le retire)</translation>
     </message>
     <message>
         <source>%1: drag it onto a node in the outliner or the viewport to assign it</source>
-        <translation>%1 : faites-le glisser sur un nœud de l&apos;arborescence ou de la vue pour l&apos;affecter</translation>
+        <translation>%1 : faites-le glisser sur un nœud de l'arborescence ou de la vue pour l'affecter</translation>
     </message>
 </context>
 <context>
@@ -1181,7 +1185,7 @@
     </message>
     <message>
         <source>A new material from a preset</source>
-        <translation>Un nouveau matériau à partir d&apos;un préréglage</translation>
+        <translation>Un nouveau matériau à partir d'un préréglage</translation>
     </message>
     <message>
         <source>Duplicate</source>
@@ -1205,7 +1209,7 @@
     </message>
     <message>
         <source>Remove every material no node uses</source>
-        <translation>Supprime chaque matériau qu&apos;aucun nœud n&apos;utilise</translation>
+        <translation>Supprime chaque matériau qu'aucun nœud n'utilise</translation>
     </message>
     <message>
         <source>Assign to selection</source>
@@ -1213,18 +1217,22 @@
     </message>
     <message>
         <source>Give the selected material to every selected shape and mesh (one undo step)</source>
-        <translation>Affecte le matériau sélectionné à chaque forme et maillage sélectionnés (une seule étape d&apos;annulation)</translation>
+        <translation>Affecte le matériau sélectionné à chaque forme et maillage sélectionnés (une seule étape d'annulation)</translation>
     </message>
     <message numerus="yes">
         <source>%n unused materials removed.</source>
-        <translation>
-            <numerusform>%n matériau inutilisé supprimé.</numerusform>
-            <numerusform>%n matériaux inutilisés supprimés.</numerusform>
-        </translation>
+        <translation><numerusform>%n matériau inutilisé supprimé.</numerusform><numerusform>%n matériaux inutilisés supprimés.</numerusform></translation>
     </message>
     <message>
         <source>Select a material in the list first.</source>
-        <translation>Sélectionnez d&apos;abord un matériau dans la liste.</translation>
+        <translation>Sélectionnez d'abord un matériau dans la liste.</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::NodeKeyTracks</name>
+    <message>
+        <source>Node keys</source>
+        <translation>Clés des nœuds</translation>
     </message>
 </context>
 <context>
@@ -1276,6 +1284,10 @@
     <message>
         <source>Camera %1</source>
         <translation>Caméra %1</translation>
+    </message>
+    <message>
+        <source>Area light %1</source>
+        <translation>Lumière surfacique %1</translation>
     </message>
 </context>
 <context>
@@ -1333,7 +1345,7 @@
     </message>
     <message>
         <source>Outliner filter</source>
-        <translation>Filtre de l&apos;arborescence</translation>
+        <translation>Filtre de l'arborescence</translation>
     </message>
     <message>
         <source>Add</source>
@@ -1486,7 +1498,7 @@
         <translation>Conflit de raccourcis</translation>
     </message>
     <message>
-        <source>%1 is used by both &quot;%2&quot; and &quot;%3&quot;.</source>
+        <source>%1 is used by both "%2" and "%3".</source>
         <translation>%1 est utilisé par « %2 » et « %3 ».</translation>
     </message>
     <message>
@@ -1498,8 +1510,8 @@
         <translation>Échantillons de la vue</translation>
     </message>
     <message>
-        <source>The viewport stops adding samples per pixel here (renders use the Scene panel&apos;s samples)</source>
-        <translation>La vue cesse d&apos;ajouter des échantillons par pixel ici (les rendus utilisent les échantillons du panneau Scène)</translation>
+        <source>The viewport stops adding samples per pixel here (renders use the Scene panel's samples)</source>
+        <translation>La vue cesse d'ajouter des échantillons par pixel ici (les rendus utilisent les échantillons du panneau Scène)</translation>
     </message>
     <message>
         <source>Default</source>
@@ -1522,7 +1534,14 @@
     </message>
     <message>
         <source>Select a node in the outliner or the viewport to edit it.</source>
-        <translation>Sélectionnez un nœud dans l&apos;arborescence ou la vue pour le modifier.</translation>
+        <translation>Sélectionnez un nœud dans l'arborescence ou la vue pour le modifier.</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::PropertyEdits</name>
+    <message>
+        <source>Edit %1 nodes</source>
+        <translation>Modifier %1 nœuds</translation>
     </message>
 </context>
 <context>
@@ -1577,7 +1596,7 @@
     </message>
     <message>
         <source>Occlusion texture</source>
-        <translation>Texture d&apos;occlusion</translation>
+        <translation>Texture d'occlusion</translation>
     </message>
     <message>
         <source>Emission</source>
@@ -1585,11 +1604,11 @@
     </message>
     <message>
         <source>Emission strength</source>
-        <translation>Intensité d&apos;émission</translation>
+        <translation>Intensité d'émission</translation>
     </message>
     <message>
         <source>Emission texture</source>
-        <translation>Texture d&apos;émission</translation>
+        <translation>Texture d'émission</translation>
     </message>
     <message>
         <source>Specular</source>
@@ -1625,15 +1644,15 @@
     </message>
     <message>
         <source>Thickness texture</source>
-        <translation>Texture d&apos;épaisseur</translation>
+        <translation>Texture d'épaisseur</translation>
     </message>
     <message>
         <source>Attenuation distance (m)</source>
-        <translation>Distance d&apos;atténuation (m)</translation>
+        <translation>Distance d'atténuation (m)</translation>
     </message>
     <message>
         <source>Attenuation colour</source>
-        <translation>Couleur d&apos;atténuation</translation>
+        <translation>Couleur d'atténuation</translation>
     </message>
     <message>
         <source>Alpha mode</source>
@@ -1813,7 +1832,7 @@
     </message>
     <message>
         <source>Lens radius (m)</source>
-        <translation>Rayon de l&apos;objectif (m)</translation>
+        <translation>Rayon de l'objectif (m)</translation>
     </message>
     <message>
         <source>Focus distance (m)</source>
@@ -1917,11 +1936,11 @@
     </message>
     <message>
         <source>Choose an HDR environment file</source>
-        <translation>Choisir un fichier d&apos;environnement HDR</translation>
+        <translation>Choisir un fichier d'environnement HDR</translation>
     </message>
     <message>
         <source>Environment map</source>
-        <translation>Carte d&apos;environnement</translation>
+        <translation>Carte d'environnement</translation>
     </message>
     <message>
         <source>HDR images (*.hdr *.exr);;All files (*)</source>
@@ -1929,7 +1948,7 @@
     </message>
     <message>
         <source>Camera and timeline</source>
-        <translation>Caméra et timeline</translation>
+        <translation>Caméra et chronologie</translation>
     </message>
     <message>
         <source>(the first camera)</source>
@@ -1937,19 +1956,19 @@
     </message>
     <message>
         <source>Timeline start (s)</source>
-        <translation>Début de la timeline (s)</translation>
+        <translation>Début de la chronologie (s)</translation>
     </message>
     <message>
-        <source>Timeline end (s, 0 = the animation&apos;s)</source>
-        <translation>Fin de la timeline (s, 0 = celle de l&apos;animation)</translation>
+        <source>Timeline end (s, 0 = the animation's)</source>
+        <translation>Fin de la chronologie (s, 0 = celle de l'animation)</translation>
     </message>
     <message>
         <source>Frames per second</source>
         <translation>Images par seconde</translation>
     </message>
     <message>
-        <source>Frames per second must be a positive number or a ratio such as 24000/1001, not &quot;%1&quot;.</source>
-        <translation>Les images par seconde doivent être un nombre positif ou un rapport comme 24000/1001, pas &quot;%1&quot;.</translation>
+        <source>Frames per second must be a positive number or a ratio such as 24000/1001, not "%1".</source>
+        <translation>Les images par seconde doivent être un nombre positif ou un rapport comme 24000/1001, pas « %1 ».</translation>
     </message>
     <message>
         <source>Real-time reconstruction</source>
@@ -1957,11 +1976,11 @@
     </message>
     <message>
         <source>TAA blend (current frame)</source>
-        <translation>Mélange TAA (image courante)</translation>
+        <translation>Mélange TAA (image actuelle)</translation>
     </message>
     <message>
         <source>TAA clip box (std. deviations)</source>
-        <translation>Boîte d&apos;écrêtage TAA (écarts-types)</translation>
+        <translation>Boîte d'écrêtage TAA (écarts-types)</translation>
     </message>
     <message>
         <source>TAA perceptual blend</source>
@@ -1997,7 +2016,7 @@
     </message>
     <message>
         <source>TAA history clipping</source>
-        <translation>Écrêtage de l&apos;historique TAA</translation>
+        <translation>Écrêtage de l'historique TAA</translation>
     </message>
     <message>
         <source>Variance clip (YCoCg)</source>
@@ -2009,23 +2028,23 @@
     </message>
     <message>
         <source>None (ghosts)</source>
-        <translation>Aucun (images fantômes)</translation>
+        <translation>Aucun (fantômes)</translation>
     </message>
     <message>
-        <source>&quot;%1&quot; is relative, but the scene has no folder yet: choose the file with Browse, or save the scene first.</source>
-        <translation>« %1 » est relatif, mais la scène n&apos;a pas encore de dossier : choisissez le fichier avec Parcourir, ou enregistrez d&apos;abord la scène.</translation>
+        <source>"%1" is relative, but the scene has no folder yet: choose the file with Browse, or save the scene first.</source>
+        <translation>« %1 » est relatif, mais la scène n'a pas encore de dossier : choisissez le fichier avec Parcourir, ou enregistrez d'abord la scène.</translation>
     </message>
     <message>
         <source>Cannot read the environment image %1. Choose it again with Browse, or clear the field to use the colour below.</source>
-        <translation>Impossible de lire l&apos;image d&apos;environnement %1. Choisissez-la de nouveau avec Parcourir, ou videz le champ pour utiliser la couleur ci-dessous.</translation>
+        <translation>Impossible de lire l'image d'environnement %1. Choisissez-la de nouveau avec Parcourir, ou videz le champ pour utiliser la couleur ci-dessous.</translation>
     </message>
     <message>
         <source>Environment image status</source>
-        <translation>État de l&apos;image d&apos;environnement</translation>
+        <translation>État de l'image d'environnement</translation>
     </message>
     <message>
-        <source>An infinite plane: the node&apos;s y = 0, facing +Y; move and turn it with the transform. It has no size. In the glTF file other programs (Blender) get a 200 m square in its place.</source>
-        <translation>Un plan infini : y = 0 du nœud, orienté vers +Y ; déplacez-le et tournez-le avec la transformation. Il n&apos;a pas de taille. Dans le fichier glTF, les autres programmes (Blender) reçoivent à sa place un carré de 200 m.</translation>
+        <source>An infinite plane: the node's y = 0, facing +Y; move and turn it with the transform. It has no size. In the glTF file other programs (Blender) get a 200 m square in its place.</source>
+        <translation>Un plan infini : y = 0 du nœud, orienté vers +Y ; déplacez-le et tournez-le avec la transformation. Il n'a pas de taille. Dans le fichier glTF, les autres programmes (Blender) reçoivent à sa place un carré de 200 m.</translation>
     </message>
     <message>
         <source>Half height (m)</source>
@@ -2053,7 +2072,7 @@
     </message>
     <message>
         <source>Edit sampler</source>
-        <translation>Modifier l&apos;échantillonneur</translation>
+        <translation>Modifier l'échantillonneur</translation>
     </message>
     <message>
         <source>Load texture</source>
@@ -2077,7 +2096,7 @@
     </message>
     <message>
         <source>UV set</source>
-        <translation>Jeu d&apos;UV</translation>
+        <translation>Jeu d'UV</translation>
     </message>
     <message>
         <source>Repeat</source>
@@ -2136,15 +2155,12 @@
         <translation>Modifier</translation>
     </message>
     <message>
-        <source>Show this primitive&apos;s material below</source>
+        <source>Show this primitive's material below</source>
         <translation>Afficher le matériau de cette primitive ci-dessous</translation>
     </message>
     <message numerus="yes">
         <source>Primitive %1 (%n triangles)</source>
-        <translation>
-            <numerusform>Primitive %1 (%n triangle)</numerusform>
-            <numerusform>Primitive %1 (%n triangles)</numerusform>
-        </translation>
+        <translation><numerusform>Primitive %1 (%n triangle)</numerusform><numerusform>Primitive %1 (%n triangles)</numerusform></translation>
     </message>
     <message>
         <source>Material</source>
@@ -2157,6 +2173,10 @@
     <message>
         <source>Material %1</source>
         <translation>Matériau %1</translation>
+    </message>
+    <message>
+        <source>Motion blur shutter (frames, 0 = off)</source>
+        <translation>Obturateur du flou de mouvement (images, 0 = désactivé)</translation>
     </message>
 </context>
 <context>
@@ -2202,7 +2222,7 @@
     </message>
     <message>
         <source>loading the environment</source>
-        <translation>chargement de l&apos;environnement</translation>
+        <translation>chargement de l'environnement</translation>
     </message>
     <message>
         <source>packing the scene</source>
@@ -2222,7 +2242,7 @@
     </message>
     <message>
         <source>Nothing in the scene emits light, so the path-traced image is black: add a light or an emissive material, or give the environment a colour or an image (Scene tab).</source>
-        <translation>Rien dans la scène n&apos;émet de lumière, l&apos;image en path tracing est donc noire : ajoutez une lumière ou un matériau émissif, ou donnez à l&apos;environnement une couleur ou une image (onglet Scène).</translation>
+        <translation>Rien dans la scène n'émet de lumière, l'image en path tracing est donc noire : ajoutez une lumière ou un matériau émissif, ou donnez à l'environnement une couleur ou une image (onglet Scène).</translation>
     </message>
 </context>
 <context>
@@ -2254,7 +2274,26 @@ R %3  V %4  B %5 (linéaire)</translation>
     </message>
     <message>
         <source>running the importer</source>
-        <translation>exécution de l&apos;importateur</translation>
+        <translation>exécution de l'importateur</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::SceneTemplates</name>
+    <message>
+        <source>Studio</source>
+        <translation>Studio</translation>
+    </message>
+    <message>
+        <source>Empty</source>
+        <translation>Vide</translation>
+    </message>
+    <message>
+        <source>Sun and sky</source>
+        <translation>Soleil et ciel</translation>
+    </message>
+    <message>
+        <source>Cornell box</source>
+        <translation>Boîte de Cornell</translation>
     </message>
 </context>
 <context>
@@ -2284,7 +2323,7 @@ R %3  V %4  B %5 (linéaire)</translation>
     </message>
     <message>
         <source>Add a camera-path key from the current view at the current time</source>
-        <translation>Ajoute une clé de trajet de caméra depuis la vue actuelle à l&apos;instant actuel</translation>
+        <translation>Ajoute une clé de trajet de caméra depuis la vue actuelle à l'instant actuel</translation>
     </message>
     <message>
         <source>Delete key</source>
@@ -2338,6 +2377,38 @@ R %3  V %4  B %5 (linéaire)</translation>
         <source>Linear</source>
         <translation>Linéaire</translation>
     </message>
+    <message>
+        <source>Key transform</source>
+        <translation>Clé de transformation</translation>
+    </message>
+    <message>
+        <source>Key the selected nodes' position, rotation and scale at the current time (K)</source>
+        <translation>Pose une clé pour la position, la rotation et l'échelle des nœuds sélectionnés à l'instant actuel (K)</translation>
+    </message>
+    <message>
+        <source>Copy key</source>
+        <translation>Copier la clé</translation>
+    </message>
+    <message>
+        <source>Paste key</source>
+        <translation>Coller la clé</translation>
+    </message>
+    <message>
+        <source>Key the selected nodes at the current time with the copied key's transform</source>
+        <translation>Pose une clé sur les nœuds sélectionnés à l'instant actuel avec la transformation de la clé copiée</translation>
+    </message>
+    <message>
+        <source>Interpolation</source>
+        <translation>Interpolation</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Paliers</translation>
+    </message>
+    <message>
+        <source>Cubic</source>
+        <translation>Cubique</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Viewport</name>
@@ -2383,7 +2454,7 @@ R %3  V %4  B %5 (linéaire)</translation>
     </message>
     <message>
         <source>BVH traversal cost (heat map)</source>
-        <translation>Coût de parcours du BVH (carte de chaleur)</translation>
+        <translation>Coût de parcours BVH (carte de chaleur)</translation>
     </message>
     <message>
         <source>Viewport</source>
@@ -2399,7 +2470,7 @@ R %3  V %4  B %5 (linéaire)</translation>
     </message>
     <message>
         <source>Scale</source>
-        <translation>Mettre à l&apos;échelle</translation>
+        <translation>Mettre à l'échelle</translation>
     </message>
     <message>
         <source>Frame selection</source>
@@ -2423,7 +2494,7 @@ R %3  V %4  B %5 (linéaire)</translation>
     </message>
     <message>
         <source>Take snapshot A</source>
-        <translation>Prendre l&apos;instantané A</translation>
+        <translation>Prendre l'instantané A</translation>
     </message>
     <message>
         <source>Set render region</source>
@@ -2431,7 +2502,7 @@ R %3  V %4  B %5 (linéaire)</translation>
     </message>
     <message>
         <source>Drag a rectangle: the path tracer renders only inside it</source>
-        <translation>Tracez un rectangle : le path tracer ne rend qu&apos;à l&apos;intérieur</translation>
+        <translation>Tracez un rectangle : le path tracer ne rend qu'à l'intérieur</translation>
     </message>
     <message>
         <source>Clear render region</source>
@@ -2451,7 +2522,7 @@ R %3  V %4  B %5 (linéaire)</translation>
     </message>
     <message>
         <source>Pick focus works through a scene camera: select one and look through it (0) first.</source>
-        <translation>La mise au point par clic passe par une caméra de la scène : sélectionnez-en une et regardez à travers (0) d&apos;abord.</translation>
+        <translation>Le choix de la mise au point passe par une caméra de la scène : sélectionnez-en une et regardez à travers (0) d'abord.</translation>
     </message>
     <message>
         <source>Click the surface to focus on (Esc cancels).</source>
@@ -2463,15 +2534,15 @@ R %3  V %4  B %5 (linéaire)</translation>
     </message>
     <message>
         <source>Stop adding samples; edits are still shown at full resolution</source>
-        <translation>Cesse d&apos;ajouter des échantillons ; les modifications restent affichées en pleine résolution</translation>
+        <translation>Cesse d'ajouter des échantillons ; les modifications restent affichées en pleine résolution</translation>
     </message>
     <message>
         <source>Denoise still image</source>
-        <translation>Débruiter l&apos;image fixe</translation>
+        <translation>Débruiter l'image fixe</translation>
     </message>
     <message>
         <source>Filter the accumulated image while it converges (off: the raw running mean; renders are never filtered)</source>
-        <translation>Filtrer l&apos;image accumulée pendant qu&apos;elle converge (désactivé : la moyenne brute ; les rendus ne sont jamais filtrés)</translation>
+        <translation>Filtrer l'image accumulée pendant qu'elle converge (désactivé : la moyenne brute ; les rendus ne sont jamais filtrés)</translation>
     </message>
     <message>
         <source>coarse (1/%1 resolution)</source>
@@ -2491,7 +2562,7 @@ R %3  V %4  B %5 (linéaire)</translation>
     </message>
     <message>
         <source>%1 spp, converged (viewport sample cap)</source>
-        <translation>%1 spp, convergée (limite d&apos;échantillons de la vue)</translation>
+        <translation>%1 spp, convergée (limite d'échantillons de la vue)</translation>
     </message>
     <message>
         <source>%1 spp, paused</source>
@@ -2500,6 +2571,14 @@ R %3  V %4  B %5 (linéaire)</translation>
     <message>
         <source>%1  |  %2 ms/frame</source>
         <translation>%1  |  %2 ms/image</translation>
+    </message>
+    <message>
+        <source>Local axes</source>
+        <translation>Axes locaux</translation>
+    </message>
+    <message>
+        <source>Move and rotate along the selected node's own axes (off: the world's)</source>
+        <translation>Déplacer et tourner selon les axes propres du nœud sélectionné (désactivé : ceux du monde)</translation>
     </message>
 </context>
 </TS>

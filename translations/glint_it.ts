@@ -1,23 +1,22 @@
-<?xml version="1.0" encoding="utf-8"?>
-<!DOCTYPE TS>
+<?xml version='1.0' encoding='utf-8'?>
 <TS version="2.1" language="it" sourcelanguage="en">
 <context>
     <name>FocusPick</name>
     <message>
         <source>Pick focus works through a scene camera: select one and look through it (0) first.</source>
-        <translation>La messa a fuoco col clic funziona attraverso una camera della scena: selezionane una e guarda attraverso di essa (0).</translation>
+        <translation>La scelta del fuoco funziona attraverso una camera della scena: selezionane una e guarda attraverso (0).</translation>
     </message>
     <message>
         <source>Pick focus: %1 follows its camera path, whose keys set the focus; edit them in the timeline.</source>
-        <translation>Messa a fuoco col clic: %1 segue il suo percorso di camera, le cui chiavi impostano la messa a fuoco; modificale nella timeline.</translation>
+        <translation>Scelta del fuoco: %1 segue il suo percorso, le cui chiavi fissano il fuoco; modificale nella timeline.</translation>
     </message>
     <message>
         <source>Pick focus: nothing under the cursor, the focus distance is unchanged.</source>
-        <translation>Messa a fuoco col clic: niente sotto il cursore, la distanza di messa a fuoco resta invariata.</translation>
+        <translation>Scelta del fuoco: niente sotto il cursore, la distanza di messa a fuoco non cambia.</translation>
     </message>
     <message>
         <source>Pick focus: the surface is behind the camera, the focus distance is unchanged.</source>
-        <translation>Messa a fuoco col clic: la superficie è dietro la camera, la distanza di messa a fuoco resta invariata.</translation>
+        <translation>Scelta del fuoco: la superficie è dietro la camera, la distanza di messa a fuoco non cambia.</translation>
     </message>
     <message>
         <source>Focus distance of %1: %2 m (%3)</source>
@@ -84,6 +83,14 @@
     <message>
         <source>Load texture %1</source>
         <translation>Carica texture %1</translation>
+    </message>
+    <message>
+        <source>Key transform</source>
+        <translation>Chiave trasformazione</translation>
+    </message>
+    <message>
+        <source>Paste key</source>
+        <translation>Incolla chiave</translation>
     </message>
 </context>
 <context>
@@ -256,15 +263,15 @@
     </message>
     <message>
         <source>Change environment image</source>
-        <translation>Cambia immagine d&apos;ambiente</translation>
+        <translation>Cambia immagine d'ambiente</translation>
     </message>
     <message>
         <source>Change environment colour</source>
-        <translation>Cambia colore d&apos;ambiente</translation>
+        <translation>Cambia colore d'ambiente</translation>
     </message>
     <message>
         <source>Change environment intensity</source>
-        <translation>Cambia intensità d&apos;ambiente</translation>
+        <translation>Cambia intensità d'ambiente</translation>
     </message>
     <message>
         <source>Rotate environment</source>
@@ -433,6 +440,10 @@
     <message>
         <source>Assign material</source>
         <translation>Assegna materiale</translation>
+    </message>
+    <message>
+        <source>Change motion blur</source>
+        <translation>Modifica sfocatura di movimento</translation>
     </message>
 </context>
 <context>
@@ -641,7 +652,7 @@
     </message>
     <message>
         <source>Stop reading the file; the open scene stays as it is</source>
-        <translation>Interrompe la lettura del file; la scena aperta resta com&apos;è</translation>
+        <translation>Interrompe la lettura del file; la scena aperta resta com'è</translation>
     </message>
     <message>
         <source>Loading progress</source>
@@ -727,10 +738,7 @@
     </message>
     <message numerus="yes">
         <source>%n nodes selected</source>
-        <translation>
-            <numerusform>%n nodo selezionato</numerusform>
-            <numerusform>%n nodi selezionati</numerusform>
-        </translation>
+        <translation><numerusform>%n nodo selezionato</numerusform><numerusform>%n nodi selezionati</numerusform></translation>
     </message>
     <message>
         <source>Selection</source>
@@ -749,8 +757,8 @@
         <translation>Modifiche non salvate</translation>
     </message>
     <message>
-        <source>&quot;%1&quot; has unsaved changes. Save them first?</source>
-        <translation>&quot;%1&quot; ha modifiche non salvate. Salvarle prima?</translation>
+        <source>"%1" has unsaved changes. Save them first?</source>
+        <translation>"%1" ha modifiche non salvate. Salvarle prima?</translation>
     </message>
     <message>
         <source>Cannot open %1: %2</source>
@@ -946,7 +954,7 @@
     </message>
     <message>
         <source>Clear the list</source>
-        <translation>Svuota l&apos;elenco</translation>
+        <translation>Svuota l'elenco</translation>
     </message>
     <message>
         <source>&amp;Undo %1</source>
@@ -1000,7 +1008,7 @@
     </message>
     <message>
         <source>This display gives no OpenGL 4.1 core context, so the editor opens without its viewport; `glint render` renders headless (EGL).</source>
-        <translation>Questo display non offre un contesto OpenGL 4.1 core, perciò l&apos;editor si apre senza la vista; `glint render` esegue il rendering senza display (EGL).</translation>
+        <translation>Questo display non offre un contesto OpenGL 4.1 core, perciò l'editor si apre senza la vista; `glint render` esegue il rendering senza display (EGL).</translation>
     </message>
     <message>
         <source>%1, %2, configuration: %3</source>
@@ -1008,17 +1016,11 @@
     </message>
     <message numerus="yes">
         <source>%n nodes</source>
-        <translation>
-            <numerusform>%n nodo</numerusform>
-            <numerusform>%n nodi</numerusform>
-        </translation>
+        <translation><numerusform>%n nodo</numerusform><numerusform>%n nodi</numerusform></translation>
     </message>
     <message numerus="yes">
         <source>%n triangles</source>
-        <translation>
-            <numerusform>%n triangolo</numerusform>
-            <numerusform>%n triangoli</numerusform>
-        </translation>
+        <translation><numerusform>%n triangolo</numerusform><numerusform>%n triangoli</numerusform></translation>
     </message>
     <message>
         <source>%1 (autosaved %2)</source>
@@ -1042,10 +1044,7 @@
     </message>
     <message numerus="yes">
         <source>%n more in File &gt; Recover.</source>
-        <translation>
-            <numerusform>Un&apos;altra in File &gt; Recupera.</numerusform>
-            <numerusform>Altre %n in File &gt; Recupera.</numerusform>
-        </translation>
+        <translation><numerusform>Un'altra in File &gt; Recupera.</numerusform><numerusform>Altre %n in File &gt; Recupera.</numerusform></translation>
     </message>
     <message>
         <source>Re&amp;cover</source>
@@ -1093,6 +1092,14 @@
         <source>Materials</source>
         <translation>Materiali</translation>
     </message>
+    <message>
+        <source>New scene</source>
+        <translation>Nuova scena</translation>
+    </message>
+    <message>
+        <source>New from &amp;template</source>
+        <translation>Nuova da &amp;modello</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::MaterialListModel</name>
@@ -1108,10 +1115,7 @@
     </message>
     <message numerus="yes">
         <source>%n users</source>
-        <translation>
-            <numerusform>%n utente</numerusform>
-            <numerusform>%n utenti</numerusform>
-        </translation>
+        <translation><numerusform>%n utente</numerusform><numerusform>%n utenti</numerusform></translation>
     </message>
     <message>
         <source>%1: no node uses it (Delete unused removes it)</source>
@@ -1217,14 +1221,18 @@
     </message>
     <message numerus="yes">
         <source>%n unused materials removed.</source>
-        <translation>
-            <numerusform>%n materiale inutilizzato rimosso.</numerusform>
-            <numerusform>%n materiali inutilizzati rimossi.</numerusform>
-        </translation>
+        <translation><numerusform>%n materiale inutilizzato rimosso.</numerusform><numerusform>%n materiali inutilizzati rimossi.</numerusform></translation>
     </message>
     <message>
         <source>Select a material in the list first.</source>
-        <translation>Seleziona prima un materiale nell&apos;elenco.</translation>
+        <translation>Seleziona prima un materiale nell'elenco.</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::NodeKeyTracks</name>
+    <message>
+        <source>Node keys</source>
+        <translation>Chiavi dei nodi</translation>
     </message>
 </context>
 <context>
@@ -1276,6 +1284,10 @@
     <message>
         <source>Camera %1</source>
         <translation>Camera %1</translation>
+    </message>
+    <message>
+        <source>Area light %1</source>
+        <translation>Luce d'area %1</translation>
     </message>
 </context>
 <context>
@@ -1486,8 +1498,8 @@
         <translation>Conflitto di scorciatoie</translation>
     </message>
     <message>
-        <source>%1 is used by both &quot;%2&quot; and &quot;%3&quot;.</source>
-        <translation>%1 è usata sia da &quot;%2&quot; sia da &quot;%3&quot;.</translation>
+        <source>%1 is used by both "%2" and "%3".</source>
+        <translation>%1 è usata sia da "%2" sia da "%3".</translation>
     </message>
     <message>
         <source>No limit</source>
@@ -1498,7 +1510,7 @@
         <translation>Campioni della vista</translation>
     </message>
     <message>
-        <source>The viewport stops adding samples per pixel here (renders use the Scene panel&apos;s samples)</source>
+        <source>The viewport stops adding samples per pixel here (renders use the Scene panel's samples)</source>
         <translation>La vista smette di aggiungere campioni per pixel qui (i render usano i campioni del pannello Scena)</translation>
     </message>
     <message>
@@ -1523,6 +1535,13 @@
     <message>
         <source>Select a node in the outliner or the viewport to edit it.</source>
         <translation>Seleziona un nodo nella struttura o nella vista per modificarlo.</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::PropertyEdits</name>
+    <message>
+        <source>Edit %1 nodes</source>
+        <translation>Modifica %1 nodi</translation>
     </message>
 </context>
 <context>
@@ -1813,7 +1832,7 @@
     </message>
     <message>
         <source>Lens radius (m)</source>
-        <translation>Raggio dell&apos;obiettivo (m)</translation>
+        <translation>Raggio dell'obiettivo (m)</translation>
     </message>
     <message>
         <source>Focus distance (m)</source>
@@ -1917,11 +1936,11 @@
     </message>
     <message>
         <source>Choose an HDR environment file</source>
-        <translation>Scegli un file d&apos;ambiente HDR</translation>
+        <translation>Scegli un file d'ambiente HDR</translation>
     </message>
     <message>
         <source>Environment map</source>
-        <translation>Mappa d&apos;ambiente</translation>
+        <translation>Mappa d'ambiente</translation>
     </message>
     <message>
         <source>HDR images (*.hdr *.exr);;All files (*)</source>
@@ -1940,16 +1959,16 @@
         <translation>Inizio timeline (s)</translation>
     </message>
     <message>
-        <source>Timeline end (s, 0 = the animation&apos;s)</source>
-        <translation>Fine timeline (s, 0 = quella dell&apos;animazione)</translation>
+        <source>Timeline end (s, 0 = the animation's)</source>
+        <translation>Fine timeline (s, 0 = quella dell'animazione)</translation>
     </message>
     <message>
         <source>Frames per second</source>
         <translation>Fotogrammi al secondo</translation>
     </message>
     <message>
-        <source>Frames per second must be a positive number or a ratio such as 24000/1001, not &quot;%1&quot;.</source>
-        <translation>I fotogrammi al secondo devono essere un numero positivo o un rapporto come 24000/1001, non &quot;%1&quot;.</translation>
+        <source>Frames per second must be a positive number or a ratio such as 24000/1001, not "%1".</source>
+        <translation>I fotogrammi al secondo devono essere un numero positivo o un rapporto come 24000/1001, non "%1".</translation>
     </message>
     <message>
         <source>Real-time reconstruction</source>
@@ -1957,11 +1976,11 @@
     </message>
     <message>
         <source>TAA blend (current frame)</source>
-        <translation>Fusione TAA (fotogramma corrente)</translation>
+        <translation>Fusione TAA (fotogramma attuale)</translation>
     </message>
     <message>
         <source>TAA clip box (std. deviations)</source>
-        <translation>Riquadro di clipping TAA (dev. standard)</translation>
+        <translation>Box di clipping TAA (deviazioni std.)</translation>
     </message>
     <message>
         <source>TAA perceptual blend</source>
@@ -1993,15 +2012,15 @@
     </message>
     <message>
         <source>SVGF firefly ratio</source>
-        <translation>Rapporto firefly SVGF</translation>
+        <translation>Rapporto lucciole SVGF</translation>
     </message>
     <message>
         <source>TAA history clipping</source>
-        <translation>Clipping della cronologia TAA</translation>
+        <translation>Clipping della storia TAA</translation>
     </message>
     <message>
         <source>Variance clip (YCoCg)</source>
-        <translation>Clipping sulla varianza (YCoCg)</translation>
+        <translation>Clipping di varianza (YCoCg)</translation>
     </message>
     <message>
         <source>Min/max clamp</source>
@@ -2009,22 +2028,22 @@
     </message>
     <message>
         <source>None (ghosts)</source>
-        <translation>Nessuno (scie)</translation>
+        <translation>Nessuna (scie)</translation>
     </message>
     <message>
-        <source>&quot;%1&quot; is relative, but the scene has no folder yet: choose the file with Browse, or save the scene first.</source>
-        <translation>&quot;%1&quot; è relativo, ma la scena non ha ancora una cartella: scegli il file con Sfoglia, oppure salva prima la scena.</translation>
+        <source>"%1" is relative, but the scene has no folder yet: choose the file with Browse, or save the scene first.</source>
+        <translation>"%1" è relativo, ma la scena non ha ancora una cartella: scegli il file con Sfoglia, oppure salva prima la scena.</translation>
     </message>
     <message>
         <source>Cannot read the environment image %1. Choose it again with Browse, or clear the field to use the colour below.</source>
-        <translation>Impossibile leggere l&apos;immagine d&apos;ambiente %1. Sceglila di nuovo con Sfoglia, oppure svuota il campo per usare il colore qui sotto.</translation>
+        <translation>Impossibile leggere l'immagine d'ambiente %1. Sceglila di nuovo con Sfoglia, oppure svuota il campo per usare il colore qui sotto.</translation>
     </message>
     <message>
         <source>Environment image status</source>
-        <translation>Stato dell&apos;immagine d&apos;ambiente</translation>
+        <translation>Stato dell'immagine d'ambiente</translation>
     </message>
     <message>
-        <source>An infinite plane: the node&apos;s y = 0, facing +Y; move and turn it with the transform. It has no size. In the glTF file other programs (Blender) get a 200 m square in its place.</source>
+        <source>An infinite plane: the node's y = 0, facing +Y; move and turn it with the transform. It has no size. In the glTF file other programs (Blender) get a 200 m square in its place.</source>
         <translation>Un piano infinito: y = 0 del nodo, rivolto verso +Y; spostalo e ruotalo con la trasformazione. Non ha dimensioni. Nel file glTF gli altri programmi (Blender) ricevono al suo posto un quadrato di 200 m.</translation>
     </message>
     <message>
@@ -2049,7 +2068,7 @@
     </message>
     <message>
         <source>Bloom radius (of the height)</source>
-        <translation>Raggio del bloom (rispetto all&apos;altezza)</translation>
+        <translation>Raggio del bloom (rispetto all'altezza)</translation>
     </message>
     <message>
         <source>Edit sampler</source>
@@ -2136,15 +2155,12 @@
         <translation>Modifica</translation>
     </message>
     <message>
-        <source>Show this primitive&apos;s material below</source>
+        <source>Show this primitive's material below</source>
         <translation>Mostra sotto il materiale di questa primitiva</translation>
     </message>
     <message numerus="yes">
         <source>Primitive %1 (%n triangles)</source>
-        <translation>
-            <numerusform>Primitiva %1 (%n triangolo)</numerusform>
-            <numerusform>Primitiva %1 (%n triangoli)</numerusform>
-        </translation>
+        <translation><numerusform>Primitiva %1 (%n triangolo)</numerusform><numerusform>Primitiva %1 (%n triangoli)</numerusform></translation>
     </message>
     <message>
         <source>Material</source>
@@ -2157,6 +2173,10 @@
     <message>
         <source>Material %1</source>
         <translation>Materiale %1</translation>
+    </message>
+    <message>
+        <source>Motion blur shutter (frames, 0 = off)</source>
+        <translation>Otturatore sfocatura di movimento (fotogrammi, 0 = spento)</translation>
     </message>
 </context>
 <context>
@@ -2202,7 +2222,7 @@
     </message>
     <message>
         <source>loading the environment</source>
-        <translation>caricamento dell&apos;ambiente</translation>
+        <translation>caricamento dell'ambiente</translation>
     </message>
     <message>
         <source>packing the scene</source>
@@ -2222,7 +2242,7 @@
     </message>
     <message>
         <source>Nothing in the scene emits light, so the path-traced image is black: add a light or an emissive material, or give the environment a colour or an image (Scene tab).</source>
-        <translation>Nella scena nulla emette luce, perciò l&apos;immagine path-traced è nera: aggiungi una luce o un materiale emissivo, oppure dai all&apos;ambiente un colore o un&apos;immagine (scheda Scena).</translation>
+        <translation>Nella scena nulla emette luce, perciò l'immagine path-traced è nera: aggiungi una luce o un materiale emissivo, oppure dai all'ambiente un colore o un'immagine (scheda Scena).</translation>
     </message>
 </context>
 <context>
@@ -2254,7 +2274,26 @@ R %3  G %4  B %5 (lineare)</translation>
     </message>
     <message>
         <source>running the importer</source>
-        <translation>esecuzione dell&apos;importatore</translation>
+        <translation>esecuzione dell'importatore</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::SceneTemplates</name>
+    <message>
+        <source>Studio</source>
+        <translation>Studio</translation>
+    </message>
+    <message>
+        <source>Empty</source>
+        <translation>Vuota</translation>
+    </message>
+    <message>
+        <source>Sun and sky</source>
+        <translation>Sole e cielo</translation>
+    </message>
+    <message>
+        <source>Cornell box</source>
+        <translation>Cornell box</translation>
     </message>
 </context>
 <context>
@@ -2284,7 +2323,7 @@ R %3  G %4  B %5 (lineare)</translation>
     </message>
     <message>
         <source>Add a camera-path key from the current view at the current time</source>
-        <translation>Aggiunge una chiave del percorso della camera dalla vista attuale all&apos;istante attuale</translation>
+        <translation>Aggiunge una chiave del percorso della camera dalla vista attuale all'istante attuale</translation>
     </message>
     <message>
         <source>Delete key</source>
@@ -2337,6 +2376,38 @@ R %3  G %4  B %5 (lineare)</translation>
     <message>
         <source>Linear</source>
         <translation>Lineare</translation>
+    </message>
+    <message>
+        <source>Key transform</source>
+        <translation>Chiave trasformazione</translation>
+    </message>
+    <message>
+        <source>Key the selected nodes' position, rotation and scale at the current time (K)</source>
+        <translation>Inserisce una chiave per posizione, rotazione e scala dei nodi selezionati all'istante attuale (K)</translation>
+    </message>
+    <message>
+        <source>Copy key</source>
+        <translation>Copia chiave</translation>
+    </message>
+    <message>
+        <source>Paste key</source>
+        <translation>Incolla chiave</translation>
+    </message>
+    <message>
+        <source>Key the selected nodes at the current time with the copied key's transform</source>
+        <translation>Inserisce una chiave per i nodi selezionati all'istante attuale con la trasformazione della chiave copiata</translation>
+    </message>
+    <message>
+        <source>Interpolation</source>
+        <translation>Interpolazione</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>A gradini</translation>
+    </message>
+    <message>
+        <source>Cubic</source>
+        <translation>Cubica</translation>
     </message>
 </context>
 <context>
@@ -2435,7 +2506,7 @@ R %3  G %4  B %5 (lineare)</translation>
     </message>
     <message>
         <source>Clear render region</source>
-        <translation>Rimuovi regione di rendering</translation>
+        <translation>Cancella regione di rendering</translation>
     </message>
     <message>
         <source>Compare A | B</source>
@@ -2443,7 +2514,7 @@ R %3  G %4  B %5 (lineare)</translation>
     </message>
     <message>
         <source>Pick focus distance</source>
-        <translation>Scegli la distanza di messa a fuoco</translation>
+        <translation>Scegli distanza di messa a fuoco</translation>
     </message>
     <message>
         <source>Click a surface: the camera looked through focuses at its depth</source>
@@ -2451,7 +2522,7 @@ R %3  G %4  B %5 (lineare)</translation>
     </message>
     <message>
         <source>Pick focus works through a scene camera: select one and look through it (0) first.</source>
-        <translation>La messa a fuoco col clic funziona attraverso una camera della scena: selezionane una e guarda attraverso di essa (0).</translation>
+        <translation>La scelta del fuoco funziona attraverso una camera della scena: selezionane una e guarda attraverso (0).</translation>
     </message>
     <message>
         <source>Click the surface to focus on (Esc cancels).</source>
@@ -2467,11 +2538,11 @@ R %3  G %4  B %5 (lineare)</translation>
     </message>
     <message>
         <source>Denoise still image</source>
-        <translation>Riduci il rumore dell&apos;immagine ferma</translation>
+        <translation>Riduci il rumore dell'immagine ferma</translation>
     </message>
     <message>
         <source>Filter the accumulated image while it converges (off: the raw running mean; renders are never filtered)</source>
-        <translation>Filtra l&apos;immagine accumulata mentre converge (spento: la media grezza; i render non sono mai filtrati)</translation>
+        <translation>Filtra l'immagine accumulata mentre converge (spento: la media grezza; i render non sono mai filtrati)</translation>
     </message>
     <message>
         <source>coarse (1/%1 resolution)</source>
@@ -2500,6 +2571,14 @@ R %3  G %4  B %5 (lineare)</translation>
     <message>
         <source>%1  |  %2 ms/frame</source>
         <translation>%1  |  %2 ms/fotogramma</translation>
+    </message>
+    <message>
+        <source>Local axes</source>
+        <translation>Assi locali</translation>
+    </message>
+    <message>
+        <source>Move and rotate along the selected node's own axes (off: the world's)</source>
+        <translation>Sposta e ruota lungo gli assi del nodo selezionato (spento: quelli del mondo)</translation>
     </message>
 </context>
 </TS>

@@ -43,7 +43,7 @@ std::vector<NodeId> editedNodes(const Document& document, NodeId node, bool same
 // Pushes `edit(id)` for each node, as one undo step when there are several.
 QString editEach(Document& document, const std::vector<NodeId>& nodes, const std::function<QString(NodeId)>& edit) {
     if (nodes.size() == 1) return edit(nodes.front());
-    document.beginMacro(QCoreApplication::translate("glint::editor::PropertyEdits", "Edit %n nodes", nullptr, int(nodes.size())));
+    document.beginMacro(QCoreApplication::translate("glint::editor::PropertyEdits", "Edit %1 nodes").arg(nodes.size()));
     QString error;
     for (const NodeId id : nodes)
         if (error.isEmpty()) error = edit(id);
