@@ -1,6 +1,7 @@
 #include "renderer/bvh/flat_scene.h"
 
 #include "renderer/bvh/bvh_layout.h"
+#include "renderer/bvh/huge_pages.h"
 
 #include <bit>
 
@@ -14,14 +15,21 @@ void appendBounds(std::vector<glm::vec4>& out, const Aabb& box)
 }
 
 // Interior children and leaf items are offset by where this tree's nodes and items start.
-void appendNodes(FlatTopLevel& out, const Bvh& bvh, std::uint32_t firstNode, std::uint32_t firstItem)
+void appendNodes(std::vector<glm::vec4>& bounds, std::vector<glm::uvec4>& links, const Bvh& bvh, std::uint32_t firstNode,
+                 std::uint32_t firstItem)
 {
     for (const BvhNode& node : bvh.nodes) {
-        appendBounds(out.nodeBounds, node.bounds);
-        out.nodeLinks.emplace_back(node.first + (node.leaf() ? firstItem : firstNode), node.count, 0u, 0u);
+        appendBounds(bounds, node.bounds);
+        links.emplace_back(node.first + (node.leaf() ? firstItem : firstNode), node.count, 0u, 0u);
     }
 }
 
+void appendNodes(FlatTopLevel& out, const Bvh& bvh, std::uint32_t firstNode, std::uint32_t firstItem)
+{
+    appendNodes(out.nodeBounds, out.nodeLinks, bvh, firstNode, firstItem);
+}
+
+// Appends to arrays that flattenScene sized beforehand, so nothing is copied twice.
 void appendMesh(FlatScene& scene, const MeshBvh& mesh)
 {
     const FlatMeshRange range{static_cast<std::uint32_t>(scene.nodeLinks.size()),
@@ -30,10 +38,7 @@ void appendMesh(FlatScene& scene, const MeshBvh& mesh)
                               scene.meshes.empty() ? 0u : scene.meshes.back().firstVertex + scene.meshes.back().vertexCount,
                               static_cast<std::uint32_t>(mesh.triangles.triangleCount()),
                               static_cast<std::uint32_t>(mesh.triangles.positions.size())};
-    FlatTopLevel nodes;
-    appendNodes(nodes, mesh.bvh, range.rootNode, range.firstSlot);
-    scene.nodeBounds.insert(scene.nodeBounds.end(), nodes.nodeBounds.begin(), nodes.nodeBounds.end());
-    scene.nodeLinks.insert(scene.nodeLinks.end(), nodes.nodeLinks.begin(), nodes.nodeLinks.end());
+    appendNodes(scene.nodeBounds, scene.nodeLinks, mesh.bvh, range.rootNode, range.firstSlot);
     for (std::uint32_t triangle : mesh.bvh.itemOrder) {
         const glm::uvec3 tri = mesh.triangles.triangles[triangle];
         for (int k = 0; k < 3; ++k) scene.trianglePositions.emplace_back(mesh.triangles.positions[tri[k]], 0.0f);
@@ -41,6 +46,14 @@ void appendMesh(FlatScene& scene, const MeshBvh& mesh)
         scene.slotTriangle.push_back(triangle);
     }
     scene.meshes.push_back(range);
+}
+
+// reserve() and, for arrays of megabytes, huge pages before the first write (huge_pages.h).
+template <class T>
+void reserveFresh(std::vector<T>& v, std::size_t count)
+{
+    v.reserve(count);
+    adviseHugePages(v.data(), count * sizeof(T));
 }
 
 void appendInstance(std::vector<glm::uvec4>& out, const Instance& instance, const std::vector<FlatMeshRange>& meshes)
@@ -72,6 +85,17 @@ FlatTopLevel flattenTopLevel(const TopLevel& topLevel, const std::vector<FlatMes
 FlatScene flattenScene(const std::vector<MeshBvh>& meshes, const TopLevel& topLevel)
 {
     FlatScene scene;
+    std::size_t nodes = topLevel.bvh.nodes.size(), triangles = 0;
+    for (const MeshBvh& mesh : meshes) {
+        nodes += mesh.bvh.nodes.size();
+        triangles += mesh.bvh.itemOrder.size();
+    }
+    reserveFresh(scene.nodeBounds, 2 * nodes);
+    reserveFresh(scene.nodeLinks, nodes);
+    reserveFresh(scene.trianglePositions, 3 * triangles);
+    reserveFresh(scene.triangleVertices, triangles);
+    reserveFresh(scene.slotTriangle, triangles);
+    scene.meshes.reserve(meshes.size());
     for (const MeshBvh& mesh : meshes) appendMesh(scene, mesh);
     scene.meshNodeCount = static_cast<std::uint32_t>(scene.nodeLinks.size());
     replaceTopLevel(scene, flattenTopLevel(topLevel, scene.meshes, scene.meshNodeCount));

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <thread>
 
 namespace glint::renderer {
 namespace {
@@ -94,7 +95,11 @@ const bvh::MeshBvh& MeshBvhCache::get(MeshId mesh, bvh::MeshTriangles triangles)
     const auto it = entries_.find(mesh);
     if (it != entries_.end() && sameInput(it->second.input, triangles)) return it->second.bvh;
     ++builds_;
-    bvh::MeshBvh built = bvh::buildMeshBvh(triangles, bvh::BuildOptions{});
+    // Every core: the tree does not depend on the thread count (bvh_build.h), and a large mesh's
+    // build is most of a preparation.
+    bvh::BuildOptions options;
+    options.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    bvh::MeshBvh built = bvh::buildMeshBvh(triangles, options);
     Entry& entry = entries_[mesh];
     entry = Entry{std::move(triangles), std::move(built)};
     return entry.bvh;
