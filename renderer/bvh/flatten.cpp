@@ -1,7 +1,6 @@
 #include "renderer/bvh/flat_scene.h"
 
 #include "renderer/bvh/bvh_layout.h"
-#include "renderer/bvh/huge_pages.h"
 
 #include <bit>
 
@@ -29,7 +28,7 @@ void appendNodes(FlatTopLevel& out, const Bvh& bvh, std::uint32_t firstNode, std
     appendNodes(out.nodeBounds, out.nodeLinks, bvh, firstNode, firstItem);
 }
 
-// Appends to arrays that flattenScene sized beforehand, so nothing is copied twice.
+// Appends to arrays that flattenScene reserved beforehand, so nothing is copied twice.
 void appendMesh(FlatScene& scene, const MeshBvh& mesh)
 {
     const FlatMeshRange range{static_cast<std::uint32_t>(scene.nodeLinks.size()),
@@ -46,14 +45,6 @@ void appendMesh(FlatScene& scene, const MeshBvh& mesh)
         scene.slotTriangle.push_back(triangle);
     }
     scene.meshes.push_back(range);
-}
-
-// reserve() and, for arrays of megabytes, huge pages before the first write (huge_pages.h).
-template <class T>
-void reserveFresh(std::vector<T>& v, std::size_t count)
-{
-    v.reserve(count);
-    adviseHugePages(v.data(), count * sizeof(T));
 }
 
 void appendInstance(std::vector<glm::uvec4>& out, const Instance& instance, const std::vector<FlatMeshRange>& meshes)
@@ -90,11 +81,11 @@ FlatScene flattenScene(const std::vector<MeshBvh>& meshes, const TopLevel& topLe
         nodes += mesh.bvh.nodes.size();
         triangles += mesh.bvh.itemOrder.size();
     }
-    reserveFresh(scene.nodeBounds, 2 * nodes);
-    reserveFresh(scene.nodeLinks, nodes);
-    reserveFresh(scene.trianglePositions, 3 * triangles);
-    reserveFresh(scene.triangleVertices, triangles);
-    reserveFresh(scene.slotTriangle, triangles);
+    scene.nodeBounds.reserve(2 * nodes);
+    scene.nodeLinks.reserve(nodes);
+    scene.trianglePositions.reserve(3 * triangles);
+    scene.triangleVertices.reserve(triangles);
+    scene.slotTriangle.reserve(triangles);
     scene.meshes.reserve(meshes.size());
     for (const MeshBvh& mesh : meshes) appendMesh(scene, mesh);
     scene.meshNodeCount = static_cast<std::uint32_t>(scene.nodeLinks.size());
