@@ -91,7 +91,11 @@ private slots:
     }
 
     // A 10 ms timer measures how late the event loop answers from the edit that adds 209k
-    // triangles until their GPU scene is uploaded; p95 must stay under 100 ms.
+    // triangles until their prepared GPU scene reaches the GUI thread; p95 must stay under 100 ms,
+    // and the timer must keep firing through the preparation. The window ends when the result
+    // arrives, before the upload paint: that paint (upload and the new scene's first frame) is one
+    // stall whatever the preparation took, and with the BVH build at about 0.1 s here it would be
+    // most of a window that ran to the upload.
     void eventLoopAnswersWhilePreparing() {
         Document document;
         test::buildShapesScene(document);
@@ -105,9 +109,14 @@ private slots:
         QElapsedTimer clock;
         test::EventLoopLatency latency;
         QStringList progress;
+        double windowMs = -1.0; // edit to the prepared scene's arrival
         QObject::connect(&view, &RenderView::statsChanged, &view, [&] {
             if (view.stats().preparing && (progress.isEmpty() || progress.back() != view.stats().preparation))
                 progress << view.stats().preparation;
+            if (windowMs < 0.0 && view.stats().uploads != uploadsBefore) { // emitted after the upload paint
+                windowMs = double(clock.nsecsElapsed()) / 1e6;
+                latency.stop();
+            }
         });
         // The edit itself (generating and pushing 24 meshes) is not measured: the preparation starts
         // at the next paint, in the event loop below.
@@ -116,18 +125,24 @@ private slots:
         latency.start();
         while (view.stats().uploads == uploadsBefore && clock.elapsed() < 60000)
             QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
         latency.stop();
 
         const double p95 = latency.percentile(0.95);
-        qInfo("209,088 triangles in %d meshes: prepared in %.0f ms on the worker, uploaded in %.1f ms; %lld ms in all",
-              kGrids, view.stats().prepareMs, view.stats().uploadMs, clock.elapsed());
-        qInfo("event loop: ticks %zu, lateness p50 %.1f ms, p95 %.1f ms, max %.1f ms; progress lines %lld (last '%s')",
+        // The upload paint is the last thing in the window: its own stall would be recorded by the
+        // next tick, which the handler above stopped.
+        const double preparedMs = view.stats().prepareMs; // on the worker
+        qInfo("209,088 triangles in %d meshes: prepared in %.0f ms on the worker, uploaded in %.1f ms; %.0f ms edit to upload",
+              kGrids, view.stats().prepareMs, view.stats().uploadMs, windowMs);
+        qInfo("event loop until the upload: ticks %zu, lateness p50 %.1f ms, p95 %.1f ms, max %.1f ms; progress lines %lld (last '%s')",
               latency.ticks(), latency.percentile(0.5), p95, latency.percentile(1.0), qlonglong(progress.size()),
               progress.isEmpty() ? "" : qPrintable(progress.back()));
         QVERIFY2(view.stats().error.isEmpty(), qPrintable(view.stats().error));
         QCOMPARE(view.stats().uploads, uploadsBefore + 1);
-        QVERIFY(latency.ticks() > 10);                             // the loop really ran meanwhile
+        QVERIFY(windowMs > 0.0);
+        // The loop really ran meanwhile: at least a quarter of the 10 ms ticks the preparation lasted
+        // fired (a preparation on the GUI thread lets one through), and never fewer than 5.
+        QVERIFY2(latency.ticks() >= 5 && double(latency.ticks()) >= preparedMs / (4.0 * test::EventLoopLatency::kTickMs),
+                 qPrintable(QString("%1 ticks in %2 ms").arg(latency.ticks()).arg(preparedMs)));
         QVERIFY(progress.filter(QStringLiteral("BVH")).size() > 1); // per-mesh progress reached the status line
         QVERIFY2(p95 < kP95LimitMs, qPrintable(QString("p95 lateness %1 ms").arg(p95)));
         QTRY_VERIFY_WITH_TIMEOUT(view.stats().samples >= 1, 60000); // and the new scene renders
@@ -164,12 +179,21 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(view.stats().samples >= 1, 60000);
         const ViewportStats before = view.stats();
 
-        QCOMPARE(document.open(a), QString());
-        QTRY_VERIFY_WITH_TIMEOUT(view.stats().preparation.contains(QStringLiteral("BVH")), 20000); // A is in flight
-        QCOMPARE(view.stats().uploads, before.uploads);
+        // B is opened from the first per-mesh progress line of A, so A is in flight then however
+        // fast its preparation is (a progress line is delivered only while its job is current).
         QElapsedTimer clock;
-        clock.start();
-        QCOMPARE(document.open(b), QString());
+        QString openedB = QStringLiteral("not opened");
+        int uploadsWhenOpened = -1;
+        QObject::connect(&view, &RenderView::statsChanged, &view, [&] {
+            if (uploadsWhenOpened >= 0 || !view.stats().preparing || !view.stats().preparation.contains(QStringLiteral("BVH"))) return;
+            uploadsWhenOpened = view.stats().uploads;
+            clock.start();
+            openedB = document.open(b);
+        });
+        QCOMPARE(document.open(a), QString());
+        QTRY_VERIFY_WITH_TIMEOUT(uploadsWhenOpened >= 0, 20000); // A is in flight
+        QCOMPARE(openedB, QString());
+        QCOMPARE(uploadsWhenOpened, before.uploads);
         QTRY_VERIFY_WITH_TIMEOUT(view.stats().uploads > before.uploads && view.stats().samples >= 1, 60000);
         QTest::qWait(200);
         const double mean = test::imageStats(view.grabFramebuffer()).mean;
@@ -188,14 +212,28 @@ private slots:
         test::buildShapesScene(document);
         addMeshesOf(document, test::manyGridsScene(kGrids, kGridQuads));
         auto shown = std::make_unique<test::ShownViewport>(document);
+        // Closed from the first per-mesh progress line (queued, so not inside the view's own
+        // signal): the worker is then building BVHs however fast it is.
+        bool preparingWhenClosed = false;
+        qint64 closeMs = -1;
+        QMetaObject::Connection onStats;
+        onStats = QObject::connect(&shown->view(), &RenderView::statsChanged, &shown->view(), [&] {
+            const RenderView& view = shown->view();
+            if (!view.stats().preparing || !view.stats().preparation.contains(QStringLiteral("BVH"))) return;
+            QObject::disconnect(onStats);
+            QMetaObject::invokeMethod(qApp, [&] {
+                preparingWhenClosed = shown->view().stats().preparing;
+                QElapsedTimer clock;
+                clock.start();
+                shown.reset();
+                closeMs = clock.elapsed();
+            }, Qt::QueuedConnection);
+        });
         QVERIFY(QTest::qWaitForWindowExposed(&shown->window));
-        QTRY_VERIFY_WITH_TIMEOUT(shown->view().stats().preparation.contains(QStringLiteral("BVH")), 20000);
-        QVERIFY(shown->view().stats().preparing);
-        QElapsedTimer clock;
-        clock.start();
-        shown.reset();
-        qInfo("closed while preparing in %lld ms", clock.elapsed());
-        QVERIFY(clock.elapsed() < 2000);
+        QTRY_VERIFY_WITH_TIMEOUT(closeMs >= 0, 20000);
+        qInfo("closed while preparing in %lld ms", closeMs);
+        QVERIFY(preparingWhenClosed);
+        QVERIFY(closeMs < 2000);
     }
 
     // The renderer's warning about a missing texture file reaches the log panel, naming the file,
