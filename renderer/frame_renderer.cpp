@@ -138,7 +138,7 @@ int effectiveBounces(const FrameSettings& s) { return traitsOf(s.configuration).
 bool sameImageSettings(const FrameSettings& a, const FrameSettings& b) {
     return a.configuration == b.configuration && framesSpp(a) == framesSpp(b) &&
            effectiveBounces(a) == effectiveBounces(b) && a.seed == b.seed && a.view == b.view && a.clamp == b.clamp &&
-           a.independentSampler == b.independentSampler && a.aoDistance == b.aoDistance && a.width == b.width &&
+           a.independentSampler == b.independentSampler && a.aoDistance == b.aoDistance && a.areaLightStrategy == b.areaLightStrategy && a.width == b.width &&
            a.height == b.height;
 }
 
@@ -238,7 +238,7 @@ struct FrameRenderer::State {
     PathTraceSettings pathTraceSettings() const {
         const ConfigurationTraits traits = traitsOf(settings.configuration);
         return {settings.seed, effectiveBounces(settings), settings.clamp, settings.independentSampler, settings.view,
-                settings.aoDistance, traits.svgf, traits.ao};
+                settings.aoDistance, traits.svgf, traits.ao, settings.areaLightStrategy};
     }
     // The pixels the path tracer covers: the region plus the reconstruction's reach around it.
     PixelRect tracedPixels() const {

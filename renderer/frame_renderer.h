@@ -39,6 +39,7 @@ struct FrameSettings {
     float clamp = 0.0f;     // per-sample radiance clamp; 0 = off
     bool independentSampler = false;
     float aoDistance = 1.0f;
+    AreaLightStrategy areaLightStrategy = AreaLightStrategy::Mis; // tests only: one strategy alone
     int width = 640;
     int height = 360;
     // Samples go only into this region; outside it the last image stays (renderer/render_region.h).

@@ -76,6 +76,7 @@ FrameSettings frameSettingsFor(const RenderRequest& request, int sppPerFrame) {
     s.bloomLinear = request.bloomLinear;
     s.independentSampler = request.independentSampler;
     s.aoDistance = request.aoDistance;
+    s.areaLightStrategy = request.areaLightStrategy;
     s.width = request.width;
     s.height = request.height;
     if (request.region) s.region = regionOfWindow(*request.region, request.width, request.height);

@@ -41,6 +41,9 @@ struct RenderRequest {
     std::optional<ImageWindow> region;
     DebugView view = DebugView::None;
     float aoDistance = 1.0f;              // metres, for DebugView::AmbientOcclusion
+    // Area emitters' light found by light sampling and BSDF sampling under MIS, or by one alone (the
+    // tests that check the strategies agree).
+    AreaLightStrategy areaLightStrategy = AreaLightStrategy::Mis;
     BloomSettings bloom;                  // on the tonemapped outputs; EXR radiance too with bloomLinear
     bool bloomLinear = false;
     std::function<void(int done, int total)> progress; // after each sample (real-time: frame); may be empty

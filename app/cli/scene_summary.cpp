@@ -12,6 +12,7 @@ const char* toString(LightType type) {
     case LightType::Sun: return "sun";
     case LightType::Point: return "point";
     case LightType::Spot: return "spot";
+    case LightType::Area: return "area";
     }
     return "unknown";
 }
@@ -34,10 +35,20 @@ const char* toString(ShapeKind kind) {
 
 namespace {
 
+const char* lightKind(const Light& light) {
+    if (light.type != LightType::Area) return toString(light.type);
+    switch (light.areaShape) {
+    case AreaShape::Rectangle: return "area rectangle";
+    case AreaShape::Disk: return "area disk";
+    case AreaShape::Sphere: return "area sphere";
+    }
+    return "area";
+}
+
 void summarizeNode(const Node& n, std::map<MeshId, std::size_t>& instances, SceneSummary& s) {
     if (auto* m = n.get<MeshInstance>()) ++instances[m->mesh];
     if (auto* shape = n.get<Shape>()) s.shapes.push_back({n.name, toString(shape->kind)});
-    if (auto* light = n.get<Light>()) s.lights.push_back({n.name, toString(light->type)});
+    if (auto* light = n.get<Light>()) s.lights.push_back({n.name, lightKind(*light)});
     if (auto* cam = n.get<Camera>()) {
         s.cameras.push_back({n.name, toString(cam->projection)});
         if (!cam->path.empty())

@@ -24,6 +24,7 @@ QString lightName(LightType type) {
     case LightType::Sun: return translated(QT_TRANSLATE_NOOP("glint::editor::NodeNames", "Sun %1"));
     case LightType::Point: return translated(QT_TRANSLATE_NOOP("glint::editor::NodeNames", "Point light %1"));
     case LightType::Spot: return translated(QT_TRANSLATE_NOOP("glint::editor::NodeNames", "Spot light %1"));
+    case LightType::Area: return translated(QT_TRANSLATE_NOOP("glint::editor::NodeNames", "Area light %1"));
     }
     return translated(QT_TRANSLATE_NOOP("glint::editor::NodeNames", "Node %1"));
 }

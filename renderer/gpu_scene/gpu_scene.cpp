@@ -4,6 +4,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
+
 namespace glint::renderer {
 namespace {
 
@@ -65,8 +67,23 @@ void GpuScene::updateTransforms(const Scene& scene) {
     packed_.lights = std::move(moved.lights);
     packed_.shapeCount = moved.shapeCount;
     packed_.lightCount = moved.lightCount;
+    packed_.shapeEmitterPower = moved.shapeEmitterPower;
+    packed_.sphereLamps = moved.sphereLamps;
     shapes_ = vec4Buffer("the shape buffer", packed_.shapes);
     lights_ = vec4Buffer("the light buffer", packed_.lights);
+    // Area lights' own materials follow the scene's and change with the lights' power, colour and
+    // size (world area): those records are replaced; the scene's, with their texture references, stay.
+    const auto areaLightMaterials = moved.materials.begin() + std::ptrdiff_t(moved.sceneMaterialCount) * materialTexels;
+    const std::size_t sceneTexels = std::size_t(packed_.sceneMaterialCount) * materialTexels;
+    if (!std::equal(areaLightMaterials, moved.materials.end(), packed_.materials.begin() + std::ptrdiff_t(sceneTexels),
+                    packed_.materials.end())) {
+        packed_.materials.resize(sceneTexels);
+        packed_.materials.insert(packed_.materials.end(), areaLightMaterials, moved.materials.end());
+        materials_ = vec4Buffer("the material buffer", packed_.materials);
+    }
+    // The pass reads the variant from the features at each frame: a light change that adds the
+    // first emissive shape compiles it in.
+    features_.emissiveShapes = moved.emissiveShapes;
     meshes_.updateTransforms(scene, packed_.materialIndex);
 }
 
@@ -93,6 +110,7 @@ void GpuScene::bind(const gl::ShaderProgram& program) const {
     lights_.bind(lightUnit, program.uniform("uLights"));
     glUniform1i(program.uniform("uShapeCount"), packed_.shapeCount);
     glUniform1i(program.uniform("uLightCount"), packed_.lightCount);
+    if (features_.emissiveShapes) glUniform1f(program.uniform("uShapeEmitterPower"), packed_.shapeEmitterPower);
     meshes_.bind(program, firstMeshUnit);
     if (features_.meshes && features_.textures) textureArrays_.bind(program, firstTextureUnit);
     const glm::vec3 colour = environment_.color * environment_.intensity;

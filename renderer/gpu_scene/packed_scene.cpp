@@ -1,23 +1,60 @@
 #include "renderer/gpu_scene/packed_scene.h"
 
+#include "renderer/gpu_scene/emissive_triangles.h"
 #include "renderer/gpu_scene/light_units.h"
 #include "renderer/gpu_scene/texture_refs.h"
 #include "renderer/gpu_scene/visibility.h"
+#include "scene/core/area_light.h"
 
 #include <cmath>
 
 namespace glint::renderer {
 namespace {
 
-void packShape(PackedScene& out, const Shape& shape, const glm::mat4& worldFromLocal, float objectId, int material) {
+// `emission`: the radiance its material emits (factors: shapes have no texture coordinates). An
+// emissive shape is light-sampled with the power luminance x world area (one side of a quad or disk,
+// the outside of a closed shape); the infinite ground plane never is.
+void packShape(PackedScene& out, const Shape& shape, const glm::mat4& worldFromLocal, float objectId, int material,
+               glm::vec3 emission) {
     const glm::mat4 localFromWorld = glm::inverse(worldFromLocal);
     const glm::mat4 rows = glm::transpose(localFromWorld);
+    const glm::mat4 worldRows = glm::transpose(worldFromLocal);
+    float power = 0.0f;
+    if (shape.kind != ShapeKind::GroundPlane && emission != glm::vec3(0.0f))
+        power = emissionLuminance(emission) * shapeArea(shape, worldFromLocal);
+    if (!(power > 0.0f) || !std::isfinite(power)) power = 0.0f;
+    out.shapeEmitterPower += power;
+    out.emissiveShapes = out.emissiveShapes || power > 0.0f;
     out.shapes.push_back({static_cast<float>(shape.kind), static_cast<float>(material), objectId, shape.height});
     out.shapes.push_back(rows[0]);
     out.shapes.push_back(rows[1]);
     out.shapes.push_back(rows[2]);
     out.shapes.push_back({shape.radius, shape.size.x, shape.size.y, shape.size.z});
+    out.shapes.push_back({power, out.shapeEmitterPower, 0.0f, std::abs(glm::determinant(glm::mat3(worldFromLocal)))});
+    out.shapes.push_back(worldRows[0]);
+    out.shapes.push_back(worldRows[1]);
+    out.shapes.push_back(worldRows[2]);
     ++out.shapeCount;
+}
+
+// An area light is traced as its shape (area_light.h) with a material of its own: black (it reflects
+// nothing), emitting P / (pi A) x colour from its front face only (texel 5 w = 1, which shapes.glsl
+// and the shape sampling honour), A its world area.
+void packAreaLight(PackedScene& out, const Light& light, const glm::mat4& worldFromLight, float objectId) {
+    const Shape shape = areaLightShape(light);
+    const glm::mat4 worldFromShape = worldFromLight * lightFromAreaShape(light);
+    const glm::vec3 radiance = areaLightRadiance(light, shapeArea(shape, worldFromShape));
+    Material emitter;
+    emitter.baseColorFactor = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    emitter.metallicFactor = 0.0f;
+    emitter.specularFactor = 0.0f;
+    emitter.emissiveFactor = radiance;
+    std::vector<glm::vec4> texels = packMaterial(emitter);
+    texels[5].w = 1.0f;
+    const int material = static_cast<int>(out.materials.size() / materialTexels);
+    out.materials.insert(out.materials.end(), texels.begin(), texels.end());
+    packShape(out, shape, worldFromShape, objectId, material, radiance);
+    out.emissiveShapes = true;
 }
 
 // Texels: type, radius, node id (the id AOV of a visible lamp), 0; radiometric intensity, cos of the
@@ -62,15 +99,21 @@ PackedScene packScene(const Scene& scene, const TextureSet* textures) {
         const auto texels = packMaterial(material, &scene, textures);
         out.materials.insert(out.materials.end(), texels.begin(), texels.end());
     }
+    out.sceneMaterialCount = static_cast<int>(out.materials.size() / materialTexels);
     for (const NodeId id : scene.depthFirst()) {
         const Node& node = scene.at(id);
         if (!visibleInWorld(scene, node)) continue;
         if (const auto* shape = node.get<Shape>()) {
             const auto it = out.materialIndex.find(shape->material);
+            const Material* material = scene.materials.find(shape->material);
             packShape(out, *shape, scene.worldFromNode(id), static_cast<float>(id.value),
-                      it == out.materialIndex.end() ? 0 : it->second);
+                      it == out.materialIndex.end() ? 0 : it->second,
+                      material ? material->emissiveFactor * material->emissiveStrength : glm::vec3(0.0f));
         } else if (const auto* light = node.get<Light>()) {
-            packLight(out, *light, scene.worldFromNode(id), static_cast<float>(id.value), scene.settings.lightUnits);
+            if (light->type == LightType::Area)
+                packAreaLight(out, *light, scene.worldFromNode(id), static_cast<float>(id.value));
+            else
+                packLight(out, *light, scene.worldFromNode(id), static_cast<float>(id.value), scene.settings.lightUnits);
         }
     }
     return out;

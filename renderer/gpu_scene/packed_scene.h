@@ -12,7 +12,9 @@
 
 namespace glint::renderer {
 
-inline constexpr int shapeTexels = 5;
+// Shape texels: kind, material, id, height; localFromWorld (3 rows); radius, size; emitter (power,
+// cumulative power, 0, |det worldFromLocal|); worldFromLocal (3 rows). Layout: shaders/pathtrace/shapes.glsl.
+inline constexpr int shapeTexels = 9;
 inline constexpr int materialBaseTexels = 6; // factors, then alpha mode and sidedness
 inline constexpr int materialTexels = 30;    // base texels + 8 texture references of 3 texels (texture_refs.h)
 inline constexpr int lightTexels = 4;
@@ -24,6 +26,13 @@ struct PackedScene {
     int shapeCount = 0;
     int lightCount = 0;
     bool sphereLamps = false; // a point or spot light with a radius: rays hit it (HAS_SPHERE_LAMPS)
+    // Emissive shapes and area lights (packed as shapes with a material of their own, after the
+    // scene's materials): light-sampled in proportion to their power, luminance x world area
+    // (HAS_EMISSIVE_SHAPES). An area light is an emitter even at 0 W, so that editing its power
+    // keeps the shader variant.
+    bool emissiveShapes = false;
+    float shapeEmitterPower = 0.0f; // the sum of the shapes' powers
+    int sceneMaterialCount = 0;     // material records of the scene's materials (+ the default); area lights' follow
     std::map<MaterialId, int> materialIndex;
 };
 

@@ -69,6 +69,7 @@ std::map<std::string, std::string> SceneFeatures::defines() const {
     }
     if (meshes && alpha) defines["HAS_ALPHA"] = "";
     if (meshes && singleSided) defines["HAS_SINGLE_SIDED"] = "";
+    if (emissiveShapes) defines["HAS_EMISSIVE_SHAPES"] = "";
     return defines;
 }
 
@@ -104,6 +105,7 @@ PreparedScene prepareScene(const Scene& scene, const std::filesystem::path& envi
     out.warnings = textureWarnings(out.textures.warnings);
     report(control, PreparationStage::Packing, 0, 1);
     out.packed = packScene(scene, &out.textures);
+    out.features.emissiveShapes = out.packed.emissiveShapes;
     const bool colors = meshesHaveColors(scene);
     out.meshes = validatedMeshData(scene, out.packed.materialIndex, !out.textures.empty() || colors, meshCache,
                                [&](std::size_t done, std::size_t total) { report(control, PreparationStage::Meshes, done, total); });

@@ -33,6 +33,7 @@ struct SceneFeatures {
     unsigned extensionTextures = 0; // KHR_materials_* textures sampled (texture_refs.h ExtensionTextureBits)
     bool alpha = false;       // a mesh material with alpha mode MASK or BLEND
     bool singleSided = false; // a non-emissive single-sided mesh material: camera rays cull its back faces
+    bool emissiveShapes = false; // an emissive shape or an area light: light-sampled (HAS_EMISSIVE_SHAPES)
     std::map<std::string, std::string> defines() const; // gl::Defines: NAME -> value
 };
 

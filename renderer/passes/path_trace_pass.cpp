@@ -38,6 +38,8 @@ void PathTracePass::render(const GpuScene& scene, const CameraSetup& camera, con
     if (settings.view == DebugView::DiffuseRadiance) defines["DEBUG_VIEW_DIFFUSE"] = "";
     if (settings.splitLobes) defines["SPLIT_LOBES"] = "";
     if (settings.ambientTerm) defines["AMBIENT_TERM"] = "";
+    if (settings.areaLightStrategy != AreaLightStrategy::Mis)
+        defines["AREA_LIGHT_STRATEGY"] = settings.areaLightStrategy == AreaLightStrategy::LightOnly ? "1" : "2";
     if (settings.view == DebugView::BvhCost) defines["DEBUG_VIEW_BVH_COST"] = defines["BVH_COUNT_COST"] = "";
     const gl::ShaderProgram& program = programs_.get({"fullscreen.vert.glsl", "pathtrace/main.frag.glsl", defines,
                                                       {"outRadiance", "outAlbedo", "outNormalDepth", "outObjectId",

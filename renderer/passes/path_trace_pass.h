@@ -18,6 +18,11 @@ namespace glint::renderer {
 // specular part stays in specularRadianceAttachment): a view of the lobe split, and its check.
 enum class DebugView { None, AmbientOcclusion, BvhCost, DiffuseRadiance };
 
+// Which strategies find the light of area emitters (emissive triangles, emissive shapes, area
+// lights): both, weighted by MIS (what renders use), or one alone: a shader variant
+// (AREA_LIGHT_STRATEGY 1 or 2) for the tests that check the strategies agree.
+enum class AreaLightStrategy { Mis, LightOnly, BsdfOnly };
+
 struct PathTraceSettings {
     std::uint32_t seed = 0;
     int bounces = 4;        // docs/CLI.md: 0 = emitters and direct light only
@@ -31,6 +36,7 @@ struct PathTraceSettings {
     // Baseline's ambient term (shaders/pathtrace/ambient_term.glsl), a shader variant: only for
     // configurations that cut paths short (ConfigurationTraits::ao).
     bool ambientTerm = false;
+    AreaLightStrategy areaLightStrategy = AreaLightStrategy::Mis;
 };
 
 enum GBufferAttachment {

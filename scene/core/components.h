@@ -29,19 +29,28 @@ struct Shape {
     friend bool operator==(const Shape&, const Shape&) = default;
 };
 
-enum class LightType { Sun, Point, Spot };
+enum class LightType { Sun, Point, Spot, Area };
 
-// Stored in glTF's photometric units (KHR_lights_punctual): lux for the sun, candela for point and
-// spot. How they become radiance depends on the project's light-unit mode (see light_units.h).
+// The emitting surface of an area light, in the light node's space: a rectangle or disk in its XY
+// plane emitting along -Z from its front face only (as Blender's area lights and glTF's lights
+// point), or a sphere emitting outwards.
+enum class AreaShape { Rectangle, Disk, Sphere };
+
+// Punctual lights are stored in glTF's photometric units (KHR_lights_punctual): lux for the sun,
+// candela for point and spot; how they become radiance depends on the project's light-unit mode (see
+// light_units.h). Area lights are stored as Blender gives them: power in watts, the radiant flux the
+// emitter sends out, spread evenly (Lambertian) over its area: radiance P / (pi A) x colour.
 struct Light {
     LightType type = LightType::Point;
     glm::vec3 color{1.0f};
-    float intensity = 1.0f;
+    float intensity = 1.0f;               // lux (sun), candela (point, spot), watts (area)
     float range = 0.0f;                   // 0 = infinite
     float innerConeAngle = 0.0f;          // radians, spot only
     float outerConeAngle = 0.7853981634f; // radians (pi/4), spot only
     float angularDiameter = 0.0f;         // radians, sun only; 0 = a delta light (hard shadows)
-    float radius = 0.0f;                  // metres, point and spot; 0 = a delta light
+    float radius = 0.0f;                  // metres: point and spot (0 = a delta light), area sphere
+    AreaShape areaShape = AreaShape::Rectangle; // area only
+    glm::vec2 size{1.0f, 1.0f};           // metres, area only: rectangle X by Y; a disk's diameter in x
     friend bool operator==(const Light&, const Light&) = default;
 };
 

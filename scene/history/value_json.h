@@ -63,7 +63,9 @@ namespace glint {
 NLOHMANN_JSON_SERIALIZE_ENUM(ShapeKind, {{ShapeKind::Sphere, "sphere"}, {ShapeKind::Quad, "quad"},
                                          {ShapeKind::Disk, "disk"}, {ShapeKind::Box, "box"},
                                          {ShapeKind::Cylinder, "cylinder"}, {ShapeKind::GroundPlane, "groundPlane"}})
-NLOHMANN_JSON_SERIALIZE_ENUM(LightType, {{LightType::Sun, "sun"}, {LightType::Point, "point"}, {LightType::Spot, "spot"}})
+NLOHMANN_JSON_SERIALIZE_ENUM(LightType, {{LightType::Sun, "sun"}, {LightType::Point, "point"}, {LightType::Spot, "spot"},
+                                         {LightType::Area, "area"}})
+NLOHMANN_JSON_SERIALIZE_ENUM(AreaShape, {{AreaShape::Rectangle, "rectangle"}, {AreaShape::Disk, "disk"}, {AreaShape::Sphere, "sphere"}})
 NLOHMANN_JSON_SERIALIZE_ENUM(Projection, {{Projection::Perspective, "perspective"}, {Projection::Orthographic, "orthographic"}})
 NLOHMANN_JSON_SERIALIZE_ENUM(RotationInterpolation, {{RotationInterpolation::Slerp, "slerp"}, {RotationInterpolation::Squad, "squad"}})
 NLOHMANN_JSON_SERIALIZE_ENUM(Interpolation, {{Interpolation::Step, "step"}, {Interpolation::Linear, "linear"},
@@ -79,8 +81,9 @@ NLOHMANN_JSON_SERIALIZE_ENUM(Tonemapper, {{Tonemapper::None, "none"}, {Tonemappe
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Transform, translation, rotation, scale)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(MeshInstance, mesh)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Shape, kind, radius, size, height, material)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Light, type, color, intensity, range, innerConeAngle, outerConeAngle,
-                                   angularDiameter, radius)
+// With defaults: command logs written before area lights existed still replay.
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(Light, type, color, intensity, range, innerConeAngle, outerConeAngle,
+                                                angularDiameter, radius, areaShape, size)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CameraKey, time, position, orientation, yfov, focusDistance, lensRadius)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CameraPath, keys, rotation, constantSpeed)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Camera, projection, yfov, aspectRatio, znear, zfar, xmag, ymag, lensRadius,

@@ -1,7 +1,9 @@
 // Emissive mesh triangles as lights (renderer/gpu_scene/emissive_triangles.h): one triangle chosen
-// in proportion to its power, a uniform point on it. Since the choice is proportional to area x
-// luminance, the pdf per unit area of any emitter point is luminance / uEmissivePower, which lets
-// BSDF-sampled hits compute their MIS weight from the material alone. A single-sided material emits
+// in proportion to its power, a uniform point on it. Triangles share one distribution with the
+// emissive shapes and area lights (shape_lights.glsl): every area emitter is chosen in proportion
+// to its power, luminance x area, out of areaEmitterPower(). So the pdf per unit area of any
+// triangle point is luminance / areaEmitterPower(), which lets BSDF-sampled hits compute their MIS
+// weight from the material alone. A single-sided material emits
 // from its front face only (emissionSeen), so a point behind it gets no sample; the triangle's
 // texels hold its vertices counter-clockwise seen from the front and, in the emission's w, 1 for a
 // double-sided emitter.
@@ -11,19 +13,41 @@ uniform samplerBuffer uEmissiveCdf;       // uEmissiveCount + 1 ascending values
 uniform int uEmissiveCount;
 uniform float uEmissivePower;
 #endif
+#ifdef HAS_EMISSIVE_SHAPES
+uniform float uShapeEmitterPower; // the sum of the emissive shapes' powers (shape_lights.glsl)
+#endif
+
+// The power of the light-sampled emissive triangles (0: none).
+float emissiveTrianglePower() {
+#ifdef HAS_MESHES
+    return uEmissiveCount > 0 ? uEmissivePower : 0.0;
+#else
+    return 0.0;
+#endif
+}
+
+// The power of every light-sampled area emitter: triangles and emissive shapes.
+float areaEmitterPower() {
+#ifdef HAS_EMISSIVE_SHAPES
+    return emissiveTrianglePower() + uShapeEmitterPower;
+#else
+    return emissiveTrianglePower();
+#endif
+}
 
 struct AreaLightSample {
     vec3 direction;
     float distance;
     vec3 radiance;
-    float pdf; // per solid angle at the shading point
+    float pdf;     // per solid angle at the shading point
+    vec3 target;   // where the shadow ray ends: the sampled point, moved off the emitter towards p
 };
 
 // Solid-angle pdf of light sampling for a point of emission `emission` seen at distance t under cos.
 float emissiveLightPdf(vec3 emission, float t, float cosAtLight) {
 #ifdef HAS_MESHES
     if (uEmissiveCount == 0 || cosAtLight <= 0.0) return 0.0;
-    return luminance(emission) / uEmissivePower * t * t / cosAtLight;
+    return luminance(emission) / areaEmitterPower() * t * t / cosAtLight;
 #else
     return 0.0;
 #endif
@@ -51,7 +75,7 @@ int findEmissiveTriangle(float u) {
 #endif
 
 bool sampleEmissiveTriangle(vec3 p, vec3 u, OUT(AreaLightSample) s) {
-    s = AreaLightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0), 0.0);
+    s = AreaLightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0), 0.0, vec3(0.0));
 #ifdef HAS_MESHES
     if (uEmissiveCount == 0) return false;
     int i = findEmissiveTriangle(u.x);
@@ -65,11 +89,13 @@ bool sampleEmissiveTriangle(vec3 p, vec3 u, OUT(AreaLightSample) s) {
     float distance = length(offset);
     if (!(distance > 0.0)) return false;
     vec3 direction = offset / distance;
-    float cosAtLight = -dot(normalize(cross(p1 - p0, p2 - p0)), direction); // > 0: q's front faces p
+    vec3 normal = normalize(cross(p1 - p0, p2 - p0));
+    float cosAtLight = -dot(normal, direction); // > 0: q's front faces p
+    vec3 towardsP = cosAtLight >= 0.0 ? normal : -normal;
     if (emission.w > 0.0) cosAtLight = abs(cosAtLight);
     float pdf = emissiveLightPdf(emission.rgb, distance, cosAtLight);
     if (!(pdf > 0.0) || !isFiniteFloat(pdf)) return false;
-    s = AreaLightSample(direction, distance, emission.rgb, pdf);
+    s = AreaLightSample(direction, distance, emission.rgb, pdf, bvhOffsetRayOrigin(q, towardsP));
     return true;
 #else
     return false;

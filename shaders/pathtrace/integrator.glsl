@@ -1,10 +1,17 @@
-// The path integrator: next-event estimation at every vertex (punctual lights; emissive triangles
-// and the environment map with multiple importance sampling), BSDF sampling to continue, Russian roulette, and a bounce
+// The path integrator: next-event estimation at every vertex (punctual lights; one area emitter (an
+// emissive triangle, emissive shape or area light) and the environment map with multiple importance
+// sampling), BSDF sampling to continue, Russian roulette, and a bounce
 // limit as docs/CLI.md defines it: bounces = 0 renders emitters and direct light only; each
 // further bounce adds one indirect vertex. Shading frames use the surface's outward normal: the
 // shared BSDF reads the side of wo (wo.z < 0: inside).
 uniform int uMaxBounces;
 uniform float uClamp; // 0: off (unbiased)
+
+// Which strategies find the light of area emitters (renderer/gpu_scene SceneFeatures): 0 both, with
+// MIS; 1 light sampling alone; 2 BSDF sampling alone (the tests' debug variants).
+#ifndef AREA_LIGHT_STRATEGY
+#define AREA_LIGHT_STRATEGY 0
+#endif
 
 const int ROULETTE_START = 3;
 const int HARD_PATH_LIMIT = 64; // a guard, not a setting: uMaxBounces is clamped below it
@@ -40,26 +47,63 @@ struct ShadowCandidate {
     vec3 direction;
     float distance;
     vec3 contribution; // f * Le * MIS weight / pdf
+    vec4 target;       // w = 1: the shadow ray goes to the point xyz; w = 0: along `direction`, `distance` far
 };
 
-ShadowCandidate noCandidate() { return ShadowCandidate(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0)); }
+ShadowCandidate noCandidate() { return ShadowCandidate(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0), vec4(0.0)); }
+
+// The shadow ray of a candidate. A ray to a point on an emitter starts where spawnRay puts it (a
+// few ULPs off the surface, 1.5e-5 m near the origin) and ends at the candidate's target, itself
+// moved off the emitter towards the shading point: both ends clear their surfaces at any distance.
+// (Shortening the ray by a fraction of the distance instead, with the direction kept from the
+// shading point, let the moved origin's ray reach the emitter's surface first wherever the emitter
+// was nearer than about 7e4 offsets: near-field light was lost.) False: nothing to trace.
+bool shadowRay(Vertex v, ShadowCandidate c, OUT(Ray) ray, OUT(float) distance) {
+    ray = spawnRay(v.position, v.faceNormal, c.direction);
+    distance = c.distance;
+    if (c.target.w == 0.0) return true;
+    vec3 toTarget = c.target.xyz - ray.origin;
+    distance = length(toTarget);
+    if (!(distance > 0.0) || dot(toTarget, c.direction) <= 0.0) return false; // the offsets crossed
+    ray.direction = toTarget / distance;
+    return true;
+}
 
 ShadowCandidate punctualCandidate(Vertex v, int light, INOUT(Rng) rng) {
     LightSample ls = sampleLight(light, v.position, rand2(rng));
     float pdf;
     vec3 f = bsdfEval(v.material, v.wo, localFromWorld(v.frame, ls.direction), pdf);
     float misWeight = ls.pdf > 0.0 ? powerHeuristic(ls.pdf, pdf) : 1.0; // sun disks: BSDF rays see them too
-    return ShadowCandidate(ls.direction, ls.distance, f * ls.irradiance * misWeight);
+    return ShadowCandidate(ls.direction, ls.distance, f * ls.irradiance * misWeight, ls.target);
 }
 
-// One emissive triangle, weighted against BSDF sampling by the power heuristic. The shadow ray stops
-// just short of the light so that it does not find the emitter itself.
+// One area emitter (an emissive triangle, or an emissive shape or area light where the scene has
+// them) chosen in proportion to its power, weighted against BSDF sampling by the power heuristic.
+// The shadow ray ends just off the emitter (shadowRay), so that it does not find the emitter itself.
 ShadowCandidate areaCandidate(Vertex v, INOUT(Rng) rng) {
+    vec3 u = rand3(rng);
+#if AREA_LIGHT_STRATEGY == 2
+    return noCandidate();
+#endif
     AreaLightSample ls;
-    if (!sampleEmissiveTriangle(v.position, rand3(rng), ls)) return noCandidate();
+#ifdef HAS_EMISSIVE_SHAPES
+    float triangles = emissiveTrianglePower();
+    float total = triangles + uShapeEmitterPower;
+    float x = u.x * total;
+    bool found = x < triangles ? sampleEmissiveTriangle(v.position, vec3(x / triangles, u.y, u.z), ls)
+                               : sampleShapeLight(v.position, x - triangles, vec2(u.y, u.z), total, ls);
+    if (!found) return noCandidate();
+#else
+    if (!sampleEmissiveTriangle(v.position, u, ls)) return noCandidate();
+#endif
     float bsdfPdf;
     vec3 f = bsdfEval(v.material, v.wo, localFromWorld(v.frame, ls.direction), bsdfPdf);
-    return ShadowCandidate(ls.direction, ls.distance * (1.0 - 1e-4), f * ls.radiance * (powerHeuristic(ls.pdf, bsdfPdf) / ls.pdf));
+#if AREA_LIGHT_STRATEGY == 1
+    float weight = 1.0;
+#else
+    float weight = powerHeuristic(ls.pdf, bsdfPdf);
+#endif
+    return ShadowCandidate(ls.direction, ls.distance, f * ls.radiance * (weight / ls.pdf), vec4(ls.target, 1.0));
 }
 
 // One environment sample, weighted against BSDF sampling by the power heuristic.
@@ -71,7 +115,7 @@ ShadowCandidate environmentCandidate(Vertex v, INOUT(Rng) rng) {
     if (lightPdf <= 0.0) return noCandidate();
     float bsdfPdf;
     vec3 f = bsdfEval(v.material, v.wo, localFromWorld(v.frame, direction), bsdfPdf);
-    return ShadowCandidate(direction, RAY_MAX, f * environmentRadiance(direction) * (powerHeuristic(lightPdf, bsdfPdf) / lightPdf));
+    return ShadowCandidate(direction, RAY_MAX, f * environmentRadiance(direction) * (powerHeuristic(lightPdf, bsdfPdf) / lightPdf), vec4(0.0));
 }
 
 // Next-event estimation: every punctual light, one emissive triangle and one environment sample.
@@ -86,17 +130,39 @@ vec3 directLight(Vertex v, bool split, INOUT(Rng) rng, OUT(vec3) diffuse) {
                           : (i == uLightCount ? areaCandidate(v, rng) : environmentCandidate(v, rng));
         if (!(maxComponent(c.contribution) > 0.0)) continue;
         setTraceState(false, alphaKey(rng, 1u), v.cone);
-        if (occluded(spawnRay(v.position, v.faceNormal, c.direction), c.distance)) continue;
+        Ray ray;
+        float distance;
+        if (!shadowRay(v, c, ray, distance) || occluded(ray, distance)) continue;
         sum += c.contribution;
         if (split) diffuse += diffusePart(v.material, v.wo, localFromWorld(v.frame, c.direction), c.contribution);
     }
     return sum;
 }
 
-// Weight of emission found by BSDF sampling: emissive triangles are light-sampled too.
-float emissionMisWeight(Hit hit, vec3 emission, vec3 direction, float bsdfPdf) {
-    if (!hit.onMesh || bsdfPdf <= 0.0 || !hasEmissiveTriangles()) return 1.0;
-    return powerHeuristic(bsdfPdf, emissiveLightPdf(emission, hit.t, abs(dot(hit.geometricNormal, direction))));
+// Weight of emission found by BSDF sampling along `ray`, which left the vertex `from` (light
+// sampling there would have used that point, not the ray's offset origin): emissive triangles,
+// emissive shapes and area lights are light-sampled too (bsdfPdf 0, camera rays and delta lobes:
+// weight 1).
+float emissionMisWeight(Hit hit, vec3 emission, Ray ray, vec3 from, float bsdfPdf) {
+    if (bsdfPdf <= 0.0) return 1.0;
+    float lightPdf = 0.0;
+    if (hit.onMesh) {
+        if (!hasEmissiveTriangles()) return 1.0;
+        lightPdf = emissiveLightPdf(emission, hit.t, abs(dot(hit.geometricNormal, ray.direction)));
+    }
+#ifdef HAS_EMISSIVE_SHAPES
+    else if (hit.triangle.y >= 0) {
+        lightPdf = shapeLightPdf(hit.triangle.y, from, ray.origin + hit.t * ray.direction, hit.geometricNormal,
+                                 areaEmitterPower());
+    }
+#endif
+#if AREA_LIGHT_STRATEGY == 1
+    return lightPdf > 0.0 ? 0.0 : 1.0;
+#elif AREA_LIGHT_STRATEGY == 2
+    return 1.0;
+#else
+    return powerHeuristic(bsdfPdf, lightPdf);
+#endif
 }
 
 // Weight of an environment contribution found by BSDF sampling (pdf 0: a delta lobe, weight 1).
@@ -114,6 +180,7 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng, OUT(LobeRadiance) l
     vec3 throughput = vec3(1.0);
     vec3 attenuation = vec3(0.0); // Beer-Lambert sigma of the medium the ray travels in
     float lastBsdfPdf = 0.0;       // of the sampled direction; 0 for camera rays and delta lobes
+    vec3 lastPosition = ray.origin; // the vertex the ray left (MIS evaluates light sampling there)
     int maxBounces = min(uMaxBounces, HARD_PATH_LIMIT - 1);
     RayCone cone = cameraCone();
     for (int depth = 0; depth <= maxBounces + 1; ++depth) {
@@ -154,7 +221,7 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng, OUT(LobeRadiance) l
             result.objectId = hit.objectId;
             result.lobes = vec4(v.material.metallic, v.material.roughness, v.material.transmission, v.material.specularFactor);
         }
-        addRadiance(result.radiance, lobes, throughput * shading.emission * emissionMisWeight(hit, shading.sampledEmission, ray.direction, lastBsdfPdf),
+        addRadiance(result.radiance, lobes, throughput * shading.emission * emissionMisWeight(hit, shading.sampledEmission, ray, lastPosition, lastBsdfPdf),
                     specularPath);
         if (depth > maxBounces) break;
 
@@ -185,6 +252,7 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng, OUT(LobeRadiance) l
         float lobeRoughness = (bs.lobe & LOBE_SPECULAR) != 0u ? 0.0 : ((bs.lobe & LOBE_DIFFUSE) != 0u ? 1.0 : v.material.roughness);
         cone = bounceCone(cone, hit.t, shading.curvature, lobeRoughness);
         ray = spawnRay(v.position, v.faceNormal, wi);
+        lastPosition = v.position;
     }
     if (uClamp > 0.0) clampRadiance(result.radiance, lobes, uClamp);
     return result;

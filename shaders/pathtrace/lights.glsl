@@ -15,6 +15,8 @@ struct LightSample {
     float distance;
     vec3 irradiance; // at a surface facing the light (before cos)
     float pdf;       // solid angle, for MIS with BSDF sampling; 0: nothing else finds this light
+    vec4 target;     // w = 1: the shadow ray ends at xyz (the light's position, or just off a lamp's
+                     // surface on the side of the shading point); w = 0: a sun, in `direction`
 };
 
 // KHR_lights_punctual's recommended smooth spot falloff.
@@ -30,9 +32,9 @@ LightSample sampleLight(int light, vec3 p, vec2 u) {
     vec4 position = lightTexel(light, 2);
     vec4 shine = lightTexel(light, 3);
     if (type == LIGHT_SUN) {
-        if (!(intensity.w < 1.0)) return LightSample(-shine.xyz, RAY_MAX, intensity.rgb, 0.0);
+        if (!(intensity.w < 1.0)) return LightSample(-shine.xyz, RAY_MAX, intensity.rgb, 0.0, vec4(0.0));
         vec3 towardsSun = worldFromLocal(frameFromNormal(-shine.xyz), uniformCone(u, intensity.w));
-        return LightSample(towardsSun, RAY_MAX, intensity.rgb, uniformConePdf(intensity.w));
+        return LightSample(towardsSun, RAY_MAX, intensity.rgb, uniformConePdf(intensity.w), vec4(0.0));
     }
     vec3 offset = position.xyz - p;
     float distance2 = max(dot(offset, offset), 1e-12);
@@ -40,7 +42,8 @@ LightSample sampleLight(int light, vec3 p, vec2 u) {
     vec3 direction = offset / distance;
     float falloff = type == LIGHT_SPOT ? spotFalloff(shine.xyz, -direction, position.w, shine.w) : 1.0;
     float radius = lightTexel(light, 0).y;
-    if (!(radius > 0.0) || distance2 <= radius * radius) return LightSample(direction, distance, falloff * intensity.rgb / distance2, 0.0);
+    if (!(radius > 0.0) || distance2 <= radius * radius)
+        return LightSample(direction, distance, falloff * intensity.rgb / distance2, 0.0, vec4(position.xyz, 1.0));
     // The sphere's cone: irradiance = L x solid angle, L = I / (pi r^2).
     float oneMinusCos = sphereConeOneMinusCos(radius, distance2);
     vec3 towards = worldFromLocal(frameFromNormal(direction), uniformCone(u, 1.0 - oneMinusCos));
@@ -55,7 +58,11 @@ LightSample sampleLight(int light, vec3 p, vec2 u) {
 #else
     float pdf = 0.0;
 #endif
-    return LightSample(towards, max(t, 0.0) * (1.0 - LAMP_SHADOW_SHORTEN), radiance * (TWO_PI * oneMinusCos), pdf);
+    // The shadow ray ends just outside the sampled point of the sphere (ray_offset.glsl), so that it
+    // finds neither this lamp nor, however close the shading point is, the lamp's far side.
+    vec3 onSphere = p + max(t, 0.0) * towards;
+    vec4 target = vec4(bvhOffsetRayOrigin(onSphere, normalize(onSphere - position.xyz)), 1.0);
+    return LightSample(towards, max(t, 0.0), radiance * (TWO_PI * oneMinusCos), pdf, target);
 }
 
 // Emission of the nearest sphere lamp that a ray from `ray.origin` hits before tMax (its distance in

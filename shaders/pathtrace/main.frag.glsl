@@ -15,6 +15,10 @@
 #include "environment.glsl"
 #include "lights.glsl"
 #include "emissive_lights.glsl"
+#ifdef HAS_EMISSIVE_SHAPES
+#include "sampling/shape_emitter.glsl"
+#include "shape_lights.glsl"
+#endif
 #include "camera.glsl"
 #include "lobe_radiance.glsl"
 #include "integrator.glsl"

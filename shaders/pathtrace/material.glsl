@@ -21,10 +21,13 @@ vec3 fetchEmission(int material) {
 
 // Whether a ray along `rayDirection` sees the emission of what it hit. A mesh triangle of a
 // single-sided material (glTF doubleSided false: its back face is culled) emits from its front face
-// only, the side its normal points to; double-sided materials and analytic shapes emit from both.
-// Next-event estimation samples the same sides (emissive_lights.glsl).
+// only, the side its normal points to; double-sided materials and analytic shapes emit from both,
+// except an area light's shape (its material's texel 5 w = 1: front face only, the outside of a
+// sphere). Next-event estimation samples the same sides (emissive_lights.glsl, shape_lights.glsl).
 bool emissionSeen(Hit hit, vec3 rayDirection) {
-    return !hit.onMesh || materialTexel(hit.material, 5).z != 0.0 || dot(hit.geometricNormal, rayDirection) < 0.0;
+    vec4 sides = materialTexel(hit.material, 5);
+    bool frontOnly = hit.onMesh ? sides.z == 0.0 : sides.w != 0.0;
+    return !frontOnly || dot(hit.geometricNormal, rayDirection) < 0.0;
 }
 
 // A hit's material after textures, and the normal it shades with.

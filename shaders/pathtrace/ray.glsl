@@ -13,7 +13,7 @@ struct Hit {
     int material;         // index into the material buffer; -1: no hit
     float objectId;       // node id of what was hit
     bool onMesh;          // a mesh triangle (emissive ones are also sampled as lights)
-    ivec2 triangle;       // mesh hits: (triangle slot, instance); (-1, -1) otherwise
+    ivec2 triangle;       // mesh hits: (triangle slot, instance); shapes: (-1, shape index); else (-1, -1)
     vec2 barycentric;     // mesh hits: weights of vertices 1 and 2
 };
 

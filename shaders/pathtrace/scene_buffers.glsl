@@ -5,7 +5,7 @@ uniform samplerBuffer uMaterials; // MATERIAL_TEXELS per material
 uniform samplerBuffer uLights;    // LIGHT_TEXELS per light
 uniform int uLightCount;
 
-const int SHAPE_TEXELS = 5;
+const int SHAPE_TEXELS = 9; // packed_scene.h shapeTexels
 const int MATERIAL_TEXELS = 30; // packed_scene.h materialTexels: 6 factor texels + 8 texture references (textures/texture_refs.glsl)
 const int LIGHT_TEXELS = 4;
 

@@ -124,7 +124,7 @@ void intersectShapes(Ray ray, INOUT(Hit) hit) {
         if (!hitShapeLocal(int(header.x), o, d, shapeTexel(shape, 4), header.w, hit.t, t, localNormal)) continue;
         // Normals transform by the transpose of localFromWorld.
         vec3 n = normalize(row0.xyz * localNormal.x + row1.xyz * localNormal.y + row2.xyz * localNormal.z);
-        hit = Hit(t, n, n, int(header.y), header.z, false, ivec2(-1), vec2(0.0));
+        hit = Hit(t, n, n, int(header.y), header.z, false, ivec2(-1, shape), vec2(0.0));
     }
 }
 

@@ -4,10 +4,6 @@
 // Light buffer layout: lights.glsl. Suns are packed with radius 0, so radius > 0 marks a lamp.
 #include "sampling/sphere_light.glsl"
 
-// Shadow rays that sample a lamp end this fraction short of the sampled point on its surface, so
-// that they do not find the lamp they sample (as for emissive triangles).
-const float LAMP_SHADOW_SHORTEN = 1e-4;
-
 float lampRadius(int light) { return lightTexel(light, 0).y; }
 
 // Nearest lamp sphere along the ray within tMax, seen from outside; -1: none.

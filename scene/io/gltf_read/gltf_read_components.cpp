@@ -1,5 +1,6 @@
 // The components a glTF node can carry: cameras (plus GLINT_camera and GLINT_camera_path),
-// KHR_lights_punctual lights (plus GLINT_light) and GLINT_shape analytic shapes.
+// KHR_lights_punctual lights (plus GLINT_light), GLINT_area_light area lights and GLINT_shape
+// analytic shapes.
 #include "gltf_read_json.h"
 #include "gltf_read_nodes.h"
 
@@ -144,6 +145,37 @@ Light readLight(const GltfReadContext& ctx, int light)
         l.angularDiameter = json.number(*e, "angularDiameter", l.angularDiameter, where + ".extensions.GLINT_light");
         l.radius = json.number(*e, "radius", l.radius, where + ".extensions.GLINT_light");
     }
+    return l;
+}
+
+// Power, sizes and radius must be 0 or more and finite (a non-finite number is refused by the JSON
+// checks): a negative one is clamped to 0 and named, as for materials (FILE_FORMAT.md).
+Light readAreaLight(GltfReadContext& ctx, const Json& ext, const std::string& where)
+{
+    const JsonReader json{ctx.file};
+    Light l;
+    l.type = LightType::Area;
+    const std::string shape = json.string(ext, "shape", where);
+    if (shape == "rectangle") l.areaShape = AreaShape::Rectangle;
+    else if (shape == "disk") l.areaShape = AreaShape::Disk;
+    else if (shape == "sphere") l.areaShape = AreaShape::Sphere;
+    else ctx.fail("wrong-type", where + ".shape is \"" + shape + "\" (rectangle, disk or sphere)");
+    l.color = json.vec3(ext, "color", l.color, where);
+    l.intensity = json.number(ext, "power", 0.0f, where);
+    l.size = json.vec2(ext, "size", l.size, where); // a disk's diameter is size[0]
+    l.radius = json.number(ext, "radius", l.radius, where);
+    const auto atLeastZero = [&](float& value, const std::string& key) {
+        if (value >= 0.0f) return;
+        ctx.warn("invalid-value", where + "." + key + " is " + floatText(value) + " (must be 0 or more): clamped to 0");
+        value = 0.0f;
+    };
+    atLeastZero(l.intensity, "power");
+    atLeastZero(l.size.x, "size[0]");
+    atLeastZero(l.size.y, "size[1]");
+    atLeastZero(l.radius, "radius");
+    atLeastZero(l.color.x, "color[0]");
+    atLeastZero(l.color.y, "color[1]");
+    atLeastZero(l.color.z, "color[2]");
     return l;
 }
 

@@ -144,10 +144,20 @@ Material readMaterial(GltfReadContext& ctx, std::size_t index)
 
 } // namespace
 
+// The emissive material of an area light's fallback mesh: Glint drops it with the mesh and writes it
+// again from the light (GLINT_area_light).
+bool isAreaLightMaterial(const nlohmann::json& material)
+{
+    return material.is_object() && material.contains("extensions") && material["extensions"].is_object() &&
+           material["extensions"].contains("GLINT_area_light_material");
+}
+
 void readMaterials(GltfReadContext& ctx)
 {
     const std::size_t count = ctx.doc.contains("materials") ? ctx.doc["materials"].size() : 0;
-    for (std::size_t i = 0; i < count; ++i) ctx.materialIds.push_back(ctx.scene.materials.add(readMaterial(ctx, i)));
+    for (std::size_t i = 0; i < count; ++i)
+        ctx.materialIds.push_back(isAreaLightMaterial(ctx.doc["materials"][i]) ? MaterialId{}
+                                                                                  : ctx.scene.materials.add(readMaterial(ctx, i)));
 }
 
 } // namespace glint

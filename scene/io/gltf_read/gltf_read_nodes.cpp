@@ -79,7 +79,9 @@ NodeParts readComponents(GltfReadContext& ctx, const Json& node, const std::stri
 {
     const JsonReader json{ctx.file};
     std::vector<Component> parts;
-    if (const Json* shape = json.extension(node, "GLINT_shape", where)) {
+    if (const Json* area = json.extension(node, "GLINT_area_light", where)) {
+        parts.emplace_back(readAreaLight(ctx, *area, where + ".extensions.GLINT_area_light"));
+    } else if (const Json* shape = json.extension(node, "GLINT_shape", where)) {
         parts.emplace_back(readShape(ctx, *shape, where + ".extensions.GLINT_shape"));
     } else if (const int mesh = json.index(node, "mesh", where); mesh >= 0 && ctx.meshIds.at(static_cast<std::size_t>(mesh)).valid()) {
         parts.emplace_back(MeshInstance{ctx.meshIds[static_cast<std::size_t>(mesh)]});
@@ -133,7 +135,7 @@ PendingSplit addNode(GltfReadContext& ctx, int index, NodeId id, NodeId parent)
     if (const Json* glint = json.extension(source, "GLINT_node", where)) node.visible = json.boolean(*glint, "visible", true, where + ".extensions.GLINT_node");
     NodeParts parts = readComponents(ctx, source, where);
     node.component = parts.primary;
-    node.unknown = unknownMembers(source, {"GLINT_node", "GLINT_shape", "GLINT_camera_path", "KHR_lights_punctual"});
+    node.unknown = unknownMembers(source, {"GLINT_node", "GLINT_shape", "GLINT_area_light", "GLINT_camera_path", "KHR_lights_punctual"});
     const std::string name = node.name;
     ctx.scene.addNode(std::move(node), parent);
     return {id, name, std::move(parts.splitOff), where};

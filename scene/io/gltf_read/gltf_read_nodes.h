@@ -20,5 +20,7 @@ std::vector<NodeId> assignNodeIds(GltfReadContext& ctx, const std::vector<int>& 
 Camera readCamera(GltfReadContext& ctx, int camera, const nlohmann::json& node, const std::string& where);
 Light readLight(const GltfReadContext& ctx, int light);
 Shape readShape(const GltfReadContext& ctx, const nlohmann::json& extension, const std::string& where);
+// GLINT_area_light on a node: an area light (the node's emissive mesh is its fallback, dropped).
+Light readAreaLight(GltfReadContext& ctx, const nlohmann::json& extension, const std::string& where);
 
 } // namespace glint

@@ -27,6 +27,8 @@ struct GltfWriteContext {
     IndexOf<ImageId> images;
     IndexOf<SamplerId> samplers;
     std::vector<ExternalFile> externalImages;
+    // Materials the writer makes (an area light's emission), written after the scene's materials.
+    std::vector<nlohmann::json> generatedMaterials;
     Warnings dropped;
 
     void drop(const std::string& code, const std::string& message) { dropped.push_back({options.displayName, code, message}); }
@@ -35,9 +37,9 @@ struct GltfWriteContext {
 // Each part appends its arrays to ctx.root; called in this order so the buffer is laid out
 // meshes, shape fallback meshes, animations, images.
 void writeMeshes(GltfWriteContext& ctx);
-void writeNodes(GltfWriteContext& ctx);       // nodes, scene, cameras, lights, shape fallback meshes
+void writeNodes(GltfWriteContext& ctx);       // nodes, scene, cameras, lights, shape and area light fallback meshes
 void writeAnimations(GltfWriteContext& ctx);  // the scene's animations, then baked camera paths
-void writeMaterials(GltfWriteContext& ctx);   // materials, textures, samplers
+void writeMaterials(GltfWriteContext& ctx);   // materials (then generated ones), textures, samplers
 void writeImages(GltfWriteContext& ctx);
 
 // A mesh as glTF JSON, its data appended to the buffer (also used for shape fallback meshes).

@@ -137,6 +137,7 @@ nlohmann::json samplerJson(const Sampler& s)
 void writeMaterials(GltfWriteContext& ctx)
 {
     for (const auto& [id, material] : ctx.scene.materials) ctx.root["materials"].push_back(materialJson(ctx, material));
+    for (nlohmann::json& material : ctx.generatedMaterials) ctx.root["materials"].push_back(std::move(material));
     for (const auto& [id, texture] : ctx.scene.textures) ctx.root["textures"].push_back(textureJson(ctx, id, texture));
     for (const auto& [id, sampler] : ctx.scene.samplers) ctx.root["samplers"].push_back(samplerJson(sampler));
 }

@@ -1,9 +1,11 @@
 // Nodes in id order with their one component: a mesh, an analytic shape (GLINT_shape plus a
-// tessellated fallback mesh), a KHR_lights_punctual light (plus GLINT_light) or a camera (plus
-// GLINT_camera and, with a path, GLINT_camera_path). Then the default scene.
+// tessellated fallback mesh), a KHR_lights_punctual light (plus GLINT_light), an area light
+// (GLINT_area_light plus an emissive fallback mesh) or a camera (plus GLINT_camera and, with a
+// path, GLINT_camera_path). Then the default scene.
 #include "gltf_writer_context.h"
 #include "scene/io/json/json_numbers.h"
 
+#include "scene/core/area_light.h"
 #include "scene/geometry/geometry.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -43,6 +45,7 @@ const char* lightTypeName(LightType type)
     case LightType::Sun: return "directional";
     case LightType::Point: return "point";
     case LightType::Spot: return "spot";
+    case LightType::Area: break; // GLINT_area_light, not KHR_lights_punctual
     }
     return "point";
 }
@@ -71,6 +74,68 @@ void writeShape(GltfWriteContext& ctx, nlohmann::json& node, const Node& source,
     fallback.unknown = {{"extensions", {{"GLINT_shape_fallback", nlohmann::json::object()}}}};
     node["mesh"] = ctx.root["meshes"].size();
     ctx.root["meshes"].push_back(meshJson(ctx, fallback, "the fallback mesh of node " + std::to_string(source.id.value)));
+}
+
+const char* areaShapeName(AreaShape shape)
+{
+    switch (shape) {
+    case AreaShape::Rectangle: return "rectangle";
+    case AreaShape::Disk: return "disk";
+    case AreaShape::Sphere: return "sphere";
+    }
+    return "rectangle";
+}
+
+// The material other tools show on an area light's fallback mesh: black, emitting the light's
+// radiance P / (pi A) x colour (A its world area) through emissiveFactor (the colour, scaled to a
+// largest component of 1, as glTF bounds it) x KHR_materials_emissive_strength. Single-sided: the
+// rectangle and disk emit from their front face only, the sphere from its outside.
+nlohmann::json areaLightMaterialJson(const Node& source, const Light& light, float area)
+{
+    const glm::vec3 radiance = areaLightRadiance(light, area);
+    const float largest = std::max({radiance.x, radiance.y, radiance.z});
+    nlohmann::json out{{"pbrMetallicRoughness", {{"baseColorFactor", {0, 0, 0, 1}}, {"metallicFactor", 0}}}};
+    out["name"] = (source.name.empty() ? std::string("area light") : source.name) + ".emission";
+    if (largest > 0.0f) {
+        out["emissiveFactor"] = vec3Json(radiance / largest);
+        if (largest != 1.0f) out["extensions"]["KHR_materials_emissive_strength"] = {{"emissiveStrength", jsonFloat(largest)}};
+    }
+    out["extensions"]["GLINT_area_light_material"] = nlohmann::json::object();
+    return out;
+}
+
+// GLINT_area_light carries the light (Glint reads it back exactly: size and radius are both written
+// whatever the shape, so switching shapes keeps them); the node's mesh is its emitting surface for
+// other tools, in the light's space, marked as a fallback, with a material of its own.
+void writeAreaLight(GltfWriteContext& ctx, nlohmann::json& node, const Node& source, const Light& light)
+{
+    nlohmann::json ext{{"shape", areaShapeName(light.areaShape)},
+                       {"power", jsonFloat(light.intensity)},
+                       {"color", vec3Json(light.color)},
+                       {"size", {jsonFloat(light.size.x), jsonFloat(light.size.y)}},
+                       {"radius", jsonFloat(light.radius)}};
+    node["extensions"]["GLINT_area_light"] = std::move(ext);
+
+    const glm::mat4 lightFromShape = lightFromAreaShape(light);
+    Primitive surface = tessellateShape(areaLightShape(light));
+    std::vector<glm::vec3> positions(surface.positions.begin(), surface.positions.end());
+    std::vector<glm::vec3> normals(surface.normals.begin(), surface.normals.end());
+    for (glm::vec3& p : positions) p = glm::vec3(lightFromShape * glm::vec4(p, 1.0f));
+    for (glm::vec3& n : normals) n = glm::vec3(lightFromShape * glm::vec4(n, 0.0f));
+    surface.positions = std::move(positions);
+    surface.normals = std::move(normals);
+    surface.tangents.clear();
+    surface.material = MaterialId{};
+    const int material = static_cast<int>(ctx.scene.materials.size() + ctx.generatedMaterials.size());
+    ctx.generatedMaterials.push_back(areaLightMaterialJson(source, light, areaLightArea(light, ctx.scene.worldFromNode(source.id))));
+    Mesh fallback;
+    fallback.name = (source.name.empty() ? std::string("area light") : source.name) + ".emitter";
+    fallback.primitives.push_back(std::move(surface));
+    fallback.unknown = {{"extensions", {{"GLINT_shape_fallback", nlohmann::json::object()}}}};
+    nlohmann::json mesh = meshJson(ctx, fallback, "the emitting surface of area light node " + std::to_string(source.id.value));
+    mesh["primitives"][0]["material"] = material;
+    node["mesh"] = ctx.root["meshes"].size();
+    ctx.root["meshes"].push_back(std::move(mesh));
 }
 
 void writeLight(GltfWriteContext& ctx, nlohmann::json& node, const Light& light)
@@ -153,7 +218,8 @@ void writeComponent(GltfWriteContext& ctx, nlohmann::json& node, const Node& sou
     } else if (const auto* shape = source.get<Shape>()) {
         writeShape(ctx, node, source, *shape);
     } else if (const auto* light = source.get<Light>()) {
-        writeLight(ctx, node, *light);
+        if (light->type == LightType::Area) writeAreaLight(ctx, node, source, *light);
+        else writeLight(ctx, node, *light);
     } else if (const auto* camera = source.get<Camera>()) {
         writeCamera(ctx, node, *camera);
     }
