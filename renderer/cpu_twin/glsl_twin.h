@@ -46,6 +46,7 @@ namespace {
 #include "sampling/distribution.glsl"
 #include "sampling/environment_sampling.glsl"
 #include "sampling/sphere_light.glsl"
+#include "sampling/shape_emitter.glsl"
 #include "bsdf/bsdf.glsl"
 } // namespace
 #pragma GCC diagnostic pop
