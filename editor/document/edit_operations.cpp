@@ -198,6 +198,18 @@ Component defaultLight(LightType type) {
     return light;
 }
 
+// Sized for 1 m like the shapes (node_placement.h scales it and sets its power): a 1 m square or
+// disk, or a sphere of radius 0.1 m (Blender's default light radius), facing down once placed.
+Component defaultAreaLight(AreaShape shape) {
+    Light light;
+    light.type = LightType::Area;
+    light.areaShape = shape;
+    light.size = {1.0f, 1.0f};
+    light.radius = shape == AreaShape::Sphere ? 0.1f : 0.0f;
+    light.intensity = 10.0f;
+    return light;
+}
+
 Component defaultCamera() { return Camera{}; }
 
 } // namespace glint::editor

@@ -24,6 +24,7 @@ QString setVisible(Document& document, NodeId id, bool visible);
 // A default component of each kind the "Add" menus offer.
 Component defaultShape(ShapeKind kind);
 Component defaultLight(LightType type);
+Component defaultAreaLight(AreaShape shape);
 Component defaultCamera();
 
 } // namespace glint::editor

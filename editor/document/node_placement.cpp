@@ -1,5 +1,7 @@
 #include "node_placement.h"
 
+#include "renderer/gpu_scene/light_units.h"
+
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
@@ -57,6 +59,32 @@ float newPointCandela(double distance) {
     return float(kBlenderLightCandela * ratio * ratio);
 }
 
+double newLightIrradiance() { return kBlenderLightCandela / renderer::lumensPerWatt / (kBlenderLightDistance * kBlenderLightDistance); }
+
+float newAreaLightWatts(const Light& light, double distance) {
+    if (!(distance > 0.0)) return 0.0f;
+    const double h = distance;
+    double irradiancePerWatt = 0.0; // at the point straight below, facing the light
+    switch (light.areaShape) {
+    case AreaShape::Rectangle: {
+        // Four rectangles with a corner over the point: F = sum of (X atan(Y/X') + Y atan(X/Y')) / (2 pi).
+        const double x = 0.5 * light.size.x / h, y = 0.5 * light.size.y / h;
+        const double sx = std::sqrt(1.0 + x * x), sy = std::sqrt(1.0 + y * y);
+        const double viewFactor = 4.0 * (x / sx * std::atan(y / sx) + y / sy * std::atan(x / sy)) / (2.0 * std::numbers::pi);
+        irradiancePerWatt = viewFactor / (double(light.size.x) * light.size.y); // E = pi L F, L = P / (pi A)
+        break;
+    }
+    case AreaShape::Disk: {
+        const double r = 0.5 * light.size.x;
+        irradiancePerWatt = r * r / (h * h + r * r) / (std::numbers::pi * r * r);
+        break;
+    }
+    case AreaShape::Sphere: irradiancePerWatt = 1.0 / (4.0 * std::numbers::pi * h * h); break;
+    }
+    if (!(irradiancePerWatt > 0.0) || !std::isfinite(irradiancePerWatt)) return 0.0f;
+    return float(newLightIrradiance() / irradiancePerWatt);
+}
+
 Placement placeNewNode(const Component& unit, const ViewFocus& focus) {
     Placement out{Transform{}, unit};
     const double scale = std::isfinite(focus.scale) && focus.scale > 0.0 ? focus.scale : 1.0;
@@ -78,6 +106,19 @@ Placement placeNewNode(const Component& unit, const ViewFocus& focus) {
         if (placed.type == LightType::Sun) {
             out.worldFromNode.rotation = sunRotation();
             placed.intensity = kNewSunLux;
+        } else if (placed.type == LightType::Area) {
+            // Sized like a new shape, facing down (a light shines along its -Z), as bright at the
+            // focus as a new point light. A sphere's centre keeps its radius below the ceiling.
+            const float s = float(roundSize(kShapeShare * scale));
+            placed.size *= s;
+            placed.radius *= s;
+            double distance = height;
+            if (placed.areaShape == AreaShape::Sphere) {
+                distance = std::max(std::min(height, kHeadroomShare * focus.headroom - double(placed.radius)), 2.0 * placed.radius);
+                out.worldFromNode.translation = glm::vec3(focus.point + glm::dvec3(0.0, distance, 0.0));
+            }
+            out.worldFromNode.rotation = glm::angleAxis(float(-std::numbers::pi / 2.0), glm::vec3(1.0f, 0.0f, 0.0f));
+            placed.intensity = newAreaLightWatts(placed, distance);
         } else {
             if (placed.type == LightType::Spot) // straight down
                 out.worldFromNode.rotation = glm::angleAxis(float(-std::numbers::pi / 2.0), glm::vec3(1.0f, 0.0f, 0.0f));

@@ -5,7 +5,9 @@
 // looked at, rounded to 1, 2 or 5 x 10^k metres, with a material of their own;
 // point and spot lights hang above the focus (below the first surface over it, so not inside a
 // room's ceiling) with the irradiance at the focus that Blender's new 1000 W light gives in its
-// default scene; a new sun is Blender's (1 W/m^2) and shines down at an angle. Pure data, no Qt.
+// default scene; a new sun is Blender's (1 W/m^2) and shines down at an angle; a new area light
+// (a 1 m square or disk, or a 0.1 m sphere, scaled as shapes are) hangs there facing down with the
+// power in watts that gives the focus that same irradiance. Pure data, no Qt.
 #include "scene/core/components.h"
 #include "scene/core/transform.h"
 
@@ -35,5 +37,11 @@ double roundSize(double metres);
 // sun, as Blender's new lights give after its glTF importer (1000 W; 1 W/m^2).
 float newPointCandela(double distance);
 inline constexpr float kNewSunLux = 683.0f;
+
+// The irradiance (W/m^2) a new point light gives the focus: Blender's 1000 W light at 7.24 m.
+double newLightIrradiance();
+// The power (watts) of an area light (its shape and size as set) that gives a point `distance`
+// metres straight below it (from its plane, or a sphere's centre) newLightIrradiance().
+float newAreaLightWatts(const Light& light, double distance);
 
 } // namespace glint::editor

@@ -102,6 +102,9 @@ void OutlinerPanel::buildAddMenu() {
     add(lights, QT_TR_NOOP("Point light"), defaultLight(LightType::Point));
     add(lights, QT_TR_NOOP("Spot light"), defaultLight(LightType::Spot));
     add(lights, QT_TR_NOOP("Sun"), defaultLight(LightType::Sun));
+    add(lights, QT_TR_NOOP("Area rectangle"), defaultAreaLight(AreaShape::Rectangle));
+    add(lights, QT_TR_NOOP("Area disk"), defaultAreaLight(AreaShape::Disk));
+    add(lights, QT_TR_NOOP("Area sphere"), defaultAreaLight(AreaShape::Sphere));
     add(addMenu_, QT_TR_NOOP("Camera"), defaultCamera());
     add(addMenu_, QT_TR_NOOP("Empty group"), Component{});
 }

@@ -167,12 +167,57 @@ PropertyForm* makeShapeForm(Document& document, NodeId node, const Report& repor
     return form;
 }
 
+namespace {
+
+// An area light's shape, size and power. Power is in watts whatever the project's light-unit mode
+// (as Blender gives area lights); the panel is rebuilt when the shape changes.
+void addAreaLightFields(PropertyForm* form, Document& document, NodeId node, const Report& report, AreaShape shape) {
+    form->addChoice(
+        PropertyForm::tr("Shape"), {PropertyForm::tr("Rectangle"), PropertyForm::tr("Disk"), PropertyForm::tr("Sphere")},
+        [&document, node] {
+            const Light* l = componentOf<Light>(document, node);
+            return l ? static_cast<int>(l->areaShape) : 0;
+        },
+        [&document, node, report](int i) {
+            const QString error = editComponent(
+                document, node,
+                [i](Component& c) {
+                    auto* l = std::get_if<Light>(&c);
+                    if (!l) return;
+                    l->areaShape = static_cast<AreaShape>(i);
+                    // A sphere made from a rectangle or disk gets half its width as radius, and back.
+                    if (l->areaShape == AreaShape::Sphere && !(l->radius > 0.0f)) l->radius = 0.5f * l->size.x;
+                    if (l->areaShape != AreaShape::Sphere && !(l->size.x > 0.0f)) l->size = glm::vec2(2.0f * l->radius);
+                },
+                0);
+            if (!error.isEmpty()) report(error);
+        });
+    addComponentFloat<Light>(form, document, node, report, PropertyForm::tr("Power (W)"), 0.0, 10000.0, 2, &Light::intensity);
+    if (shape == AreaShape::Rectangle) {
+        for (int axis = 0; axis < 2; ++axis)
+            form->addFloat(axis == 0 ? PropertyForm::tr("Size X (m)") : PropertyForm::tr("Size Y (m)"), 0.001, 100.0, 3,
+                           readComponent<Light>(document, node, [axis](const Light& l) { return double(l.size[axis]); }),
+                           writeComponent<Light>(document, node, report, [axis](Light& l, double v) { l.size[axis] = float(v); }));
+    } else if (shape == AreaShape::Disk) {
+        form->addFloat(PropertyForm::tr("Diameter (m)"), 0.001, 100.0, 3,
+                       readComponent<Light>(document, node, [](const Light& l) { return double(l.size.x); }),
+                       writeComponent<Light>(document, node, report, [](Light& l, double v) { l.size = glm::vec2(float(v)); }));
+    } else {
+        addComponentFloat<Light>(form, document, node, report, PropertyForm::tr("Radius (m)"), 0.001, 50.0, 3, &Light::radius);
+    }
+    form->addNote(PropertyForm::tr("Emits its power evenly from the front face (the light's -Z) of the rectangle or disk, "
+                                   "or the outside of the sphere; in the glTF file other programs get an emissive mesh."));
+}
+
+} // namespace
+
 PropertyForm* makeLightForm(Document& document, NodeId node, const Report& report, QWidget* parent) {
     auto* form = new PropertyForm(document, PropertyForm::tr("Light"), parent);
     const Light* light = componentOf<Light>(document, node);
     const bool sun = light && light->type == LightType::Sun;
+    const bool area = light && light->type == LightType::Area;
     form->addChoice(
-        PropertyForm::tr("Type"), {PropertyForm::tr("Sun"), PropertyForm::tr("Point"), PropertyForm::tr("Spot")},
+        PropertyForm::tr("Type"), {PropertyForm::tr("Sun"), PropertyForm::tr("Point"), PropertyForm::tr("Spot"), PropertyForm::tr("Area")},
         [&document, node] {
             const Light* l = componentOf<Light>(document, node);
             return l ? static_cast<int>(l->type) : 0;
@@ -181,7 +226,17 @@ PropertyForm* makeLightForm(Document& document, NodeId node, const Report& repor
             const QString error = editComponent(
                 document, node,
                 [i](Component& c) {
-                    if (auto* l = std::get_if<Light>(&c)) l->type = static_cast<LightType>(i);
+                    auto* l = std::get_if<Light>(&c);
+                    if (!l) return;
+                    l->type = static_cast<LightType>(i);
+                    if (l->type != LightType::Area) return;
+                    // An area light has no range, cone or sun disk (GLINT_area_light keeps none):
+                    // back to their defaults, so that what is saved is what the document holds.
+                    const Light plain;
+                    l->range = plain.range;
+                    l->innerConeAngle = plain.innerConeAngle;
+                    l->outerConeAngle = plain.outerConeAngle;
+                    l->angularDiameter = plain.angularDiameter;
                 },
                 0);
             if (!error.isEmpty()) report(error);
@@ -201,6 +256,10 @@ PropertyForm* makeLightForm(Document& document, NodeId node, const Report& repor
                 0);
             if (!error.isEmpty()) report(error);
         });
+    if (area) {
+        addAreaLightFields(form, document, node, report, light->areaShape);
+        return form;
+    }
     // The file stores photometric units (KHR_lights_punctual); the project's light-unit mode
     // decides how they become radiance, so the label names both.
     const bool blender = document.scene().settings.lightUnits == LightUnits::Blender;

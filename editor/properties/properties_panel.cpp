@@ -37,7 +37,10 @@ PropertiesPanel::Key PropertiesPanel::currentKey() const {
     key.primitive = key.node == primitiveNode_ ? primitive_ : 0;
     key.material = nodeMaterial(document_.scene(), key.node, key.primitive);
     key.texturedSlots = texturedSlots(document_.scene(), key.material);
-    if (const glint::Light* light = node->get<glint::Light>()) key.lightType = static_cast<int>(light->type);
+    if (const glint::Light* light = node->get<glint::Light>()) {
+        key.lightType = static_cast<int>(light->type);
+        if (light->type == glint::LightType::Area) key.areaShape = static_cast<int>(light->areaShape);
+    }
     if (const glint::Shape* shape = node->get<glint::Shape>()) key.shapeKind = static_cast<int>(shape->kind);
     if (const glint::Camera* camera = node->get<glint::Camera>()) key.projection = static_cast<int>(camera->projection);
     return key;

@@ -39,6 +39,7 @@ private:
         std::size_t component = 0;
         MaterialId material;
         int lightType = -1;
+        int areaShape = -1;  // an area light's fields depend on its shape (a disk has a diameter)
         int shapeKind = -1;  // the fields shown depend on the kind (a sphere has no height)
         int projection = -1;
         std::size_t primitive = 0;      // which primitive's material a mesh shows
