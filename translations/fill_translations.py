@@ -588,6 +588,17 @@ T = {
 "Timeline end (s, 0 = the animation's)": ("Fine timeline (s, 0 = quella dell'animazione)", "Ende der Zeitleiste (s, 0 = das der Animation)", "Fin de la chronologie (s, 0 = celle de l'animation)", "Fin de la línea de tiempo (s, 0 = la de la animación)"),
 "Timeline start (s)": ("Inizio timeline (s)", "Beginn der Zeitleiste (s)", "Début de la chronologie (s)", "Inicio de la línea de tiempo (s)"),
 "Variance clip (YCoCg)": ("Clipping di varianza (YCoCg)", "Varianz-Beschneidung (YCoCg)", "Écrêtage par variance (YCoCg)", "Recorte por varianza (YCoCg)"),
+# Area lights.
+"Area": ("Area", "Fläche", "Surfacique", "Área"),
+"Area disk": ("Disco d'area", "Flächenscheibe", "Disque surfacique", "Disco de área"),
+"Area rectangle": ("Rettangolo d'area", "Flächenrechteck", "Rectangle surfacique", "Rectángulo de área"),
+"Area sphere": ("Sfera d'area", "Flächenkugel", "Sphère surfacique", "Esfera de área"),
+"Diameter (m)": ("Diametro (m)", "Durchmesser (m)", "Diamètre (m)", "Diámetro (m)"),
+"Emits its power evenly from the front face (the light's -Z) of the rectangle or disk, or the outside of the sphere; in the glTF file other programs get an emissive mesh.": ("Emette la sua potenza uniformemente dalla faccia anteriore (il -Z della luce) del rettangolo o del disco, o dall'esterno della sfera; nel file glTF gli altri programmi ricevono una mesh emissiva.", "Strahlt seine Leistung gleichmäßig von der Vorderseite (dem -Z des Lichts) des Rechtecks oder der Scheibe oder von der Außenseite der Kugel ab; in der glTF-Datei erhalten andere Programme ein leuchtendes Mesh.", "Émet sa puissance uniformément depuis la face avant (le -Z de la lumière) du rectangle ou du disque, ou depuis l'extérieur de la sphère ; dans le fichier glTF, les autres programmes reçoivent un maillage émissif.", "Emite su potencia uniformemente desde la cara frontal (el -Z de la luz) del rectángulo o el disco, o desde el exterior de la esfera; en el archivo glTF los demás programas reciben una malla emisiva."),
+"Power (W)": ("Potenza (W)", "Leistung (W)", "Puissance (W)", "Potencia (W)"),
+"Rectangle": ("Rettangolo", "Rechteck", "Rectangle", "Rectángulo"),
+"Size X (m)": ("Dimensione X (m)", "Größe X (m)", "Taille X (m)", "Tamaño X (m)"),
+"Size Y (m)": ("Dimensione Y (m)", "Größe Y (m)", "Taille Y (m)", "Tamaño Y (m)"),
 }
 
 

@@ -1423,6 +1423,18 @@
         <source>Delete</source>
         <translation>Löschen</translation>
     </message>
+    <message>
+        <source>Area rectangle</source>
+        <translation>Flächenrechteck</translation>
+    </message>
+    <message>
+        <source>Area disk</source>
+        <translation>Flächenscheibe</translation>
+    </message>
+    <message>
+        <source>Area sphere</source>
+        <translation>Flächenkugel</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Preferences</name>
@@ -2177,6 +2189,34 @@
     <message>
         <source>Motion blur shutter (frames, 0 = off)</source>
         <translation>Verschluss Bewegungsunschärfe (Bilder, 0 = aus)</translation>
+    </message>
+    <message>
+        <source>Rectangle</source>
+        <translation>Rechteck</translation>
+    </message>
+    <message>
+        <source>Power (W)</source>
+        <translation>Leistung (W)</translation>
+    </message>
+    <message>
+        <source>Size X (m)</source>
+        <translation>Größe X (m)</translation>
+    </message>
+    <message>
+        <source>Size Y (m)</source>
+        <translation>Größe Y (m)</translation>
+    </message>
+    <message>
+        <source>Diameter (m)</source>
+        <translation>Durchmesser (m)</translation>
+    </message>
+    <message>
+        <source>Emits its power evenly from the front face (the light's -Z) of the rectangle or disk, or the outside of the sphere; in the glTF file other programs get an emissive mesh.</source>
+        <translation>Strahlt seine Leistung gleichmäßig von der Vorderseite (dem -Z des Lichts) des Rechtecks oder der Scheibe oder von der Außenseite der Kugel ab; in der glTF-Datei erhalten andere Programme ein leuchtendes Mesh.</translation>
+    </message>
+    <message>
+        <source>Area</source>
+        <translation>Fläche</translation>
     </message>
 </context>
 <context>

@@ -1423,6 +1423,18 @@
         <source>Delete</source>
         <translation>Eliminar</translation>
     </message>
+    <message>
+        <source>Area rectangle</source>
+        <translation>Rectángulo de área</translation>
+    </message>
+    <message>
+        <source>Area disk</source>
+        <translation>Disco de área</translation>
+    </message>
+    <message>
+        <source>Area sphere</source>
+        <translation>Esfera de área</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Preferences</name>
@@ -2177,6 +2189,34 @@
     <message>
         <source>Motion blur shutter (frames, 0 = off)</source>
         <translation>Obturador de desenfoque de movimiento (fotogramas, 0 = apagado)</translation>
+    </message>
+    <message>
+        <source>Rectangle</source>
+        <translation>Rectángulo</translation>
+    </message>
+    <message>
+        <source>Power (W)</source>
+        <translation>Potencia (W)</translation>
+    </message>
+    <message>
+        <source>Size X (m)</source>
+        <translation>Tamaño X (m)</translation>
+    </message>
+    <message>
+        <source>Size Y (m)</source>
+        <translation>Tamaño Y (m)</translation>
+    </message>
+    <message>
+        <source>Diameter (m)</source>
+        <translation>Diámetro (m)</translation>
+    </message>
+    <message>
+        <source>Emits its power evenly from the front face (the light's -Z) of the rectangle or disk, or the outside of the sphere; in the glTF file other programs get an emissive mesh.</source>
+        <translation>Emite su potencia uniformemente desde la cara frontal (el -Z de la luz) del rectángulo o el disco, o desde el exterior de la esfera; en el archivo glTF los demás programas reciben una malla emisiva.</translation>
+    </message>
+    <message>
+        <source>Area</source>
+        <translation>Área</translation>
     </message>
 </context>
 <context>

@@ -1423,6 +1423,18 @@
         <source>Delete</source>
         <translation>Supprimer</translation>
     </message>
+    <message>
+        <source>Area rectangle</source>
+        <translation>Rectangle surfacique</translation>
+    </message>
+    <message>
+        <source>Area disk</source>
+        <translation>Disque surfacique</translation>
+    </message>
+    <message>
+        <source>Area sphere</source>
+        <translation>Sphère surfacique</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Preferences</name>
@@ -2177,6 +2189,34 @@
     <message>
         <source>Motion blur shutter (frames, 0 = off)</source>
         <translation>Obturateur du flou de mouvement (images, 0 = désactivé)</translation>
+    </message>
+    <message>
+        <source>Rectangle</source>
+        <translation>Rectangle</translation>
+    </message>
+    <message>
+        <source>Power (W)</source>
+        <translation>Puissance (W)</translation>
+    </message>
+    <message>
+        <source>Size X (m)</source>
+        <translation>Taille X (m)</translation>
+    </message>
+    <message>
+        <source>Size Y (m)</source>
+        <translation>Taille Y (m)</translation>
+    </message>
+    <message>
+        <source>Diameter (m)</source>
+        <translation>Diamètre (m)</translation>
+    </message>
+    <message>
+        <source>Emits its power evenly from the front face (the light's -Z) of the rectangle or disk, or the outside of the sphere; in the glTF file other programs get an emissive mesh.</source>
+        <translation>Émet sa puissance uniformément depuis la face avant (le -Z de la lumière) du rectangle ou du disque, ou depuis l'extérieur de la sphère ; dans le fichier glTF, les autres programmes reçoivent un maillage émissif.</translation>
+    </message>
+    <message>
+        <source>Area</source>
+        <translation>Surfacique</translation>
     </message>
 </context>
 <context>

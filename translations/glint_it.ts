@@ -1423,6 +1423,18 @@
         <source>Delete</source>
         <translation>Elimina</translation>
     </message>
+    <message>
+        <source>Area rectangle</source>
+        <translation>Rettangolo d'area</translation>
+    </message>
+    <message>
+        <source>Area disk</source>
+        <translation>Disco d'area</translation>
+    </message>
+    <message>
+        <source>Area sphere</source>
+        <translation>Sfera d'area</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Preferences</name>
@@ -2177,6 +2189,34 @@
     <message>
         <source>Motion blur shutter (frames, 0 = off)</source>
         <translation>Otturatore sfocatura di movimento (fotogrammi, 0 = spento)</translation>
+    </message>
+    <message>
+        <source>Rectangle</source>
+        <translation>Rettangolo</translation>
+    </message>
+    <message>
+        <source>Power (W)</source>
+        <translation>Potenza (W)</translation>
+    </message>
+    <message>
+        <source>Size X (m)</source>
+        <translation>Dimensione X (m)</translation>
+    </message>
+    <message>
+        <source>Size Y (m)</source>
+        <translation>Dimensione Y (m)</translation>
+    </message>
+    <message>
+        <source>Diameter (m)</source>
+        <translation>Diametro (m)</translation>
+    </message>
+    <message>
+        <source>Emits its power evenly from the front face (the light's -Z) of the rectangle or disk, or the outside of the sphere; in the glTF file other programs get an emissive mesh.</source>
+        <translation>Emette la sua potenza uniformemente dalla faccia anteriore (il -Z della luce) del rettangolo o del disco, o dall'esterno della sfera; nel file glTF gli altri programmi ricevono una mesh emissiva.</translation>
+    </message>
+    <message>
+        <source>Area</source>
+        <translation>Area</translation>
     </message>
 </context>
 <context>
