@@ -1,8 +1,8 @@
 // Blender opens what Glint writes: the feature scene (shapes, every light kind, cameras, materials,
 // node animations) saved as .gltf is imported by Blender's own glTF importer in a background
 // Blender, and what arrives is counted (tests/blender/import_counts.py): one object per node,
-// one light per light node, one camera per camera node, the materials the scene uses, a mesh per
-// shape, objects with an emitting material as emitters, and the animated nodes animated.
+// one light per punctual light node, one camera per camera node, the materials the scene uses, a
+// mesh per shape, objects with an emitting material (area lights included) as emitters, and the animated nodes animated.
 #include "../io_write/feature_scene.h"
 
 #include "scene/io/scene_io.h"
@@ -21,6 +21,7 @@ namespace {
 
 struct Expected {
     int objects = 0, lights = 0, cameras = 0, shapes = 0, meshInstances = 0, emissive = 0;
+    int areaLights = 0; // each written with a mesh and an emissive material of its own
     std::set<MaterialId> materials;
     std::set<NodeId> animated;
 };
@@ -34,7 +35,14 @@ Expected expectedOf(const Scene& scene) {
     Expected e;
     for (const auto& [id, node] : scene.nodes()) {
         ++e.objects;
-        if (node.get<Light>()) ++e.lights;
+        if (const Light* light = node.get<Light>()) {
+            if (light->type == LightType::Area) {
+                ++e.emissive;
+                ++e.areaLights;
+            } else {
+                ++e.lights;
+            }
+        }
         if (node.get<Camera>()) ++e.cameras;
         if (const Shape* shape = node.get<Shape>()) {
             ++e.shapes;
@@ -75,7 +83,15 @@ private slots:
     void blenderImportsWhatGlintWrites() {
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
-        const Scene scene = test::featureScene();
+        Scene scene = test::featureScene();
+        // Area lights, which reach Blender as emitting meshes (GLINT_area_light for Glint itself).
+        for (const AreaShape shape : {AreaShape::Rectangle, AreaShape::Sphere}) {
+            Node node;
+            node.name = shape == AreaShape::Rectangle ? "softbox" : "bulb";
+            node.component = Light{.type = LightType::Area, .intensity = 50.0f, .radius = 0.1f, .areaShape = shape};
+            node.local.translation = {0.0f, 3.0f, 0.0f};
+            scene.addNode(node);
+        }
         const QString file = dir.filePath("features.gltf");
         saveScene(scene, file.toStdString());
         const nlohmann::json counts = importCounts(file);
@@ -84,8 +100,8 @@ private slots:
         const Expected e = expectedOf(scene);
         QCOMPARE(counts.at("lights").get<int>(), e.lights);
         QCOMPARE(counts.at("cameras").get<int>(), e.cameras);
-        QCOMPARE(counts.at("materials").get<int>(), int(e.materials.size()));
-        QVERIFY(counts.at("meshes").get<int>() >= e.shapes + e.meshInstances);
+        QCOMPARE(counts.at("materials").get<int>(), int(e.materials.size()) + e.areaLights);
+        QVERIFY(counts.at("meshes").get<int>() >= e.shapes + e.meshInstances + e.areaLights);
         QVERIFY(counts.at("objects").get<int>() >= e.objects);
         QCOMPARE(counts.at("emissive_objects").get<int>(), e.emissive);
         QCOMPARE(counts.at("animated_objects").get<int>(), int(e.animated.size()));
