@@ -1,4 +1,5 @@
 #include "edit_operations.h"
+#include "editor/document/in_macro.h"
 
 #include "scene/history/asset_commands.h"
 #include "scene/history/node_commands.h"
@@ -65,20 +66,6 @@ std::vector<NodeId> topLevelSelection(const Document& document) {
         if (!inside) out.push_back(id);
     }
     return out;
-}
-
-// Runs `body` inside one macro; a failure closes the macro and becomes a message.
-template <class Body>
-QString inMacro(Document& document, const QString& label, Body body) {
-    document.beginMacro(label);
-    try {
-        body();
-    } catch (const std::exception& e) {
-        document.endMacro();
-        return QString::fromStdString(e.what());
-    }
-    document.endMacro();
-    return {};
 }
 
 } // namespace

@@ -1,4 +1,5 @@
 #include "material_operations.h"
+#include "editor/document/in_macro.h"
 
 #include "editor/document/labelled_command.h"
 #include "scene/history/asset_commands.h"
@@ -37,20 +38,6 @@ namespace OIIO = OIIO_NAMESPACE;
 };
 
 QString tr(const char* text) { return QCoreApplication::translate("glint::editor::MaterialOperations", text); }
-
-// Runs `body` inside one macro; a failure closes the macro and becomes a message.
-template <class Body>
-QString inMacro(Document& document, const QString& label, Body body) {
-    document.beginMacro(label);
-    try {
-        body();
-    } catch (const std::exception& e) {
-        document.endMacro();
-        return QString::fromStdString(e.what());
-    }
-    document.endMacro();
-    return {};
-}
 
 QString pushOne(Document& document, CommandPtr command) {
     try {

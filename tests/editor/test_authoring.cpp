@@ -36,20 +36,6 @@ void sendMouse(QWidget& w, QEvent::Type type, QPointF at, Qt::MouseButton button
     QCoreApplication::sendEvent(&w, &event);
 }
 
-// Mean of the red, green and blue channels over a square of `half` pixels around `at`.
-glm::dvec3 meanAround(const QImage& image, QPoint at, int half) {
-    glm::dvec3 sum(0.0);
-    int count = 0;
-    const QImage rgb = image.convertToFormat(QImage::Format_RGB32);
-    for (int y = at.y() - half; y <= at.y() + half; ++y)
-        for (int x = at.x() - half; x <= at.x() + half; ++x) {
-            if (!rgb.valid(x, y)) continue;
-            const QRgb p = rgb.pixel(x, y);
-            sum += glm::dvec3(qRed(p), qGreen(p), qBlue(p));
-            ++count;
-        }
-    return count ? sum / double(count) : sum;
-}
 
 int nodesWith(const Scene& scene, auto predicate) {
     int n = 0;
@@ -140,7 +126,7 @@ private slots:
         const qreal ratio = view.devicePixelRatioF();
         const QPoint at((centre->toPoint().x()) * ratio, (centre->toPoint().y()) * ratio);
         QTRY_VERIFY_WITH_TIMEOUT(view.stats().samples >= 8 && !view.stats().preparing, 60000);
-        const glm::dvec3 before = meanAround(view.grabFramebuffer(), at, 2);
+        const glm::dvec3 before = glint::test::meanRgbAround(view.grabFramebuffer(), at, 2);
 
         Material red = document.scene().materials.at(materialId);
         red.baseColorFactor = glm::vec4(0.8f, 0.02f, 0.02f, 1.0f);
@@ -148,7 +134,7 @@ private slots:
         document.push(std::make_unique<SetAsset<Material>>(materialId, red));
         QTRY_VERIFY_WITH_TIMEOUT(view.stats().paints > paints + 1, 60000); // the edit's first frame is on screen
         QTRY_VERIFY_WITH_TIMEOUT(view.stats().samples >= 8, 60000);
-        const glm::dvec3 after = meanAround(view.grabFramebuffer(), at, 2);
+        const glm::dvec3 after = glint::test::meanRgbAround(view.grabFramebuffer(), at, 2);
         qInfo("sphere centre before (%.0f %.0f %.0f), after (%.0f %.0f %.0f)", before.x, before.y, before.z, after.x, after.y, after.z);
         QVERIFY(std::abs(before.x - before.y) < 0.2 * before.x + 4.0); // grey first
         QVERIFY(after.x > 2.0 * after.y && after.x > 2.0 * after.z && after.x > 40.0);
@@ -156,7 +142,7 @@ private slots:
         document.undo();
         QTRY_VERIFY_WITH_TIMEOUT(view.stats().paints > paints + 1, 60000);
         QTRY_VERIFY_WITH_TIMEOUT(view.stats().samples >= 8, 60000);
-        const glm::dvec3 undone = meanAround(view.grabFramebuffer(), at, 2);
+        const glm::dvec3 undone = glint::test::meanRgbAround(view.grabFramebuffer(), at, 2);
         QVERIFY(undone.x < 2.0 * undone.y);
     }
 

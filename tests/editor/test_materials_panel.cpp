@@ -52,19 +52,6 @@ MainWindow::Options options(const QString& autosaveFolder) {
     return o;
 }
 
-glm::dvec3 meanAround(const QImage& image, QPoint at, int half) {
-    glm::dvec3 sum(0.0);
-    int count = 0;
-    const QImage rgb = image.convertToFormat(QImage::Format_RGB32);
-    for (int y = at.y() - half; y <= at.y() + half; ++y)
-        for (int x = at.x() - half; x <= at.x() + half; ++x) {
-            if (!rgb.valid(x, y)) continue;
-            const QRgb p = rgb.pixel(x, y);
-            sum += glm::dvec3(qRed(p), qGreen(p), qBlue(p));
-            ++count;
-        }
-    return count ? sum / double(count) : sum;
-}
 
 } // namespace
 
@@ -97,7 +84,7 @@ private slots:
             pixmap.save(QStringLiteral(GLINT_TEST_OUTPUT_DIR "/material_swatch_%1.png").arg(row));
         }
         const QImage redSwatch = swatches.cached(SwatchRenderer::contentHash(document.scene(), redId));
-        const glm::dvec3 centre = meanAround(redSwatch, {24, 24}, 3);
+        const glm::dvec3 centre = glint::test::meanRgbAround(redSwatch, {24, 24}, 3);
         qInfo("red swatch centre (%.0f %.0f %.0f); first swatch (context, compilation) %.1f ms", centre.x, centre.y, centre.z,
               swatches.firstRenderMs());
         QVERIFY(centre.x > 60.0 && centre.x > 2.5 * centre.y && centre.x > 2.5 * centre.z);
@@ -115,7 +102,7 @@ private slots:
         document.push(std::make_unique<SetMaterial>(copy, blue));
         QTRY_VERIFY_WITH_TIMEOUT(swatches.rendered() == 4 && !swatches.busy(), 60000);
         const QImage blueSwatch = panel.model().indexOf(copy).data(Qt::DecorationRole).value<QPixmap>().toImage();
-        const glm::dvec3 b = meanAround(blueSwatch, {24, 24}, 3);
+        const glm::dvec3 b = glint::test::meanRgbAround(blueSwatch, {24, 24}, 3);
         QVERIFY(b.z > 2.5 * b.x);
         qInfo("swatch render (48x48, 16 spp, compiled programs): %.1f ms", swatches.lastRenderMs());
 
@@ -135,7 +122,7 @@ private slots:
         QCOMPARE(loadTextureFile(document, redId, *findTextureSlot("baseColor"), temp_.filePath("swatch blue.png")), QString());
         const std::uint64_t texturedHash = SwatchRenderer::contentHash(document.scene(), redId);
         QTRY_VERIFY_WITH_TIMEOUT(!swatches.cached(texturedHash).isNull(), 60000);
-        const glm::dvec3 t = meanAround(swatches.cached(texturedHash), {24, 24}, 3);
+        const glm::dvec3 t = glint::test::meanRgbAround(swatches.cached(texturedHash), {24, 24}, 3);
         qInfo("textured swatch centre (%.0f %.0f %.0f)", t.x, t.y, t.z);
         QVERIFY(t.z > 2.0 * t.x && t.z > 60.0);
     }
@@ -239,7 +226,7 @@ private slots:
         auto settle = [&](glm::dvec3& out, long long paints) {
             QTRY_VERIFY_WITH_TIMEOUT(view.stats().paints > paints + 1, 60000);
             QTRY_VERIFY_WITH_TIMEOUT(view.stats().samples >= 8 && !view.stats().preparing, 60000);
-            out = meanAround(view.grabFramebuffer(), pixel, 2);
+            out = glint::test::meanRgbAround(view.grabFramebuffer(), pixel, 2);
         };
         long long paints = view.stats().paints;
 

@@ -96,6 +96,21 @@ inline double clearColourShare(const QImage& image) {
     return rgb.isNull() ? 1.0 : double(n) / (double(rgb.width()) * rgb.height());
 }
 
+// Mean 8-bit red, green and blue over the square of `half` pixels around `at` (inside the image).
+inline glm::dvec3 meanRgbAround(const QImage& image, QPoint at, int half) {
+    glm::dvec3 sum(0.0);
+    int count = 0;
+    const QImage rgb = image.convertToFormat(QImage::Format_RGB32);
+    for (int y = at.y() - half; y <= at.y() + half; ++y)
+        for (int x = at.x() - half; x <= at.x() + half; ++x) {
+            if (!rgb.valid(x, y)) continue;
+            const QRgb p = rgb.pixel(x, y);
+            sum += glm::dvec3(qRed(p), qGreen(p), qBlue(p));
+            ++count;
+        }
+    return count ? sum / double(count) : sum;
+}
+
 inline ImageStats imageStats(const QImage& image) {
     ImageStats s;
     if (image.isNull()) return s;
