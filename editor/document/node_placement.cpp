@@ -101,7 +101,8 @@ Placement placeNewNode(const Component& unit, const ViewFocus& focus) {
         }
     } else if (const auto* light = std::get_if<Light>(&unit)) {
         Light placed = *light;
-        const double height = std::min(kLightHeight * scale, kHeadroomShare * focus.headroom);
+        const double free = std::max(0.0, focus.headroom - focus.clearFrom);
+        const double height = focus.clearFrom + std::min(kLightHeight * scale, kHeadroomShare * free);
         out.worldFromNode.translation = glm::vec3(focus.point + glm::dvec3(0.0, height, 0.0));
         if (placed.type == LightType::Sun) {
             out.worldFromNode.rotation = sunRotation();

@@ -18,8 +18,11 @@ namespace glint::editor {
 struct ViewFocus {
     glm::dvec3 point{0.0};  // the view's orbit centre, world space
     double scale = 1.0;     // metres: the size of what is looked at (the scene, else the view's distance)
-    double headroom = 1e30; // free space straight above `point` before a surface, metres
+    double headroom = 1e30; // from `point` straight up to the first surface over it, metres
     double floor = 1e30;    // distance straight down from `point` to the first surface (1e30: none)
+    // How far above `point` the free space starts: past the tops of objects around the focus itself
+    // (a sphere just added there must not swallow the light added next); 0 when it is clear.
+    double clearFrom = 0.0;
 };
 
 struct Placement {

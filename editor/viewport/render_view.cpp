@@ -174,8 +174,21 @@ ViewFocus RenderView::focus() {
     for (const bvh::Aabb& box : picker().instanceBounds()) scene.grow(box);
     const double reach = 2.0 * camera_.distance;
     f.scale = scene.empty() ? reach : std::min(reach, double(glm::length(scene.extent())));
-    const PickResult above = picker().pick({glm::vec3(f.point), glm::vec3(0.0f, 1.0f, 0.0f)});
-    if (above.node.valid()) f.headroom = above.t;
+    // Straight up to the first surface over the focus, past objects whose bounds hold the point the
+    // ray starts from (the focus inside a shape just added there): their tops are where it is clear.
+    glm::vec3 from(f.point);
+    for (int passed = 0; passed < 8; ++passed) {
+        const PickResult above = picker().pick({from, glm::vec3(0.0f, 1.0f, 0.0f)});
+        if (!above.node.valid()) break;
+        const bvh::Aabb box = picker().worldBounds(above.node);
+        const bool around = glm::all(glm::greaterThanEqual(from, box.lo)) && glm::all(glm::lessThanEqual(from, box.hi));
+        if (!around) {
+            f.headroom = double(from.y) - f.point.y + above.t;
+            break;
+        }
+        from.y = box.hi.y + 1e-3f * std::max(1.0f, std::abs(box.hi.y));
+        f.clearFrom = double(from.y) - f.point.y;
+    }
     const PickResult below = picker().pick({glm::vec3(f.point), glm::vec3(0.0f, -1.0f, 0.0f)});
     if (below.node.valid()) f.floor = below.t;
     return f;

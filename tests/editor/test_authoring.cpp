@@ -117,6 +117,11 @@ private slots:
         // It rests on the ground plane under the view's focus.
         const float radius = document.scene().at(sphere).get<Shape>()->radius;
         QVERIFY(std::abs(document.scene().at(sphere).local.translation.y - radius) < 1e-4f);
+        // A light added next hangs above the sphere, not inside it (the focus is inside the sphere).
+        QCOMPARE(addNode(document, "Lamp", defaultLight(LightType::Point)), QString());
+        const NodeId lamp = document.selection().front();
+        QVERIFY(document.scene().at(lamp).local.translation.y > 2.0f * radius);
+        document.undo();
         const MaterialId materialId = document.scene().at(sphere).get<Shape>()->material;
         QVERIFY(document.scene().materials.contains(materialId));
         RenderView& view = window.viewport()->view();
