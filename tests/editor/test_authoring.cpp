@@ -3,6 +3,7 @@
 // turned red renders red in the path-traced view, and the gizmo's local-axes toggle moves a turned
 // node along its own axis.
 #include "test_viewport_scene.h"
+#include "window_options.h"
 
 #include "editor/document/edit_operations.h"
 #include "editor/document/scene_templates.h"
@@ -24,12 +25,6 @@ using namespace glint::editor;
 
 namespace {
 
-MainWindow::Options options(const QString& autosaveFolder) {
-    MainWindow::Options o;
-    o.autosaveFolder = autosaveFolder;
-    o.askBeforeRecovery = false;
-    return o;
-}
 
 void sendMouse(QWidget& w, QEvent::Type type, QPointF at, Qt::MouseButton button, Qt::MouseButtons buttons) {
     QMouseEvent event(type, at, w.mapToGlobal(at), button, buttons, Qt::NoModifier);
@@ -66,7 +61,7 @@ private slots:
     // Each template: its content, and the view it starts with. Lit templates are neither black nor
     // blown out (mean between 0.05 and 0.85 of white) with no "nothing emits light" hint; Empty shows the hint.
     void templatesStartLitAndFramed() {
-        MainWindow window(options(temp_.filePath("autosave-templates")));
+        MainWindow window(glint::editor::test::windowOptions(temp_.filePath("autosave-templates")));
         window.resize(640, 480);
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
@@ -79,7 +74,7 @@ private slots:
             QVERIFY2(window.document().filePath().isEmpty(), qPrintable(name)); // untitled
             const QImage shot = view.grabFramebuffer();
             shot.save(QStringLiteral(GLINT_TEST_OUTPUT_DIR "/authoring_%1.png").arg(templateActionId(kind)));
-            const double mean = test::imageStats(shot).mean;
+            const double mean = glint::test::imageStats(shot).mean;
             qInfo("%s: %zu nodes, view mean %.1f, hint '%s'", qPrintable(name), scene.nodes().size(), mean,
                   qPrintable(view.stats().hint));
             if (kind == SceneTemplate::Empty) {
@@ -106,7 +101,7 @@ private slots:
     // Studio, Add > Sphere, its own material made red: the sphere's pixels in the path-traced view
     // turn from grey to red (red over twice green and blue), and undo brings the grey back.
     void aSphereWithANewRedMaterialRendersRed() {
-        MainWindow window(options(temp_.filePath("autosave-red")));
+        MainWindow window(glint::editor::test::windowOptions(temp_.filePath("autosave-red")));
         window.resize(640, 480);
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
@@ -155,7 +150,7 @@ private slots:
     // action, key L): the X handle is the box's own X (the world's -Z), and dragging it moves the
     // box along that axis only.
     void localAxesMoveAlongTheNodesOwnAxis() {
-        MainWindow window(options(temp_.filePath("autosave-axes")));
+        MainWindow window(glint::editor::test::windowOptions(temp_.filePath("autosave-axes")));
         window.resize(640, 480);
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));

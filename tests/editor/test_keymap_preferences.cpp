@@ -4,6 +4,7 @@
 // strings, the viewport's texts and the view modes follow the language; W/E/R and G/S switch the
 // gizmo from anywhere in the window.
 #include "editor_fixtures.h"
+#include "window_options.h"
 #include "test_viewport_scene.h"
 
 #include "editor/document/edit_operations.h"
@@ -103,12 +104,6 @@ void chooseLanguage(PreferencesDialog& dialog, const QString& code) {
     language->setCurrentIndex(language->findData(code));
 }
 
-MainWindow::Options options(const QString& autosave) {
-    MainWindow::Options o;
-    o.autosaveFolder = autosave;
-    o.askBeforeRecovery = false;
-    return o;
-}
 
 // Gives the viewport's render view the keyboard focus in an active window (shortcuts need both).
 void focusView(MainWindow& window) {
@@ -135,7 +130,7 @@ private slots:
         QTemporaryDir temp;
         Shortcuts defaults;
         {
-            MainWindow window(options(temp.filePath("a")));
+            MainWindow window(glint::editor::test::windowOptions(temp.filePath("a")));
             focusView(window);
             defaults = shortcutsOf(window);
             QCOMPARE(defaults.value("view.mode.normals").value(0), QKeySequence(Qt::Key_4));
@@ -158,7 +153,7 @@ private slots:
             QTest::keyClick(&window.viewport()->view(), Qt::Key_N);
             QCOMPARE(window.viewport()->view().mode(), ViewMode::Normals);
         }
-        MainWindow restarted(options(temp.filePath("b")));
+        MainWindow restarted(glint::editor::test::windowOptions(temp.filePath("b")));
         Shortcuts expected = defaults;
         expected["view.mode.normals"] = {QKeySequence(Qt::Key_N)};
         QCOMPARE(shortcutsOf(restarted), expected);
@@ -187,7 +182,7 @@ private slots:
     // Issue 17, item 2: OK after a live switch to German and back; names and Qt's strings follow.
     void okAfterALanguageChangeInBothDirections() {
         QTemporaryDir temp;
-        MainWindow window(options(temp.filePath("c")));
+        MainWindow window(glint::editor::test::windowOptions(temp.filePath("c")));
         focusView(window);
         window.document().newScene(); // nothing emits light: the viewport says so
         RenderView& view = window.viewport()->view();
@@ -237,7 +232,7 @@ private slots:
         settings.setValue("keymap/view.gizmo.rotate", "");
         settings.setValue("keymap/view.mode.normals", "N");
         QTemporaryDir temp;
-        MainWindow window(options(temp.filePath("e")));
+        MainWindow window(glint::editor::test::windowOptions(temp.filePath("e")));
         QCOMPARE(actionNamed(window, "view.gizmo.rotate")->shortcut(), QKeySequence(Qt::Key_E));
         QCOMPARE(actionNamed(window, "view.mode.normals")->shortcut(), QKeySequence(Qt::Key_N));
     }
@@ -245,7 +240,7 @@ private slots:
     // W/E/R switch the gizmo wherever the focus is (not in a text field), G and S too.
     void gizmoKeysWorkFromAnyPanel() {
         QTemporaryDir temp;
-        MainWindow window(options(temp.filePath("d")));
+        MainWindow window(glint::editor::test::windowOptions(temp.filePath("d")));
         focusView(window);
         RenderView& view = window.viewport()->view();
         QTreeView& outliner = window.outliner().view();

@@ -3,6 +3,7 @@
 // red in the path-traced view, a texture file loaded into base colour and seen in the view, undo of
 // each step, and save -> reopen giving the same document with the texture copied beside the scene.
 #include "editor_fixtures.h"
+#include "window_options.h"
 #include "test_viewport_scene.h"
 
 #include "editor/document/edit_operations.h"
@@ -45,12 +46,6 @@ using namespace glint::editor;
 
 namespace {
 
-MainWindow::Options options(const QString& autosaveFolder) {
-    MainWindow::Options o;
-    o.autosaveFolder = autosaveFolder;
-    o.askBeforeRecovery = false;
-    return o;
-}
 
 
 } // namespace
@@ -131,7 +126,7 @@ private slots:
     // dropped on the sphere in the outliner, the colour turned red (red in the view), a texture file
     // loaded into base colour (its colour in the view), undo of each step, save -> reopen.
     void aMaterialFromThePanelRendersOnTheSphere() {
-        MainWindow window(options(temp_.filePath("autosave-panel")));
+        MainWindow window(glint::editor::test::windowOptions(temp_.filePath("autosave-panel")));
         window.resize(1100, 700);
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));

@@ -2,6 +2,7 @@
 // marker, save -> reopen -> save byte-identical, autosave recovery after a simulated crash, and
 // a screenshot of the whole window (with the viewport) for a person to look at.
 #include "editor_fixtures.h"
+#include "window_options.h"
 #include "test_viewport_scene.h"
 
 #include "editor/document/edit_operations.h"
@@ -48,15 +49,8 @@ QByteArray readAll(const QString& path) {
     return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
 }
 
-MainWindow::Options withViewport(const QString& autosaveFolder) {
-    MainWindow::Options options;
-    options.autosaveFolder = autosaveFolder;
-    options.askBeforeRecovery = false;
-    return options;
-}
-
 MainWindow::Options panelsOnly(const QString& autosaveFolder) {
-    MainWindow::Options options = withViewport(autosaveFolder);
+    MainWindow::Options options = windowOptions(autosaveFolder);
     options.createViewport = false;
     return options;
 }
@@ -420,7 +414,7 @@ void WindowTest::undoFollowsADelete() {
 // Hiding and deleting nodes in the opened Cornell box each need a new GPU scene: the viewport must
 // come back to a path-traced picture every time, never stay on the bare clear colour.
 void WindowTest::viewportRendersAfterStructuralEdits() {
-    MainWindow window(withViewport(temp_.filePath("autosave-i")));
+    MainWindow window(windowOptions(temp_.filePath("autosave-i")));
     window.resize(640, 420);
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
@@ -444,7 +438,7 @@ void WindowTest::viewportRendersAfterStructuralEdits() {
 }
 
 void WindowTest::screenshotOfTheMainWindow() {
-    MainWindow window(withViewport(temp_.filePath("autosave-d")));
+    MainWindow window(windowOptions(temp_.filePath("autosave-d")));
     window.resize(1200, 700);
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
