@@ -2218,6 +2218,26 @@
         <source>Area</source>
         <translation>Fläche</translation>
     </message>
+    <message>
+        <source>Viewport</source>
+        <translation>Ansicht</translation>
+    </message>
+    <message>
+        <source>Viewport samples</source>
+        <translation>Samples der Ansicht</translation>
+    </message>
+    <message>
+        <source>No limit</source>
+        <translation>Keine Grenze</translation>
+    </message>
+    <message>
+        <source>The viewport stops adding samples per pixel here; renders use the samples per pixel above</source>
+        <translation>Die Ansicht hört hier auf, Samples pro Pixel hinzuzufügen; Renderings verwenden die Samples pro Pixel oben</translation>
+    </message>
+    <message>
+        <source>Rendering</source>
+        <translation>Rendern</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::RecoveryBar</name>

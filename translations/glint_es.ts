@@ -2218,6 +2218,26 @@
         <source>Area</source>
         <translation>Área</translation>
     </message>
+    <message>
+        <source>Viewport</source>
+        <translation>Vista</translation>
+    </message>
+    <message>
+        <source>Viewport samples</source>
+        <translation>Muestras de la vista</translation>
+    </message>
+    <message>
+        <source>No limit</source>
+        <translation>Sin límite</translation>
+    </message>
+    <message>
+        <source>The viewport stops adding samples per pixel here; renders use the samples per pixel above</source>
+        <translation>La vista deja de añadir muestras por píxel aquí; los renders usan las muestras por píxel de arriba</translation>
+    </message>
+    <message>
+        <source>Rendering</source>
+        <translation>Render</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::RecoveryBar</name>

@@ -2218,6 +2218,26 @@
         <source>Area</source>
         <translation>Surfacique</translation>
     </message>
+    <message>
+        <source>Viewport</source>
+        <translation>Vue</translation>
+    </message>
+    <message>
+        <source>Viewport samples</source>
+        <translation>Échantillons de la vue</translation>
+    </message>
+    <message>
+        <source>No limit</source>
+        <translation>Aucune limite</translation>
+    </message>
+    <message>
+        <source>The viewport stops adding samples per pixel here; renders use the samples per pixel above</source>
+        <translation>La vue cesse d'ajouter des échantillons par pixel ici ; les rendus utilisent les échantillons par pixel ci-dessus</translation>
+    </message>
+    <message>
+        <source>Rendering</source>
+        <translation>Rendu</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::RecoveryBar</name>

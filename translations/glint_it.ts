@@ -2218,6 +2218,26 @@
         <source>Area</source>
         <translation>Area</translation>
     </message>
+    <message>
+        <source>Viewport</source>
+        <translation>Vista</translation>
+    </message>
+    <message>
+        <source>Viewport samples</source>
+        <translation>Campioni della vista</translation>
+    </message>
+    <message>
+        <source>No limit</source>
+        <translation>Nessun limite</translation>
+    </message>
+    <message>
+        <source>The viewport stops adding samples per pixel here; renders use the samples per pixel above</source>
+        <translation>La vista smette di aggiungere campioni per pixel qui; i render usano i campioni per pixel sopra</translation>
+    </message>
+    <message>
+        <source>Rendering</source>
+        <translation>Rendering</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::RecoveryBar</name>

@@ -169,6 +169,15 @@ void MainWindow::createDocks() {
     tabifyDockWidget(logDock, timelineDock);
     timelineDock->raise();
     splitDockWidget(outlinerDock, historyDock, Qt::Vertical);
+    if (viewport_) {
+        sceneSettings_->setViewportControls({[this] { return preferences_.viewportSamples; },
+                                             [this](int samples) {
+                                                 preferences_.viewportSamples = samples;
+                                                 preferences_.save();
+                                                 viewport_->setSampleCap(samples);
+                                             },
+                                             viewport_->pauseAction()});
+    }
     tabifyDockWidget(propertiesDock, sceneDock);
     tabifyDockWidget(propertiesDock, materialsDock);
     propertiesDock->raise();
@@ -215,6 +224,7 @@ void MainWindow::applyPreferences() {
         applyTheme(*app, themeFromName(preferences_.theme), options_.systemPalette);
     autosave_->setIntervalMinutes(preferences_.autosaveMinutes);
     if (viewport_) viewport_->setSampleCap(preferences_.viewportSamples);
+    if (sceneSettings_) sceneSettings_->refresh(); // its Viewport samples field shows the preference
     // An override replaces the action's shortcuts; without one the defaults (aliases too) apply.
     for (QAction* action : keymapActions()) {
         auto it = preferences_.keymap.find(action->objectName());

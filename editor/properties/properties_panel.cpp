@@ -21,6 +21,11 @@ PropertiesPanel::PropertiesPanel(Document& document, bool scene, QWidget* parent
     rebuild();
 }
 
+void PropertiesPanel::setViewportControls(ViewportControls controls) {
+    viewportControls_ = std::move(controls);
+    rebuild();
+}
+
 void PropertiesPanel::changeEvent(QEvent* event) {
     QScrollArea::changeEvent(event);
     // The forms hold their labels as plain text: build them again in the new language.
@@ -69,6 +74,7 @@ void PropertiesPanel::rebuild() {
         layout_->addWidget(form);
     };
     if (scene_) {
+        if (viewportControls_) add(makeViewportForm(document_, viewportControls_, content_));
         add(makeRenderForm(document_, report, content_));
         add(makeReconstructionForm(document_, report, content_));
         add(makeProjectForm(document_, report, content_));

@@ -3,6 +3,8 @@
 // The forms are rebuilt only when what they show changes kind (another node, another component
 // or material); otherwise they re-read the document, so a slider being dragged survives the
 // document's changed() signal its own edits cause.
+#include "sections.h"
+
 #include "scene/core/ids.h"
 #include "scene/history/change_set.h"
 
@@ -26,6 +28,10 @@ public:
     PropertiesPanel(Document& document, bool scene, QWidget* parent = nullptr);
 
     const std::vector<PropertyForm*>& forms() const { return forms_; }
+    // The scene panel's Viewport section, first of its forms (the editor's, not the document's).
+    void setViewportControls(ViewportControls controls);
+    // Read every field again: for settings that change outside the document (preferences).
+    void refresh() { update(); }
 
 signals:
     void message(const QString& text);
@@ -59,6 +65,7 @@ private:
     std::size_t primitive_ = 0; // the primitive of the current mesh whose material is shown
     NodeId primitiveNode_;      // the node primitive_ belongs to
     bool built_ = false;
+    ViewportControls viewportControls_;
 };
 
 } // namespace glint::editor

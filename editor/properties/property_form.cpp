@@ -275,7 +275,7 @@ QLineEdit* PropertyForm::addText(const QString& label, std::function<QString()> 
     return edit;
 }
 
-void PropertyForm::addInt(const QString& label, int min, int max, std::function<int()> get, std::function<void(int)> set) {
+QSpinBox* PropertyForm::addInt(const QString& label, int min, int max, std::function<int()> get, std::function<void(int)> set) {
     auto* spin = new QSpinBox(this);
     spin->setRange(min, max);
     spin->setKeyboardTracking(false);
@@ -284,6 +284,7 @@ void PropertyForm::addInt(const QString& label, int min, int max, std::function<
         QSignalBlocker block(spin);
         spin->setValue(get());
     });
+    return spin;
 }
 
 void PropertyForm::refresh() {

@@ -17,6 +17,7 @@ class QLineEdit;
 class QSlider;
 class QDoubleSpinBox;
 class QPushButton;
+class QSpinBox;
 
 namespace glint::editor {
 
@@ -80,7 +81,7 @@ public:
     void addCheck(const QString& label, std::function<bool()> get, std::function<void(bool)> set);
     void addChoice(const QString& label, const QStringList& items, std::function<int()> get, std::function<void(int)> set);
     QLineEdit* addText(const QString& label, std::function<QString()> get, std::function<void(const QString&)> set);
-    void addInt(const QString& label, int min, int max, std::function<int()> get, std::function<void(int)> set);
+    QSpinBox* addInt(const QString& label, int min, int max, std::function<int()> get, std::function<void(int)> set);
     void addWidget(const QString& label, QWidget* widget, std::function<void()> refresh);
     // A sentence across the form's width: what a field-less thing is (the infinite ground plane).
     void addNote(const QString& text);

@@ -14,6 +14,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QSignalBlocker>
+#include <QSpinBox>
 #include <QToolButton>
 #include <QVBoxLayout>
 
@@ -178,6 +179,22 @@ PropertyForm* makeRenderForm(Document& document, const Report& report, QWidget* 
         PropertyForm::tr("Light units"), {PropertyForm::tr("Blender (W = lm / 683)"), PropertyForm::tr("Raw")},
         [&scene] { return static_cast<int>(scene.settings.lightUnits); },
         [edit](int i) { edit([&](ProjectSettings& s) { s.lightUnits = static_cast<LightUnits>(i); }, 0); });
+    return form;
+}
+
+PropertyForm* makeViewportForm(Document& document, const ViewportControls& controls, QWidget* parent) {
+    // Not undoable: like the preferences dialog's field it is the editor's setting, kept across
+    // scenes; a render's samples are the Render settings' field above.
+    auto* form = new PropertyForm(document, PropertyForm::tr("Viewport"), parent);
+    QSpinBox* samples = form->addInt(PropertyForm::tr("Viewport samples"), 0, 1 << 20, controls.sampleCap, controls.setSampleCap);
+    samples->setSpecialValueText(PropertyForm::tr("No limit"));
+    samples->setToolTip(PropertyForm::tr("The viewport stops adding samples per pixel here; renders use the samples per pixel above"));
+    if (controls.pause) {
+        auto* pause = new QToolButton(form);
+        pause->setDefaultAction(controls.pause);
+        pause->setToolButtonStyle(Qt::ToolButtonTextOnly);
+        form->addWidget(PropertyForm::tr("Rendering"), pause, [] {});
+    }
     return form;
 }
 

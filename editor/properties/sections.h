@@ -7,6 +7,8 @@
 
 #include <QString>
 
+class QAction;
+
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -19,6 +21,15 @@ namespace glint::editor {
 
 class Document;
 using Report = std::function<void(const QString&)>;
+
+// The viewport's own settings, which belong to the editor (preferences), not to the document: its
+// sample cap (0 = none) and its pause. Empty functions: there is no viewport.
+struct ViewportControls {
+    std::function<int()> sampleCap;
+    std::function<void(int)> setSampleCap;
+    QAction* pause = nullptr;
+    explicit operator bool() const { return sampleCap && setSampleCap; }
+};
 
 PropertyForm* makeNodeForm(Document& document, NodeId node, const Report& report, QWidget* parent);
 PropertyForm* makeTransformForm(Document& document, NodeId node, const Report& report, QWidget* parent);
@@ -38,5 +49,6 @@ PropertyForm* makeEnvironmentForm(Document& document, const Report& report, QWid
 PropertyForm* makeRenderForm(Document& document, const Report& report, QWidget* parent);
 PropertyForm* makeProjectForm(Document& document, const Report& report, QWidget* parent);
 PropertyForm* makeReconstructionForm(Document& document, const Report& report, QWidget* parent);
+PropertyForm* makeViewportForm(Document& document, const ViewportControls& controls, QWidget* parent);
 
 } // namespace glint::editor

@@ -10,7 +10,9 @@
 #include "editor/document/edit_operations.h"
 #include "editor/main_window/main_window.h"
 #include "editor/outliner/outliner_panel.h"
+#include "editor/properties/properties_panel.h"
 #include "editor/preferences/language.h"
+#include "editor/preferences/preferences.h"
 #include "editor/preferences/preferences_dialog.h"
 #include "editor/viewport/render_view.h"
 #include "editor/viewport/viewport.h"
@@ -26,9 +28,11 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSettings>
+#include <QSpinBox>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTimer>
+#include <QToolButton>
 #include <QTreeView>
 
 #include <functional>
@@ -224,6 +228,47 @@ private slots:
         QCOMPARE(shortcutsOf(window), defaults);
         QTRY_VERIFY2(view.stats().hint.startsWith("Nothing in the scene emits light"), qPrintable(view.stats().hint));
         QVERIFY(QSettings().value("ui/language").toString() == "en");
+    }
+
+    // Issue 12: the viewport's sample cap is a field of the Scene panel as well as of the
+    // preferences, one setting for both; the view stops there, and the panel's Pause button pauses it.
+    void viewportSamplesInTheScenePanel() {
+        QTemporaryDir temp;
+        MainWindow window(glint::editor::test::windowOptions(temp.filePath("d")));
+        focusView(window);
+        auto* samples = glint::editor::test::fieldNamed<QSpinBox>(window.sceneSettings(), "Viewport samples");
+        QVERIFY(samples);
+        QCOMPARE(samples->value(), Preferences{}.viewportSamples);
+        samples->setValue(4);
+        RenderView& view = window.viewport()->view();
+        QCOMPARE(view.sampleCap(), 4);
+        QCOMPARE(QSettings().value("viewport/samples").toInt(), 4);
+        QTRY_VERIFY_WITH_TIMEOUT(view.stats().stage == ViewStage::Converged, 60000);
+        QCOMPARE(view.stats().samples, 4);
+        // Changed in the preferences: the panel shows it.
+        const DialogRun run = runPreferences(window, [](PreferencesDialog& dialog) {
+            auto* field = glint::editor::test::fieldNamed<QSpinBox>(dialog, PreferencesDialog::tr("Viewport samples"));
+            QVERIFY(field);
+            QCOMPARE(field->value(), 4);
+            field->setValue(0);
+        });
+        QVERIFY2(run.accepted, qPrintable(run.refusal));
+        QCOMPARE(samples->value(), 0);
+        QCOMPARE(samples->text(), QString("No limit"));
+        QCOMPARE(view.sampleCap(), 0);
+        QTRY_VERIFY_WITH_TIMEOUT(view.stats().samples > 4, 60000); // no cap: it goes on
+        QToolButton* pause = nullptr;
+        for (auto* button : window.sceneSettings().findChildren<QToolButton*>())
+            if (button->defaultAction() == window.viewport()->pauseAction()) pause = button;
+        QVERIFY(pause);
+        pause->click();
+        QVERIFY(view.paused());
+        QTRY_VERIFY_WITH_TIMEOUT(view.stats().stage == ViewStage::Paused, 30000);
+        const int pausedAt = view.stats().samples;
+        QTest::qWait(500);
+        QCOMPARE(view.stats().samples, pausedAt);
+        pause->click();
+        QVERIFY(!view.paused());
     }
 
     // A keymap saved before version 2 held every action, empty ones too: those are not bindings.
