@@ -22,6 +22,8 @@
 #include "editor/viewport/view_camera.h"
 #include "editor/viewport/viewport.h"
 
+#include <algorithm>
+
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -181,9 +183,6 @@ void MainWindow::createDocks() {
     tabifyDockWidget(propertiesDock, sceneDock);
     tabifyDockWidget(propertiesDock, materialsDock);
     propertiesDock->raise();
-    // The viewport gets most of the room until the user's own layout is restored.
-    resizeDocks({outlinerDock, propertiesDock}, {260, 440}, Qt::Horizontal);
-    resizeDocks({logDock}, {150}, Qt::Vertical);
     for (auto* panel : {static_cast<QObject*>(outliner_), static_cast<QObject*>(properties_),
                         static_cast<QObject*>(sceneSettings_), static_cast<QObject*>(history_), static_cast<QObject*>(materials_)})
         connect(panel, SIGNAL(message(QString)), log_, SLOT(warning(QString)));
@@ -192,7 +191,20 @@ void MainWindow::createDocks() {
 void MainWindow::restoreLayout() {
     QSettings settings;
     if (!restoreGeometry(settings.value("window/geometry").toByteArray())) fitToScreen();
-    restoreState(settings.value("window/state").toByteArray());
+    if (!restoreState(settings.value("window/state").toByteArray())) fitDocks();
+}
+
+// The viewport gets most of the room until the user's own layout is restored: the side docks take
+// a share of the window's width and the bottom ones of its height, so a small screen (a laptop at
+// 1024x640) still leaves the view more than half of the window.
+void MainWindow::fitDocks() {
+    auto dock = [this](const char* name) { return findChild<QDockWidget*>(QLatin1String(name)); };
+    auto share = [](int whole, double fraction, int least, int most) {
+        return std::clamp(int(whole * fraction), least, most);
+    };
+    resizeDocks({dock("OutlinerDock"), dock("PropertiesDock")},
+                {share(width(), 0.17, 160, 260), share(width(), 0.24, 220, 440)}, Qt::Horizontal);
+    resizeDocks({dock("LogDock")}, {share(height(), 0.2, 110, 200)}, Qt::Vertical);
 }
 
 // The first start: most of the screen, centred (Qt's default is two thirds of it or less).

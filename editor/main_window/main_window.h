@@ -115,6 +115,7 @@ private:
     void rememberDefaultShortcuts();
     void restoreLayout();
     void fitToScreen();
+    void fitDocks();
     void saveLayout();
     void updateTitle();
     void updateStatus();
