@@ -88,11 +88,11 @@ void GpuScene::updateTransforms(const Scene& scene) {
 }
 
 bool GpuScene::updateMaterials(const Scene& scene) {
-    if (texturesUsed(scene, meshMaterials(scene)) != texturesUsed_) return false; // another texture set
+    if (texturesUsed(scene, texturedMaterials(scene)) != texturesUsed_) return false; // another texture set
     SceneFeatures features = features_;
     features.alpha = features.singleSided = false;
     addMeshMaterialFeatures(scene, features);
-    features.extensionTextures = extensionTexturesUsed(scene, meshMaterials(scene), textureSlots_);
+    features.extensionTextures = extensionTexturesUsed(scene, texturedMaterials(scene), textureSlots_);
     if (features.alpha != features_.alpha || features.singleSided != features_.singleSided ||
         features.extensionTextures != features_.extensionTextures)
         return false; // another variant
@@ -112,7 +112,7 @@ void GpuScene::bind(const gl::ShaderProgram& program) const {
     glUniform1i(program.uniform("uLightCount"), packed_.lightCount);
     if (features_.emissiveShapes) glUniform1f(program.uniform("uShapeEmitterPower"), packed_.shapeEmitterPower);
     meshes_.bind(program, firstMeshUnit);
-    if (features_.meshes && features_.textures) textureArrays_.bind(program, firstTextureUnit);
+    if (features_.textures) textureArrays_.bind(program, firstTextureUnit);
     const glm::vec3 colour = environment_.color * environment_.intensity;
     glUniform3fv(program.uniform("uEnvironmentColor"), 1, glm::value_ptr(colour));
     if (features_.environmentMap) {

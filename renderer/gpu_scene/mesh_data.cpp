@@ -3,6 +3,7 @@
 #include "renderer/bvh/bvh_layout.h"
 #include "renderer/bvh/mesh_bvh.h"
 #include "renderer/bvh/validate.h"
+#include "renderer/gpu_scene/texture_refs.h"
 #include "renderer/gpu_scene/visibility.h"
 
 #include <algorithm>
@@ -55,13 +56,6 @@ std::vector<glm::vec4> vertexTexels(const Scene& scene, const std::vector<MeshId
                 texels.push_back(v < p.colors.size() ? p.colors[v] : glm::vec4(1.0f));
             }
     return texels;
-}
-
-// Emission that light sampling assumes: the factors. Emissive-textured materials are left to BSDF
-// sampling (shaders/pathtrace/material.glsl), since a factor would misstate their texels.
-glm::vec3 sampledEmission(const Scene& scene, const Material& m) {
-    if (m.emissiveTexture.valid() && scene.textures.contains(m.emissiveTexture.texture)) return glm::vec3(0.0f);
-    return m.emissiveFactor * m.emissiveStrength;
 }
 
 EmissiveTriangles emissiveTriangles(const Scene& scene, const MeshData& data, const std::map<MaterialId, int>& materialIndex) {

@@ -11,8 +11,8 @@
 namespace glint::renderer {
 namespace {
 
-// `emission`: the radiance its material emits (factors: shapes have no texture coordinates). An
-// emissive shape is light-sampled with the power luminance x world area (one side of a quad or disk,
+// `emission`: the radiance light sampling assumes (sampledEmission: none for an emissive texture,
+// which BSDF sampling alone finds). An emissive shape is light-sampled with the power luminance x world area (one side of a quad or disk,
 // the outside of a closed shape); the infinite ground plane never is.
 void packShape(PackedScene& out, const Shape& shape, const glm::mat4& worldFromLocal, float objectId, int material,
                glm::vec3 emission) {
@@ -108,7 +108,7 @@ PackedScene packScene(const Scene& scene, const TextureSet* textures) {
             const Material* material = scene.materials.find(shape->material);
             packShape(out, *shape, scene.worldFromNode(id), static_cast<float>(id.value),
                       it == out.materialIndex.end() ? 0 : it->second,
-                      material ? material->emissiveFactor * material->emissiveStrength : glm::vec3(0.0f));
+                      material ? sampledEmission(scene, *material) : glm::vec3(0.0f));
         } else if (const auto* light = node.get<Light>()) {
             if (light->type == LightType::Area)
                 packAreaLight(out, *light, scene.worldFromNode(id), static_cast<float>(id.value));

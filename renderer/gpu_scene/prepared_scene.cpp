@@ -62,7 +62,7 @@ std::map<std::string, std::string> SceneFeatures::defines() const {
     std::map<std::string, std::string> defines;
     if (meshes) defines["HAS_MESHES"] = "";
     if (environmentMap) defines["HAS_ENV_MAP"] = "";
-    if (meshes && textures) {
+    if (textures) { // meshes or shapes
         defines["HAS_TEXTURES"] = "";
         defines["TEXTURE_ARRAY_COUNT"] = std::to_string(textureArrays);
         for (const std::string& name : extensionTextureDefines(extensionTextures)) defines[name] = "";
@@ -95,7 +95,7 @@ std::string textureWarningCode(const std::string& message) {
 PreparedScene prepareScene(const Scene& scene, const std::filesystem::path& environmentFile, const TextureLimits& limits,
                            MeshBvhCache& meshCache, const PrepareControl& control, TextureCache* textureCache) {
     PreparedScene out;
-    const std::set<MaterialId> materials = meshMaterials(scene);
+    const std::set<MaterialId> materials = texturedMaterials(scene);
     out.texturesUsed = texturesUsed(scene, materials);
     {
         const ReportingDecoder decoder(control, out.texturesUsed.size());

@@ -64,6 +64,11 @@ void appendMaterialTextureRefs(std::vector<glm::vec4>& out, const Scene* scene, 
     add(m.thicknessTexture, false);
 }
 
+glm::vec3 sampledEmission(const Scene& scene, const Material& m) {
+    if (m.emissiveTexture.valid() && scene.textures.contains(m.emissiveTexture.texture)) return glm::vec3(0.0f);
+    return m.emissiveFactor * m.emissiveStrength;
+}
+
 unsigned extensionTexturesUsed(const Scene& scene, const std::set<MaterialId>& materials, const TextureSet& textures) {
     unsigned mask = 0;
     const auto has = [&](const TextureRef& ref, bool srgb) { return refSlot(&scene, ref, srgb, &textures).bucket >= 0; };

@@ -38,6 +38,11 @@ void appendTextureRef(std::vector<glm::vec4>& out, const TextureRef& ref, Textur
 // emission and specular colour). Without a texture set every reference is empty.
 void appendMaterialTextureRefs(std::vector<glm::vec4>& out, const Scene* scene, const Material& m, const TextureSet* textures);
 
+// Emission that light sampling assumes for `m`: its factors, or none when an emissive texture
+// modulates them (a factor would misstate the texels): such surfaces are found by BSDF sampling
+// alone (shaders/pathtrace/material.glsl).
+glm::vec3 sampledEmission(const Scene& scene, const Material& m);
+
 // ExtensionTextureBits of the textures that `materials` sample and `textures` holds.
 unsigned extensionTexturesUsed(const Scene& scene, const std::set<MaterialId>& materials, const TextureSet& textures);
 

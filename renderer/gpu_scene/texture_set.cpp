@@ -93,6 +93,15 @@ std::set<MaterialId> meshMaterials(const Scene& scene) {
     return used;
 }
 
+std::set<MaterialId> texturedMaterials(const Scene& scene) {
+    std::set<MaterialId> used = meshMaterials(scene);
+    for (const NodeId id : scene.depthFirst()) {
+        const Node& node = scene.at(id);
+        if (const auto* shape = node.get<Shape>(); shape && visibleInWorld(scene, node)) used.insert(shape->material);
+    }
+    return used;
+}
+
 std::set<std::pair<ImageId, bool>> texturesUsed(const Scene& scene, const std::set<MaterialId>& materials) {
     std::set<Use> uses;
     const auto add = [&](const TextureRef& ref, bool srgb) {

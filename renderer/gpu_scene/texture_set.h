@@ -48,8 +48,11 @@ struct TextureSet {
     bool empty() const { return buckets.empty(); }
 };
 
-// Materials that visible mesh primitives use: only meshes carry texture coordinates.
+// Materials that visible mesh primitives use (their alpha and sidedness select shader variants).
 std::set<MaterialId> meshMaterials(const Scene& scene);
+// Materials whose textures the path tracer samples: those of visible meshes and of visible analytic
+// shapes (which have texture coordinates of their own, docs/MATERIALS.md).
+std::set<MaterialId> texturedMaterials(const Scene& scene);
 
 // The (image, sRGB) pairs that `materials` sample: when it is unchanged, a material edit needs no
 // new texture set (only new material records).

@@ -40,10 +40,20 @@ struct SurfaceShading {
 };
 
 #ifdef HAS_TEXTURES
+#include "shape_surface.glsl"
+
+TexturedSurface texturedSurface(Hit hit, vec3 rayDirection, float coneWidth) {
+#ifdef HAS_MESHES
+    if (hit.onMesh)
+        return meshSurface(hit.triangle.x, hit.triangle.y, hit.barycentric, rayDirection, hit.geometricNormal, coneWidth);
+#endif
+    return shapeSurface(hit.triangle.y, hit.barycentric, rayDirection, hit.geometricNormal, coneWidth);
+}
+
 // Tangent-space normal mapping with the MikkTSpace frame: the tangent made orthogonal to the
 // interpolated normal, bitangent = cross(n, t) x handedness. A mapped normal that would face away
-// from the geometric normal (or a mesh without tangents) keeps the interpolated normal.
-vec3 mappedNormal(vec3 n, vec3 geometricNormal, MeshSurface m, TextureRef r) {
+// from the geometric normal (or a surface without tangents) keeps the interpolated normal.
+vec3 mappedNormal(vec3 n, vec3 geometricNormal, TexturedSurface m, TextureRef r) {
     vec3 t = m.tangent - dot(m.tangent, n) * n;
     if (!(dot(t, t) > 1e-12) || !isFiniteVec3(t)) return n;
     t = normalize(t);
@@ -57,7 +67,7 @@ vec3 mappedNormal(vec3 n, vec3 geometricNormal, MeshSurface m, TextureRef r) {
 // specular x A, specular colour x RGB, transmission x R, thickness x G. A thickness of 0 makes the
 // surface thin-walled where a ray enters; leaving, it stays a volume boundary, so the integrator
 // always stops the absorption of a volume it entered (docs/MATERIALS.md).
-void applyExtensionTextures(Hit hit, vec3 rayDirection, MeshSurface m, INOUT(SurfaceShading) s) {
+void applyExtensionTextures(Hit hit, vec3 rayDirection, TexturedSurface m, INOUT(SurfaceShading) s) {
 #ifdef HAS_SPECULAR_TEXTURES
     TextureRef r = fetchTextureRef(hit.material, TEXREF_SPECULAR);
     if (hasTexture(r)) s.material.specularFactor *= sampleSurfaceTexture(m, r).a;
@@ -78,11 +88,12 @@ void applyExtensionTextures(Hit hit, vec3 rayDirection, MeshSurface m, INOUT(Sur
 }
 
 // glTF's texture semantics: base colour x texture x COLOR_0; roughness x G, metallic x B;
-// emission x texture. Emissive-textured triangles are not light-sampled (the light table holds
-// factors), so their emission is found by BSDF sampling alone, unweighted. The occlusion texture is
+// emission x texture. Emissive-textured triangles and shapes are not light-sampled (the light
+// tables hold factors), so their emission is found by BSDF sampling alone, unweighted. Meshes and
+// analytic shapes alike (shape_uv.glsl). The occlusion texture is
 // not read: a path tracer computes occlusion itself (docs/MATERIALS.md).
 void applyTextures(Hit hit, vec3 rayDirection, float coneWidth, INOUT(SurfaceShading) s) {
-    MeshSurface m = meshSurface(hit.triangle.x, hit.triangle.y, hit.barycentric, rayDirection, hit.geometricNormal, coneWidth);
+    TexturedSurface m = texturedSurface(hit, rayDirection, coneWidth);
     s.curvature = m.curvature;
     s.material.baseColor *= m.color.rgb;
     TextureRef r = fetchTextureRef(hit.material, TEXREF_BASE_COLOR);
@@ -111,7 +122,7 @@ SurfaceShading shadeSurface(Hit hit, vec3 rayDirection, float coneWidth) {
     vec3 emission = emissionSeen(hit, rayDirection) ? fetchEmission(hit.material) : vec3(0.0);
     SurfaceShading s = SurfaceShading(fetchSurfaceMaterial(hit.material), emission, emission, hit.shadingNormal, 0.0);
 #ifdef HAS_TEXTURES
-    if (hit.triangle.x >= 0) applyTextures(hit, rayDirection, coneWidth, s);
+    if (hit.triangle.y >= 0) applyTextures(hit, rayDirection, coneWidth, s); // a mesh or a shape
 #endif
     return s;
 }

@@ -1,16 +1,7 @@
 // What texturing needs at a mesh hit (HAS_TEXTURES): interpolated UV sets, COLOR_0, the MikkTSpace
 // tangent in world space, the ray-cone LOD per UV set, and a curvature estimate for the cone's
 // next spread. Vertex texels (gpu_meshes.cpp): normal, (uv0, uv1), tangent, colour.
-struct MeshSurface {
-    vec2 uv0;
-    vec2 uv1;
-    vec4 color;     // COLOR_0 (1 where the mesh has none)
-    vec3 tangent;   // world space, not normalised; zero where the mesh has none
-    float handedness;
-    float lambda0;  // ray-cone LOD of UV set 0 before the texture's size (ray_cone.glsl)
-    float lambda1;
-    float curvature; // 1/m, how fast the vertex normals turn along the edges
-};
+#include "textured_surface.glsl"
 
 mat3 meshLocalFromWorld(int instance) {
     return transpose(mat3(bvhInstanceRow(instance, 0).xyz, bvhInstanceRow(instance, 1).xyz, bvhInstanceRow(instance, 2).xyz));
@@ -26,7 +17,7 @@ float edgeCurvature(vec3 n0, vec3 n1, vec3 p0, vec3 p1) {
     return length(n1 - n0) / max(length(p1 - p0), 1e-12);
 }
 
-MeshSurface meshSurface(int slot, int instance, vec2 barycentric, vec3 rayDirection, vec3 geometricNormal, float coneWidth) {
+TexturedSurface meshSurface(int slot, int instance, vec2 barycentric, vec3 rayDirection, vec3 geometricNormal, float coneWidth) {
     uvec4 v = bvhTriangleVertices(slot);
     vec3 w = vec3(1.0 - barycentric.x - barycentric.y, barycentric.x, barycentric.y);
     vec4 t0 = vertexTexel(v.x, 1), t1 = vertexTexel(v.y, 1), t2 = vertexTexel(v.z, 1);
@@ -39,16 +30,9 @@ MeshSurface meshSurface(int slot, int instance, vec2 barycentric, vec3 rayDirect
     vec3 n0 = vertexTexel(v.x, 0).xyz, n1 = vertexTexel(v.y, 0).xyz, n2 = vertexTexel(v.z, 0).xyz;
     float curvature = max(edgeCurvature(n0, n1, p0, p1), max(edgeCurvature(n1, n2, p1, p2), edgeCurvature(n2, n0, p2, p0)));
     float mirrored = (bvhInstanceInfo(instance).w & BVH_INSTANCE_MIRRORED) != 0u ? -1.0 : 1.0;
-    return MeshSurface(w.x * t0.xy + w.y * t1.xy + w.z * t2.xy, w.x * t0.zw + w.y * t1.zw + w.z * t2.zw, color,
+    return TexturedSurface(w.x * t0.xy + w.y * t1.xy + w.z * t2.xy, w.x * t0.zw + w.y * t1.zw + w.z * t2.zw, color,
                        worldFromLocal * tangent.xyz, (tangent.w < 0.0 ? -1.0 : 1.0) * mirrored,
                        coneLod(coneWidth, cosine, uvArea(t0.xy, t1.xy, t2.xy), worldArea),
                        coneLod(coneWidth, cosine, uvArea(t0.zw, t1.zw, t2.zw), worldArea),
                        isFiniteFloat(curvature) ? curvature : 0.0);
-}
-
-vec2 surfaceUv(MeshSurface s, TextureRef r) { return transformUv(r, r.texCoord == 1 ? s.uv1 : s.uv0); }
-
-// A texture reference sampled at the surface, at the cone's LOD.
-vec4 sampleSurfaceTexture(MeshSurface s, TextureRef r) {
-    return sampleTextureRef(r, surfaceUv(s, r), textureRefLod(r, r.texCoord == 1 ? s.lambda1 : s.lambda0));
 }

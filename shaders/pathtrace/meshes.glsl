@@ -2,6 +2,9 @@
 // (HAS_MESHES). Shading normals are interpolated vertex normals (the geometric normal where a mesh
 // has none or they are degenerate), turned to the geometric normal's side.
 #include "trace_state.glsl" // outside the #ifdef: the include resolver pastes a file only once
+#ifdef HAS_TEXTURES
+#include "textured_surface.glsl" // outside HAS_MESHES likewise: analytic shapes are textured too
+#endif
 #ifdef HAS_MESHES
 #include "bvh/buffers.glsl"
 
@@ -17,7 +20,6 @@ const int VERTEX_TEXELS = 1;
 vec4 vertexTexel(uint vertex, int k) { return texelFetch(uVertexNormals, int(vertex) * VERTEX_TEXELS + k); }
 
 #ifdef HAS_TEXTURES
-#include "textures/texture_sample.glsl"
 #include "mesh_surface.glsl"
 #endif
 #if defined(HAS_ALPHA) || defined(HAS_SINGLE_SIDED)

@@ -14,7 +14,7 @@ struct Hit {
     float objectId;       // node id of what was hit
     bool onMesh;          // a mesh triangle (emissive ones are also sampled as lights)
     ivec2 triangle;       // mesh hits: (triangle slot, instance); shapes: (-1, shape index); else (-1, -1)
-    vec2 barycentric;     // mesh hits: weights of vertices 1 and 2
+    vec2 barycentric;     // mesh hits: weights of vertices 1 and 2; shapes: their UV (HAS_TEXTURES, shape_uv.glsl)
 };
 
 Hit noHit() {

@@ -9,6 +9,9 @@ const int SHAPE_DISK = 2;
 const int SHAPE_BOX = 3;
 const int SHAPE_CYLINDER = 4;
 const int SHAPE_GROUND_PLANE = 5;
+#ifdef HAS_TEXTURES
+#include "shape_uv.glsl"
+#endif
 
 // Nearest root of |o + t d|^2 = r^2 in (0, tMax), with the cancellation-free quadratic
 // ("Precision Improvements for Ray/Sphere Intersection", Ray Tracing Gems ch. 7).
@@ -124,7 +127,11 @@ void intersectShapes(Ray ray, INOUT(Hit) hit) {
         if (!hitShapeLocal(int(header.x), o, d, shapeTexel(shape, 4), header.w, hit.t, t, localNormal)) continue;
         // Normals transform by the transpose of localFromWorld.
         vec3 n = normalize(row0.xyz * localNormal.x + row1.xyz * localNormal.y + row2.xyz * localNormal.z);
-        hit = Hit(t, n, n, int(header.y), header.z, false, ivec2(-1, shape), vec2(0.0));
+        vec2 uv = vec2(0.0);
+#ifdef HAS_TEXTURES
+        uv = shapeUv(int(header.x), o + t * d, localNormal, shapeTexel(shape, 4), header.w);
+#endif
+        hit = Hit(t, n, n, int(header.y), header.z, false, ivec2(-1, shape), uv);
     }
 }
 

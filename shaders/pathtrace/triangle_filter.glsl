@@ -14,8 +14,8 @@ float surfaceAlpha(int material, int slot, int instance, vec3 tuv, vec3 localDir
     mat3 worldFromLocal = inverse(meshLocalFromWorld(instance));
     vec3 p0 = bvhTrianglePosition(slot, 0);
     vec3 normal = bvhNormalToWorld(instance, cross(bvhTrianglePosition(slot, 1) - p0, bvhTrianglePosition(slot, 2) - p0));
-    MeshSurface s = meshSurface(slot, instance, tuv.yz, normalize(worldFromLocal * localDirection), normal,
-                                coneWidthAt(gFilterCone, tuv.x));
+    TexturedSurface s = meshSurface(slot, instance, tuv.yz, normalize(worldFromLocal * localDirection), normal,
+                                    coneWidthAt(gFilterCone, tuv.x));
     alpha *= s.color.a;
     TextureRef r = fetchTextureRef(material, TEXREF_BASE_COLOR);
     if (hasTexture(r)) alpha *= sampleSurfaceTexture(s, r).a;
