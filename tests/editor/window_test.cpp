@@ -34,6 +34,7 @@
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QFileInfo>
 #include <QSurfaceFormat>
 #include <QTemporaryDir>
 #include <QTreeView>
@@ -157,18 +158,23 @@ void WindowTest::autosaveIsRecoveredAfterACrash() {
 // per file) wait in a bar and in File > Recover, and nothing modal comes up.
 void WindowTest::recoveryWaitsBesideTheFileAskedFor() {
     const QString folder = temp_.filePath("autosave-killed");
+    QString firstCopy;
     {
         auto* killed = new MainWindow(panelsOnly(folder));
         QVERIFY(killed->openFile(cornellBox()));
         QCOMPARE(renameNode(killed->document(), nodeNamed(killed->document(), "floor"), "crashed floor"), QString());
         QCOMPARE(killed->autosave().saveNow(), QString());
+        firstCopy = killed->autosave().copyPath();
         delete killed; // no closeEvent: the copy stays, as after a crash
     }
-    QTest::qWait(20); // the two copies' times differ (the newest is offered first)
     {
         auto* killed = new MainWindow(panelsOnly(folder)); // another session, an untitled scene
         QCOMPARE(addNode(killed->document(), "lost ball", defaultShape(ShapeKind::Sphere)), QString());
         QCOMPARE(killed->autosave().saveNow(), QString());
+        // The newest copy is offered first: make the order certain, not a matter of the clock's step.
+        QFile second(killed->autosave().copyPath());
+        QVERIFY(second.open(QIODevice::ReadWrite));
+        QVERIFY(second.setFileTime(QFileInfo(firstCopy).lastModified().addSecs(2), QFileDevice::FileModificationTime));
         delete killed;
     }
     MainWindow::Options options = panelsOnly(folder);
