@@ -637,6 +637,13 @@
     </message>
 </context>
 <context>
+    <name>glint::editor::KeyedTransform</name>
+    <message>
+        <source>Transform and key</source>
+        <translation>Transformieren und keyen</translation>
+    </message>
+</context>
+<context>
     <name>glint::editor::LoadProgress</name>
     <message>
         <source>%1 (%2)</source>
@@ -2468,6 +2475,14 @@ R %3  G %4  B %5 (linear)</translation>
     <message>
         <source>Cubic</source>
         <translation>Kubisch</translation>
+    </message>
+    <message>
+        <source>Auto key</source>
+        <translation>Automatisch keyen</translation>
+    </message>
+    <message>
+        <source>Key every moved, turned or scaled node at the current time (nodes with keys are always keyed)</source>
+        <translation>Jeden verschobenen, gedrehten oder skalierten Knoten zur aktuellen Zeit keyen (Knoten mit Keys werden immer gekeyt)</translation>
     </message>
 </context>
 <context>

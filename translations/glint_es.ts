@@ -637,6 +637,13 @@
     </message>
 </context>
 <context>
+    <name>glint::editor::KeyedTransform</name>
+    <message>
+        <source>Transform and key</source>
+        <translation>Transformar e insertar clave</translation>
+    </message>
+</context>
+<context>
     <name>glint::editor::LoadProgress</name>
     <message>
         <source>%1 (%2)</source>
@@ -2468,6 +2475,14 @@ R %3  G %4  B %5 (lineal)</translation>
     <message>
         <source>Cubic</source>
         <translation>Cúbica</translation>
+    </message>
+    <message>
+        <source>Auto key</source>
+        <translation>Clave automática</translation>
+    </message>
+    <message>
+        <source>Key every moved, turned or scaled node at the current time (nodes with keys are always keyed)</source>
+        <translation>Insertar una clave en cada nodo movido, girado o escalado en el tiempo actual (los nodos con claves siempre reciben una)</translation>
     </message>
 </context>
 <context>

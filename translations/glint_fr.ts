@@ -637,6 +637,13 @@
     </message>
 </context>
 <context>
+    <name>glint::editor::KeyedTransform</name>
+    <message>
+        <source>Transform and key</source>
+        <translation>Transformer et poser une clé</translation>
+    </message>
+</context>
+<context>
     <name>glint::editor::LoadProgress</name>
     <message>
         <source>%1 (%2)</source>
@@ -2468,6 +2475,14 @@ R %3  V %4  B %5 (linéaire)</translation>
     <message>
         <source>Cubic</source>
         <translation>Cubique</translation>
+    </message>
+    <message>
+        <source>Auto key</source>
+        <translation>Clé automatique</translation>
+    </message>
+    <message>
+        <source>Key every moved, turned or scaled node at the current time (nodes with keys are always keyed)</source>
+        <translation>Poser une clé sur chaque nœud déplacé, tourné ou mis à l'échelle au temps courant (les nœuds qui ont des clés en reçoivent toujours une)</translation>
     </message>
 </context>
 <context>

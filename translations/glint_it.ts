@@ -637,6 +637,13 @@
     </message>
 </context>
 <context>
+    <name>glint::editor::KeyedTransform</name>
+    <message>
+        <source>Transform and key</source>
+        <translation>Trasforma e inserisci chiave</translation>
+    </message>
+</context>
+<context>
     <name>glint::editor::LoadProgress</name>
     <message>
         <source>%1 (%2)</source>
@@ -2468,6 +2475,14 @@ R %3  G %4  B %5 (lineare)</translation>
     <message>
         <source>Cubic</source>
         <translation>Cubica</translation>
+    </message>
+    <message>
+        <source>Auto key</source>
+        <translation>Chiave automatica</translation>
+    </message>
+    <message>
+        <source>Key every moved, turned or scaled node at the current time (nodes with keys are always keyed)</source>
+        <translation>Inserisce una chiave per ogni nodo spostato, ruotato o scalato al tempo corrente (i nodi con chiavi ne ricevono sempre una)</translation>
     </message>
 </context>
 <context>

@@ -108,6 +108,12 @@ bool Document::isSelected(NodeId id) const {
     return std::find(selection_.begin(), selection_.end(), id) != selection_.end();
 }
 
+void Document::setAutoKey(bool on) {
+    if (on == autoKey_) return;
+    autoKey_ = on;
+    emit autoKeyChanged(on);
+}
+
 void Document::setCurrentTime(double seconds) {
     if (seconds == time_) return;
     time_ = seconds;

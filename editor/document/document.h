@@ -60,6 +60,10 @@ public:
     // --- time ------------------------------------------------------------------------------
     double currentTime() const { return time_; }
     void setCurrentTime(double seconds);
+    // Auto key (editor state): transform edits key every edited node at the current time
+    // (keyed_transform.h); off, only nodes that have keys are keyed.
+    bool autoKey() const { return autoKey_; }
+    void setAutoKey(bool on);
 
     // --- where the viewport looks (editor state): new nodes land there (node_placement.h) ----
     // The viewport provides it when asked (it looks the focus up in its picker); none: the origin.
@@ -122,6 +126,7 @@ signals:
     void changed(const glint::ChangeSet& changes);
     void selectionChanged();
     void timeChanged(double seconds);
+    void autoKeyChanged(bool on);
     void fileChanged();
     // Another scene took the document's place (open, recovery, new): views start afresh.
     void sceneReplaced();
@@ -165,6 +170,7 @@ private:
     // The selection before the command at each history index ran, restored when it is undone.
     std::map<std::size_t, std::vector<NodeId>> selectionBefore_;
     double time_ = 0.0;
+    bool autoKey_ = false;
     std::function<ViewFocus()> focusProvider_;
     bool lastClean_ = true;
     bool recovered_ = false;

@@ -4,6 +4,7 @@
 #include "property_edits.h"
 
 #include "editor/document/edit_operations.h"
+#include "editor/document/keyed_transform.h"
 #include "editor/outliner/node_names.h"
 
 #include <QLineEdit>
@@ -88,9 +89,8 @@ PropertyForm* makeNodeForm(Document& document, NodeId node, const Report& report
 
 PropertyForm* makeTransformForm(Document& document, NodeId node, const Report& report, QWidget* parent) {
     auto* form = new PropertyForm(document, PropertyForm::tr("Transform"), parent);
-    auto local = [&document, node] {
-        const Node* n = document.scene().node(node);
-        return n ? n->local : Transform{};
+    auto local = [&document, node] { // a keyed node's pose at the current time
+        return document.scene().node(node) ? shownTransform(document, node) : Transform{};
     };
     auto edit = [&document, node, report](std::function<void(Transform&)> change, std::uint64_t interaction) {
         const QString error = editTransform(document, node, change, interaction);

@@ -18,6 +18,7 @@ PropertiesPanel::PropertiesPanel(Document& document, bool scene, QWidget* parent
     setAccessibleName(scene ? tr("Scene settings") : tr("Properties"));
     connect(&document_, &Document::changed, this, &PropertiesPanel::update);
     connect(&document_, &Document::selectionChanged, this, &PropertiesPanel::update);
+    connect(&document_, &Document::timeChanged, this, &PropertiesPanel::update); // keyed nodes' poses
     rebuild();
 }
 

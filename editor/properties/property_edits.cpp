@@ -1,5 +1,6 @@
 #include "property_edits.h"
 
+#include "editor/document/keyed_transform.h"
 #include "editor/document/labelled_command.h"
 #include "editor/history_view/command_labels.h"
 #include "scene/history/asset_commands.h"
@@ -57,11 +58,11 @@ QString editTransform(Document& document, NodeId node, const std::function<void(
                       std::uint64_t interaction) {
     if (!document.scene().node(node)) return {};
     return editEach(document, editedNodes(document, node, false), [&](NodeId id) {
-        const Node& n = document.scene().at(id);
-        Transform t = n.local;
+        const Transform shown = shownTransform(document, id);
+        Transform t = shown;
         change(t);
-        if (t == n.local) return QString();
-        return pushTagged(document, std::make_unique<SetTransform>(id, t), interaction);
+        if (t == shown) return QString();
+        return pushTransform(document, id, t, interaction);
     });
 }
 

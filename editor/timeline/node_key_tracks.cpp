@@ -1,6 +1,7 @@
 #include "editor/timeline/node_key_tracks.h"
 
 #include "editor/document/document.h"
+#include "editor/document/keyed_transform.h"
 #include "editor/outliner/node_names.h"
 #include "editor/timeline/time_ruler.h"
 #include "scene/anim/node_keys.h"
@@ -43,20 +44,6 @@ void pushAnimation(Document& document, AnimationId id, Animation edited, std::ui
     document.push(std::move(command));
 }
 
-// Keys `node` at t with `local`, in the track's interpolation (linear for a new track).
-void keyNode(Document& document, NodeId node, double t, const Transform& local) {
-    const Scene& scene = document.scene();
-    if (const std::optional<AnimationId> id = nodeKeyAnimation(scene, node)) {
-        const Animation& animation = scene.animations.at(*id);
-        document.push(std::make_unique<SetAsset<Animation>>(
-            *id, withNodeKey(animation, node, t, local, nodeKeyInterpolation(animation, node))));
-        return;
-    }
-    Animation animation = withNodeKey({}, node, t, local, Interpolation::Linear);
-    animation.name = scene.at(node).name;
-    document.push(std::make_unique<AddAsset<Animation>>(std::move(animation)));
-}
-
 } // namespace
 
 bool keyNodes(Document& document, const std::vector<NodeId>& nodes, double t) {
@@ -65,7 +52,7 @@ bool keyNodes(Document& document, const std::vector<NodeId>& nodes, double t) {
         if (document.scene().contains(node)) keyed.push_back(node);
     if (keyed.empty()) return false;
     document.beginMacro(tr("Key transform"));
-    for (const NodeId node : keyed) keyNode(document, node, t, document.scene().at(node).local);
+    for (const NodeId node : keyed) pushNodeKey(document, node, t, shownTransform(document, node));
     document.endMacro();
     return true;
 }
@@ -102,7 +89,7 @@ bool pasteNodeKey(Document& document, const NodeKey& copied, NodeId node, double
     if (!scene.contains(copied.node) || !scene.contains(node)) return false;
     const Transform local = sceneAt(scene, copied.time).at(copied.node).local;
     document.beginMacro(tr("Paste key"));
-    keyNode(document, node, t, local);
+    pushNodeKey(document, node, t, local);
     document.endMacro();
     return true;
 }

@@ -39,7 +39,7 @@ TimelinePanel::TimelinePanel(Document& document, QWidget* parent) : QWidget(pare
     bar->addSeparator();
     bar->addActions({play_, loop_, constantSpeed_});
     bar->addSeparator();
-    bar->addActions({keyNode_, copyNodeKey_, pasteNodeKey_});
+    bar->addActions({keyNode_, autoKey_, copyNodeKey_, pasteNodeKey_});
     bar->addWidget(createInterpolationBox(bar));
     timeLabel_ = new QLabel(bar);
     bar->addWidget(timeLabel_);
@@ -121,6 +121,14 @@ void TimelinePanel::createNodeKeyActions() {
     keyNode_->setShortcutContext(Qt::WindowShortcut);
     keyNode_->setObjectName("timeline.keyNode");
     connect(keyNode_, &QAction::triggered, this, [this] { keyNodes(document_, document_.selection(), document_.currentTime()); });
+    autoKey_ = new QAction(this);
+    keepTranslated(autoKey_, TextRole::Text, staticMetaObject.className(), QT_TR_NOOP("Auto key"));
+    keepTranslated(autoKey_, TextRole::ToolTip, staticMetaObject.className(),
+                   QT_TR_NOOP("Key every moved, turned or scaled node at the current time (nodes with keys are always keyed)"));
+    autoKey_->setCheckable(true);
+    autoKey_->setObjectName("timeline.autoKey");
+    connect(autoKey_, &QAction::toggled, &document_, &Document::setAutoKey);
+    connect(&document_, &Document::autoKeyChanged, autoKey_, &QAction::setChecked);
     copyNodeKey_ = new QAction(this);
     keepTranslated(copyNodeKey_, TextRole::Text, staticMetaObject.className(), QT_TR_NOOP("Copy key"));
     copyNodeKey_->setShortcut(QKeySequence::Copy);

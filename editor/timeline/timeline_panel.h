@@ -49,6 +49,7 @@ public:
     QAction* loopAction() const { return loop_; }
     QAction* constantSpeedAction() const { return constantSpeed_; }
     QAction* keyNodeAction() const { return keyNode_; }
+    QAction* autoKeyAction() const { return autoKey_; }
     QAction* copyNodeKeyAction() const { return copyNodeKey_; }
     QAction* pasteNodeKeyAction() const { return pasteNodeKey_; }
 
@@ -83,6 +84,7 @@ private:
     QAction* loop_ = nullptr;
     QAction* constantSpeed_ = nullptr;
     QAction* keyNode_ = nullptr;
+    QAction* autoKey_ = nullptr;
     QAction* copyNodeKey_ = nullptr;
     QAction* pasteNodeKey_ = nullptr;
     std::optional<NodeKey> copied_;

@@ -1,9 +1,8 @@
 #include "editor/viewport/gizmo_drag.h"
 
 #include "editor/document/document.h"
-#include "scene/history/set_node_field.h"
-
-#include <memory>
+#include "editor/document/keyed_transform.h"
+#include "scene/anim/scene_at_time.h"
 
 namespace glint::editor {
 
@@ -14,9 +13,11 @@ GizmoDrag::GizmoDrag(Document& document, NodeId node, const GizmoFrame& frame, G
     const auto axis = pickGizmoAxis(ray, frame, mode);
     if (!axis) return;
     axis_ = *axis;
-    const Node& n = scene.at(node);
-    startLocal_ = n.local;
-    if (n.parent.valid()) worldFromParent_ = scene.worldFromNode(n.parent);
+    // From the pose shown at the current time (a keyed node's keys decide it, not its stored TRS).
+    Scene storage;
+    const Scene& posed = posedAt(scene, document.currentTime(), storage);
+    startLocal_ = shownTransform(document, node);
+    if (const NodeId parent = scene.at(node).parent; parent.valid()) worldFromParent_ = posed.worldFromNode(parent);
     interaction_ = document.beginInteraction();
 }
 
@@ -32,11 +33,8 @@ void GizmoDrag::cancel() {
 }
 
 void GizmoDrag::push(const Transform& local) {
-    if (!document_.scene().contains(node_) || document_.scene().at(node_).local == local) return;
-    auto command = std::make_unique<SetTransform>(node_, local);
-    command->interaction = interaction_;
-    document_.push(std::move(command));
-    moved_ = true;
+    if (!document_.scene().contains(node_) || shownTransform(document_, node_) == local) return;
+    if (pushTransform(document_, node_, local, interaction_).isEmpty()) moved_ = true;
 }
 
 } // namespace glint::editor

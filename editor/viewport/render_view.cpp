@@ -159,7 +159,8 @@ std::optional<QPointF> RenderView::project(const glm::dvec3& world) const {
 
 GizmoFrame RenderView::gizmoFrame(NodeId node) const {
     GizmoFrame frame;
-    const glm::dmat4 world(document_.scene().worldFromNode(node));
+    Scene storage; // where the node is shown: a keyed node's pose at the current time
+    const glm::dmat4 world(posedAt(document_.scene(), document_.currentTime(), storage).worldFromNode(node));
     frame.origin = glm::dvec3(world[3]);
     if (tools_.gizmoMode() == GizmoMode::Scale || tools_.gizmoSpace() == GizmoSpace::Local)
         for (int a = 0; a < 3; ++a) frame.axes[a] = glm::normalize(glm::dvec3(world[a]));

@@ -14,7 +14,12 @@
 
 namespace glint {
 
-// Adds an asset. An id of 0 takes a fresh id on the first apply; later applies reuse it.
+template <class T>
+class SetAsset;
+
+// Adds an asset. An id of 0 takes a fresh id on the first apply; later applies reuse it. Within one
+// interaction a following edit of the new asset merges into the addition (a drag that creates an
+// animation key track and then moves the key is one undo step).
 template <class T>
 class AddAsset final : public Command {
 public:
@@ -35,6 +40,14 @@ public:
     }
     std::string label() const override { return std::string("Add ") + Kind::name; }
     std::string typeName() const override { return std::string("add_") + Kind::name; }
+    // SetAsset's key for the asset once it has its id: the edits that merge into the addition.
+    std::string mergeKey() const override { return id_ ? std::string("set_") + Kind::name + ":" + std::to_string(id_.value) : std::string(); }
+    bool mergeWith(const Command& next) override {
+        const auto* edit = dynamic_cast<const SetAsset<T>*>(&next);
+        if (!edit || edit->id() != id_) return false;
+        value_ = edit->value();
+        return true;
+    }
     std::size_t memoryBytes() const override { return sizeof(*this) + approxBytes(value_); }
     nlohmann::json toJson() const override { return {{"id", id_}, {"value", value_}}; }
     static CommandPtr fromJson(const nlohmann::json& j) {
@@ -124,6 +137,8 @@ public:
     static CommandPtr fromJson(const nlohmann::json& j) {
         return std::make_unique<SetAsset>(j.at("id").get<IdT>(), j.at("value").get<T>());
     }
+    IdT id() const { return id_; }
+    const T& value() const { return new_; }
 
 private:
     ChangeSet changes() const {

@@ -5,7 +5,10 @@
 #include "editor_fixtures.h"
 #include "test_viewport_scene.h"
 
+#include "editor/document/keyed_transform.h"
+#include "editor/properties/property_edits.h"
 #include "editor/timeline/node_key_tracks.h"
+#include "editor/viewport/gizmo_drag.h"
 #include "editor/timeline/time_ruler.h"
 #include "editor/timeline/timeline_panel.h"
 #include "editor/viewport/render_view.h"
@@ -138,16 +141,18 @@ private slots:
     }
 
     // The sphere keyed at x = -1.2 (t = 0) and x = 0.8 (t = 1) with the Key action.
+    // Keys at 0 (x = -1.2, where the sphere stands) and at 1 (x = 0.8): K keys the pose shown at
+    // each time, and moving the keyed sphere at t = 1 re-keys it there, as an animator works.
     NodeId keySphereTwice() {
         const NodeId sphere = shapes_.sphere;
         document_->setSelection({sphere});
         document_->setCurrentTime(0.0);
         timeline_->keyNodeAction()->trigger();
-        Transform moved = document_->scene().at(sphere).local;
-        moved.translation.x = 0.8f;
-        document_->push(std::make_unique<SetTransform>(sphere, moved));
         document_->setCurrentTime(1.0);
         timeline_->keyNodeAction()->trigger();
+        Transform moved = shownTransform(*document_, sphere);
+        moved.translation.x = 0.8f;
+        if (!pushTransform(*document_, sphere, moved, 0).isEmpty()) return {};
         return sphere;
     }
 
@@ -209,6 +214,72 @@ private slots:
         document_->undo();
         document_->undo();
         QCOMPARE(nodeKeyTimes(document_->scene().animations.at(*id), sphere), (std::vector<double>{0.0, 1.0}));
+    }
+
+    // A keyed node shows its keys' pose, so a gizmo drag or a panel edit starts from that pose and
+    // keys it at the current time (it would not show otherwise): one undo step per drag, the other
+    // keys intact. Off, an unkeyed node's edit stays a plain transform change; Auto key keys it too.
+    void editsKeyKeyedNodesAndAutoKeyKeysEveryNode() {
+        const NodeId sphere = keySphereTwice();
+        const auto id = nodeKeyAnimation(document_->scene(), sphere);
+        QVERIFY(id);
+        document_->setCurrentTime(0.5);
+        QVERIFY(std::abs(shownTransform(*document_, sphere).translation.x - (-0.2f)) < 1e-5f);
+        // The gizmo stands where the sphere is shown, and a drag along X from there by 0.5 m...
+        const GizmoFrame frame = viewport_->view().gizmoFrame(sphere);
+        QVERIFY(std::abs(frame.origin.x - (-0.2)) < 1e-5);
+        const glm::vec3 handle = glm::vec3(frame.origin) + glm::vec3(0.5f * float(frame.size), 0.0f, 0.0f);
+        const auto rayAt = [](glm::vec3 p) { return bvh::Ray{p + glm::vec3(0.0f, 0.0f, 5.0f), {0.0f, 0.0f, -1.0f}}; };
+        const std::size_t steps = document_->history().index();
+        GizmoDrag drag(*document_, sphere, frame, GizmoMode::Translate, rayAt(handle));
+        QVERIFY(drag.active());
+        for (const float dx : {0.1f, 0.3f, 0.5f}) drag.moveTo(rayAt(handle + glm::vec3(dx, 0.0f, 0.0f)), {});
+        // ...keys it at 0.5 in one undo step, shown at 0.3; the keys at 0 and 1 stay.
+        QCOMPARE(document_->history().index(), steps + 1);
+        QCOMPARE(nodeKeyTimes(document_->scene().animations.at(*id), sphere), (std::vector<double>{0.0, 0.5, 1.0}));
+        QVERIFY(std::abs(posedX(*document_, sphere, 0.5) - 0.3f) < 1e-4f);
+        QVERIFY(std::abs(posedX(*document_, sphere, 1.0) - 0.8f) < 1e-5f);
+        document_->undo();
+        QCOMPARE(nodeKeyTimes(document_->scene().animations.at(*id), sphere), (std::vector<double>{0.0, 1.0}));
+        QVERIFY(std::abs(posedX(*document_, sphere, 0.5) - (-0.2f)) < 1e-5f);
+
+        // The panel's field edits the pose shown too: x typed at 0.5 becomes a key there.
+        QCOMPARE(editTransform(*document_, sphere, [](Transform& t) { t.translation.x = -1.0f; }, 0), QString());
+        QVERIFY(std::abs(posedX(*document_, sphere, 0.5) - (-1.0f)) < 1e-5f);
+        QCOMPARE(nodeKeyTimes(document_->scene().animations.at(*id), sphere).size(), std::size_t(3));
+
+        // An unkeyed node, auto key off: a plain edit, no track.
+        const NodeId box = shapes_.box;
+        const float y = document_->scene().at(box).local.translation.y;
+        QCOMPARE(editTransform(*document_, box, [](Transform& t) { t.translation.y += 1.0f; }, 0), QString());
+        QVERIFY(!nodeKeyAnimation(document_->scene(), box));
+        QCOMPARE(document_->scene().at(box).local.translation.y, y + 1.0f);
+        // Auto key on (the timeline's toggle): the edit keys the box at 0.5, undone in one step.
+        timeline_->autoKeyAction()->trigger();
+        QVERIFY(document_->autoKey());
+        const std::size_t before = document_->history().index();
+        QCOMPARE(editTransform(*document_, box, [](Transform& t) { t.translation.y += 1.0f; }, 0), QString());
+        QCOMPARE(document_->history().index(), before + 1);
+        const auto boxKeys = nodeKeyAnimation(document_->scene(), box);
+        QVERIFY(boxKeys);
+        QCOMPARE(nodeKeyTimes(document_->scene().animations.at(*boxKeys), box), std::vector<double>{0.5});
+        QCOMPARE(sceneAt(document_->scene(), 3.0).at(box).local.translation.y, y + 2.0f);
+        document_->undo();
+        QVERIFY(!nodeKeyAnimation(document_->scene(), box));
+        QCOMPARE(document_->scene().at(box).local.translation.y, y + 1.0f);
+        // A gizmo drag of the unkeyed box with auto key: its new track and key are one undo step.
+        const GizmoFrame boxFrame = viewport_->view().gizmoFrame(box);
+        const glm::vec3 boxHandle = glm::vec3(boxFrame.origin) + glm::vec3(0.5f * float(boxFrame.size), 0.0f, 0.0f);
+        const std::size_t beforeDrag = document_->history().index();
+        GizmoDrag boxDrag(*document_, box, boxFrame, GizmoMode::Translate, rayAt(boxHandle));
+        QVERIFY(boxDrag.active());
+        for (const float dx : {0.1f, 0.2f, 0.4f}) boxDrag.moveTo(rayAt(boxHandle + glm::vec3(dx, 0.0f, 0.0f)), {});
+        QCOMPARE(document_->history().index(), beforeDrag + 1);
+        QVERIFY(nodeKeyAnimation(document_->scene(), box));
+        document_->undo();
+        QVERIFY(!nodeKeyAnimation(document_->scene(), box));
+        timeline_->autoKeyAction()->trigger();
+        QVERIFY(!document_->autoKey());
     }
 
     // Keyed in the editor, saved, rendered by `glint render --time 0.5`: the same pixels as the

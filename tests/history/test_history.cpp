@@ -1,6 +1,7 @@
 // History on its own: do/undo/redo, merging within one interaction, macros, the clean state,
 // bounds, listeners and jumps (after Godot's tests/core/object/test_undo_redo.h).
 #include "sample_scene.h"
+#include "scene/history/asset_commands.h"
 #include "scene/history/history.h"
 #include "scene/history/set_node_field.h"
 
@@ -226,6 +227,40 @@ private slots:
         history.undo();
         history.undo();
         QVERIFY(scene == start);
+    }
+
+    // A drag that adds an asset on its first step and edits it on the next (auto key on a node
+    // without keys: the track is created, then its key moves) is one step: the edits merge into
+    // the addition, whose undo removes the asset and whose redo adds the last value.
+    void editsOfAnAssetMergeIntoItsAdditionWithinADrag() {
+        SampleIds ids;
+        Scene scene = sampleScene(&ids);
+        const Scene start = scene;
+        History history(scene);
+        const std::uint64_t drag = history.beginInteraction();
+        auto added = std::make_unique<AddAsset<Material>>(Material{});
+        added->interaction = drag;
+        auto* addition = added.get();
+        history.push(std::move(added));
+        const MaterialId id = addition->id();
+        for (float roughness : {0.2f, 0.4f}) {
+            Material m;
+            m.roughnessFactor = roughness;
+            auto edit = std::make_unique<SetAsset<Material>>(id, m);
+            edit->interaction = drag;
+            history.push(std::move(edit));
+        }
+        QCOMPARE(history.count(), std::size_t{1});
+        QCOMPARE(scene.materials.at(id).roughnessFactor, 0.4f);
+        history.undo();
+        QVERIFY(scene == start);
+        history.redo();
+        QCOMPARE(scene.materials.at(id).roughnessFactor, 0.4f);
+        // Another interaction's edit stays a step of its own.
+        auto later = std::make_unique<SetAsset<Material>>(id, Material{});
+        later->interaction = history.beginInteraction();
+        history.push(std::move(later));
+        QCOMPARE(history.count(), std::size_t{2});
     }
 
     void cleanStateFollowsUndoAndRedo() {
