@@ -1107,6 +1107,10 @@
         <source>New from &amp;template</source>
         <translation>Neu aus &amp;Vorlage</translation>
     </message>
+    <message>
+        <source>%1 (autosaved %2, older than the file)</source>
+        <translation>%1 (automatisch gespeichert %2, älter als die Datei)</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::MaterialListModel</name>

@@ -1107,6 +1107,10 @@
         <source>New from &amp;template</source>
         <translation>Nueva desde &amp;plantilla</translation>
     </message>
+    <message>
+        <source>%1 (autosaved %2, older than the file)</source>
+        <translation>%1 (autoguardado %2, más antiguo que el archivo)</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::MaterialListModel</name>

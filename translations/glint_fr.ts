@@ -1107,6 +1107,10 @@
         <source>New from &amp;template</source>
         <translation>Nouveau depuis un &amp;modèle</translation>
     </message>
+    <message>
+        <source>%1 (autosaved %2, older than the file)</source>
+        <translation>%1 (enregistré automatiquement %2, plus ancien que le fichier)</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::MaterialListModel</name>

@@ -1107,6 +1107,10 @@
         <source>New from &amp;template</source>
         <translation>Nuova da &amp;modello</translation>
     </message>
+    <message>
+        <source>%1 (autosaved %2, older than the file)</source>
+        <translation>%1 (salvato automaticamente %2, più vecchio del file)</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::MaterialListModel</name>

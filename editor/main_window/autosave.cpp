@@ -158,16 +158,19 @@ QList<Autosave::Leftover> Autosave::leftovers() const {
         if (!note || !QFile::exists(copy) || note->session == session_) continue;
         if (!note->session.isEmpty() && sessionRunning(folder_ + QStringLiteral("/session-") + note->session + QStringLiteral(".lock")))
             continue; // an editor still working on it
-        found.push_back({copy, note->original, note->environment, QFileInfo(copy).lastModified()});
+        const QDateTime saved = QFileInfo(copy).lastModified();
+        const QFileInfo original(note->original);
+        const bool superseded = !note->original.isEmpty() && original.exists() && original.lastModified() > saved;
+        found.push_back({copy, note->original, note->environment, saved, superseded});
     }
     std::sort(found.begin(), found.end(), [](const Leftover& a, const Leftover& b) { return a.saved > b.saved; });
     return found;
 }
 
 std::optional<Autosave::Leftover> Autosave::leftover() const {
-    const QList<Leftover> all = leftovers();
-    if (all.isEmpty()) return std::nullopt;
-    return all.front();
+    for (const Leftover& leftover : leftovers())
+        if (!leftover.superseded) return leftover;
+    return std::nullopt;
 }
 
 void Autosave::discard(const Leftover& leftover) {

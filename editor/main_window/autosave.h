@@ -41,10 +41,13 @@ public:
         QString original;    // the file it stands for; empty: an untitled scene
         QString environment; // the project's environment image as the document named it
         QDateTime saved;
+        // Its file was saved after it: a save completed but the editor died before removing the
+        // copy. Listed in File > Recover, never offered as newer than the file.
+        bool superseded = false;
     };
     // Every leftover, newest first: neither this session's copies nor a running editor's.
     QList<Leftover> leftovers() const;
-    std::optional<Leftover> leftover() const; // the newest one
+    std::optional<Leftover> leftover() const; // the newest one not superseded
     void discard(const Leftover& leftover);
     // The document now holds `leftover` (recovered): its environment image is named as before, the
     // document's own copy is saved at once and the leftover's files go.

@@ -364,8 +364,8 @@ void MainWindow::refreshRecovery() {
     recoverMenu_->clear();
     for (const Autosave::Leftover& leftover : leftovers) {
         const QString when = QLocale().toString(leftover.saved, QLocale::ShortFormat);
-        QAction* action = recoverMenu_->addAction(tr("%1 (autosaved %2)").arg(leftoverName(leftover), when), this,
-                                                  [this, leftover] { recover(leftover); });
+        const QString title = leftover.superseded ? tr("%1 (autosaved %2, older than the file)") : tr("%1 (autosaved %2)");
+        QAction* action = recoverMenu_->addAction(title.arg(leftoverName(leftover), when), this, [this, leftover] { recover(leftover); });
         action->setToolTip(leftover.original);
     }
     if (!leftovers.isEmpty()) {
@@ -377,11 +377,12 @@ void MainWindow::refreshRecovery() {
     } else {
         recoverMenu_->addAction(tr("Nothing to recover"))->setEnabled(false);
     }
-    if (leftovers.isEmpty() || recoveryDismissed_ || recovering_) {
+    const std::optional<Autosave::Leftover> pending = autosave_->leftover(); // the bar offers no superseded copy
+    if (!pending || recoveryDismissed_ || recovering_) {
         recoveryBar_->hide();
         return;
     }
-    const Autosave::Leftover& newest = leftovers.front();
+    const Autosave::Leftover& newest = *pending;
     const QString when = QLocale().toString(newest.saved, QLocale::ShortFormat);
     const bool thisFile = !newest.original.isEmpty() && QFileInfo(newest.original) == QFileInfo(document_->filePath());
     QString text = thisFile ? tr("Glint did not close normally: the copy of %1 autosaved at %2 is newer than the file.").arg(leftoverName(newest), when)

@@ -1,10 +1,12 @@
 // loadScene: a .gltf, a .glb, or a project file (.glint.json) that names its glTF.
+#include "scene/io/files/atomic_save.h"
 #include "scene/io/files/confined_path.h"
 #include "scene/io/project/project_file.h"
 #include "scene/io/scene_io.h"
 
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <variant>
 
 namespace glint {
@@ -44,10 +46,42 @@ void checkActiveCamera(const Scene& scene, const fs::path& project)
                             (node ? " is not a camera" : " names no node"));
 }
 
+// A save killed after its glTF was renamed into place and before its project file was
+// (atomic_save.h, after stage 2) leaves that project file whole under its temporary name: every
+// temporary is written and synced before the first rename. It belongs to the glTF on disk when the
+// glTF's own temporary is gone (its rename happened) and it is not older than the glTF, so it is
+// read instead of the previous save's project file; the next save puts it in place.
+std::optional<fs::path> interruptedProjectFile(const fs::path& sceneFile, const fs::path& project)
+{
+    std::error_code error;
+    const fs::file_time_type sceneTime = fs::last_write_time(sceneFile, error);
+    if (error) return std::nullopt;
+    std::optional<fs::path> found;
+    fs::file_time_type newest{};
+    const fs::path folder = sceneFile.parent_path().empty() ? fs::path(".") : sceneFile.parent_path();
+    for (const auto& entry : fs::directory_iterator(folder, error)) {
+        const std::string final = finalNameOfTemporary(entry.path());
+        if (final == sceneFile.filename().string()) return std::nullopt; // the glTF's save did not finish
+        if (final != project.filename().string()) continue;
+        const fs::file_time_type time = entry.last_write_time(error);
+        if (!error && time >= sceneTime && (!found || time > newest)) {
+            found = entry.path();
+            newest = time;
+        }
+    }
+    return found;
+}
+
 // The project file beside a glTF, when there is one.
 void addProjectSettings(LoadResult& result, const fs::path& sceneFile)
 {
-    const fs::path project = projectPathFor(sceneFile);
+    fs::path project = projectPathFor(sceneFile);
+    if (const std::optional<fs::path> interrupted = interruptedProjectFile(sceneFile, project)) {
+        result.warnings.push_back({project.string(), "project-save-interrupted",
+                                   "the last save stopped before its project file was in place: read from " +
+                                       interrupted->filename().string() + " (the next save puts it in place)"});
+        project = *interrupted;
+    }
     std::error_code error;
     if (!fs::exists(project, error)) return;
     result.scene.settings = readProjectFile(project, result.warnings).settings;

@@ -5,6 +5,7 @@
 #include "io_write_helpers.h"
 
 #include "scene/io/files/atomic_save.h"
+#include "scene/io/project/project_file.h"
 #include "scene/io/scene_io.h"
 
 #include <QTemporaryDir>
@@ -16,6 +17,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <fstream>
 #include <random>
 #include <thread>
 
@@ -157,6 +159,38 @@ private slots:
         // A save that finishes clears what the killed ones left: exactly the reference set remains.
         saveScene(scenes[1], folder / "scene.gltf");
         QVERIFY(filesOf(folder) == variants[1]);
+    }
+
+    // A save killed between its glTF's rename and its project file's leaves the new project file
+    // whole under its temporary name: loading reads it (with a warning), as it belongs to the glTF
+    // on disk. Not when the glTF's own temporary is still there (its save did not get that far), nor
+    // when the temporary is older than the glTF (another program saved the glTF since).
+    void projectFileOfAnInterruptedSaveIsRead()
+    {
+        QTemporaryDir dir;
+        const fs::path folder = dir.path().toStdString();
+        Scene scene = test::largeScene(10, 0);
+        scene.settings.render.spp = 16;
+        saveScene(scene, folder / "scene.gltf");
+        ProjectSettings newer = scene.settings;
+        newer.render.spp = 99;
+        const fs::path temporary = folder / ".scene.glint.json.glint-tmp0";
+        std::ofstream(temporary, std::ios::binary) << writeProjectFileText({"scene.gltf", newer});
+        LoadResult loaded = loadScene(folder / "scene.gltf");
+        QCOMPARE(loaded.scene.settings.render.spp, 99);
+        QVERIFY(std::any_of(loaded.warnings.begin(), loaded.warnings.end(),
+                            [](const Warning& w) { return w.code == "project-save-interrupted"; }));
+
+        fs::last_write_time(temporary, fs::last_write_time(folder / "scene.gltf") - std::chrono::seconds(10));
+        QCOMPARE(loadScene(folder / "scene.gltf").scene.settings.render.spp, 16);
+        fs::last_write_time(temporary, fs::last_write_time(folder / "scene.gltf") + std::chrono::seconds(1));
+        std::ofstream(folder / ".scene.gltf.glint-tmp1", std::ios::binary) << "{";
+        QCOMPARE(loadScene(folder / "scene.gltf").scene.settings.render.spp, 16);
+
+        // The next save puts its own project file in place and clears the temporaries.
+        saveScene(scene, folder / "scene.gltf");
+        QVERIFY(!hasTemporaries(folder));
+        QCOMPARE(loadScene(folder / "scene.gltf").scene.settings.render.spp, 16);
     }
 
     void readOnlyFolderThrowsAndLeavesNothing()

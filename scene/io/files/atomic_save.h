@@ -13,8 +13,9 @@
 //  - after stage 1: the previous set is still complete and consistent: the new buffer has a new,
 //    content-derived name (<basename>.<hash>.bin) beside the old one, which the old glTF still
 //    names. An image rewritten under the same name already has its new content (still loadable);
-//  - after stage 2: the new glTF set is complete; the project file is still the previous one
-//    (the same scene file name, the previous settings);
+//  - after stage 2: the new glTF set is complete; the project file is still the previous one, and
+//    the new one waits whole under its temporary name: loading reads that one (scene_load.cpp,
+//    interruptedProjectFile), so the pair on disk still loads as one save;
 //  - after stage 3: the new set is complete; the old buffer is removed after the final folder
 //    sync, and one a crash left behind is removed by the next save.
 // On a failure (disk full, read-only folder) every temporary is removed and FileError is thrown;
