@@ -195,7 +195,9 @@ private slots:
         QCOMPARE(openedB, QString());
         QCOMPARE(uploadsWhenOpened, before.uploads);
         QTRY_VERIFY_WITH_TIMEOUT(view.stats().uploads > before.uploads && view.stats().samples >= 1, 60000);
-        QTest::qWait(200);
+        const long long paints = view.stats().paints; // the sample on screen: one more paint
+        view.update();
+        QTRY_VERIFY_WITH_TIMEOUT(view.stats().paints > paints, 20000);
         const double mean = test::imageStats(view.grabFramebuffer()).mean;
         qInfo("B shown %lld ms after it was opened; preparations %d, uploads %d, image mean %.3f", clock.elapsed(),
               view.stats().preparations - before.preparations, view.stats().uploads - before.uploads, mean);
