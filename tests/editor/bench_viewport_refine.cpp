@@ -26,6 +26,7 @@
 #include <QTest>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <string>
@@ -99,13 +100,15 @@ struct Quality {
 };
 
 // relMSE and SSIM of the mean at every sample count 1..samples, raw or denoised.
-std::vector<Quality> measure(RenderView& view, const Scene& scene, const renderer::CameraSetup& camera, int samples, bool denoise,
-                             const std::vector<float>& reference, int width, int height) {
+// `environment`: the project's image as the viewport reads it (Document::environmentPath()).
+std::vector<Quality> measure(RenderView& view, const Scene& scene, const std::filesystem::path& environment,
+                             const renderer::CameraSetup& camera, int samples, bool denoise, const std::vector<float>& reference,
+                             int width, int height) {
     renderer::FrameRenderer r;
     renderer::FrameSettings s = stillSettings(scene, width, height);
     s.denoise = denoise;
     r.setSettings(s);
-    r.setScene(scene);
+    r.setScene(scene, environment);
     r.setCamera(camera);
     std::vector<Quality> out;
     for (int n = 1; n <= samples; ++n) {
@@ -117,14 +120,15 @@ std::vector<Quality> measure(RenderView& view, const Scene& scene, const rendere
     return out;
 }
 
-std::vector<float> referenceImage(const Scene& scene, const renderer::CameraSetup& camera, int spp, int width, int height) {
+std::vector<float> referenceImage(const Scene& scene, const std::filesystem::path& environment, const renderer::CameraSetup& camera,
+                                  int spp, int width, int height) {
     renderer::FrameRenderer r;
     renderer::FrameSettings s = stillSettings(scene, width, height);
     s.configuration = renderer::Configuration::Reference;
     s.spp = spp;
     s.seed = s.seed + 0x9e3779b9u; // other samples than the ones measured
     r.setSettings(s);
-    r.setScene(scene);
+    r.setScene(scene, environment);
     r.setCamera(camera);
     r.renderFrame();
     return r.readImages().radiance;
@@ -179,9 +183,10 @@ int main(int argc, char** argv) {
     const renderer::CameraSetup camera = cameraSetupOf(view.camera(), w, h);
     view.makeCurrent();
     std::fprintf(stderr, "reference: %d spp\n", o.referenceSpp);
-    const std::vector<float> reference = referenceImage(document.scene(), camera, o.referenceSpp, w, h);
-    const std::vector<Quality> raw = measure(view, document.scene(), camera, o.samples, false, reference, w, h);
-    const std::vector<Quality> denoised = measure(view, document.scene(), camera, o.samples, true, reference, w, h);
+    const std::filesystem::path environment = document.environmentPath();
+    const std::vector<float> reference = referenceImage(document.scene(), environment, camera, o.referenceSpp, w, h);
+    const std::vector<Quality> raw = measure(view, document.scene(), environment, camera, o.samples, false, reference, w, h);
+    const std::vector<Quality> denoised = measure(view, document.scene(), environment, camera, o.samples, true, reference, w, h);
     view.doneCurrent();
 
     std::ofstream csv(o.out);
