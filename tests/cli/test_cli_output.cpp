@@ -105,7 +105,9 @@ private slots:
         QCOMPARE(sorted(probeImage(none).channels), sorted({"R", "G", "B", "A"}));
         QCOMPARE(runGlint({"render", cornell, "--out", some, "--size", "8x8", "--spp", "2", "--aovs", "depth,variance"}).exitCode, 0);
         QCOMPARE(sorted(probeImage(some).channels), sorted({"R", "G", "B", "A", "Z", "variance.R", "variance.G", "variance.B"}));
-        QCOMPARE(runGlint({"render", cornell, "--out", none, "--aovs", "albedo,fur"}).exitCode, 2);
+        const CliResult unknown = runGlint({"render", cornell, "--out", none, "--aovs", "albedo,fur"});
+        QCOMPARE(unknown.exitCode, 2);
+        QVERIFY2(unknown.err.contains("unknown AOV 'fur'"), qPrintable(unknown.err));
     }
 
     void timeRendersTheCameraPath() {
