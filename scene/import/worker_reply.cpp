@@ -45,17 +45,35 @@ nlohmann::json headerJson(const WorkerReply& reply) {
     return header;
 }
 
+// A string member of `object`, `fallback` when absent; nullopt when it is there but not a string.
+std::optional<std::string> stringMember(const nlohmann::json& object, const char* key, const std::string& fallback) {
+    const auto it = object.find(key);
+    if (it == object.end()) return fallback;
+    if (!it->is_string()) return std::nullopt;
+    return it->get<std::string>();
+}
+
+// Anything not shaped as the worker writes it refuses the reply (the worker may have been replaced
+// or died mid-write): an error or warning that is not an object, a code or message that is not a
+// string. An error always has a code, so it can never read as success.
 bool readHeader(const nlohmann::json& header, WorkerReply& reply) {
     if (!header.is_object()) return false;
     if (auto e = header.find("error"); e != header.end()) {
-        reply.errorCode = e->value("code", std::string("import-failed"));
-        reply.errorMessage = e->value("message", std::string());
+        if (!e->is_object()) return false;
+        const auto code = stringMember(*e, "code", "import-failed");
+        const auto message = stringMember(*e, "message", "");
+        if (!code || !message) return false;
+        reply.errorCode = code->empty() ? "import-failed" : *code;
+        reply.errorMessage = *message;
     }
     auto list = header.find("warnings");
     if (list == header.end() || !list->is_array()) return false;
     for (const auto& w : *list) {
         if (!w.is_object()) return false;
-        reply.warnings.push_back({"", w.value("code", std::string()), w.value("message", std::string())});
+        const auto code = stringMember(w, "code", "");
+        const auto message = stringMember(w, "message", "");
+        if (!code || !message) return false;
+        reply.warnings.push_back({"", *code, *message});
     }
     return true;
 }

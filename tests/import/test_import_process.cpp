@@ -181,6 +181,28 @@ private slots:
         QCOMPARE(decoded->errorMessage, std::string("bad file"));
     }
 
+    // Found by fuzz_import_reply (seeds/import_reply/crash-error-is-an-array.bin): a header whose
+    // "error" was an array threw nlohmann's type_error out of decodeWorkerReply, past importScene's
+    // FileError. A header of the wrong shape is now a malformed reply, and an error never reads as
+    // success.
+    void replyHeaderOfTheWrongShapeIsRefused() {
+        const auto framed = [](const std::string& header) {
+            std::vector<std::uint8_t> bytes = {'G', 'L', 'I', 'N', 'T', 'I', 'M', 'P', 1, 0, 0, 0};
+            for (int i = 0; i < 4; ++i) bytes.push_back(static_cast<std::uint8_t>(header.size() >> (8 * i)));
+            bytes.insert(bytes.end(), header.begin(), header.end());
+            bytes.insert(bytes.end(), 8, 0); // an empty GLB
+            return bytes;
+        };
+        QVERIFY(decodeWorkerReply(framed(R"({"warnings":[]})")));
+        for (const char* bad : {R"({"error":[],"warnings":[]})", R"({"error":{"code":7},"warnings":[]})",
+                                R"({"error":{"message":null},"warnings":[]})", R"({"warnings":[{"code":[]}]})",
+                                R"({"warnings":[{"message":1.5}]})"})
+            QVERIFY2(!decodeWorkerReply(framed(bad)), bad);
+        const auto blank = decodeWorkerReply(framed(R"({"error":{"code":"","message":"m"},"warnings":[]})"));
+        QVERIFY(blank);
+        QCOMPARE(blank->errorCode, std::string("import-failed"));
+    }
+
     void bunnyArrivesThroughTheWorker() {
         const auto file = kData / "meshes/stanford-bunny.obj";
         QElapsedTimer clock;
