@@ -1,33 +1,26 @@
 #include "common_options.h"
 
 #include "cli_validators.h"
+#include "size_option.h"
 #include "scene/core/tonemapper_names.h"
 
-#include <charconv>
+#include <stdexcept>
 
 namespace glint::cli {
 
 namespace {
-
-constexpr int kMaxDimension = 16384;
-
-int parseDimension(std::string_view text, const std::string& whole) {
-    int value = 0;
-    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (ec != std::errc() || end != text.data() + text.size() || value < 1 || value > kMaxDimension)
-        throw CLI::ValidationError("--size", "expected WxH with 1 <= W, H <= 16384, got '" + whole + "'");
-    return value;
-}
 
 const char* kConfigs = "baseline, realistic, full, heavy, accumulate, reference";
 
 } // namespace
 
 Size parseSize(const std::string& text) {
-    auto x = text.find_first_of("xX");
-    if (x == std::string::npos) throw CLI::ValidationError("--size", "expected WxH, got '" + text + "'");
-    return {parseDimension(std::string_view(text).substr(0, x), text),
-            parseDimension(std::string_view(text).substr(x + 1), text)};
+    try {
+        const WidthHeight size = parseWidthHeight(text);
+        return {size.width, size.height};
+    } catch (const std::invalid_argument& e) {
+        throw CLI::ValidationError("--size", e.what());
+    }
 }
 
 void addCommonRenderOptions(CLI::App& cmd, CommonRenderOptions& o) {

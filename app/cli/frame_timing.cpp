@@ -39,6 +39,8 @@ FrameRange parseFrameRange(const std::string& text) {
     range.first = parseCount(std::string_view(text).substr(0, dash), text, what);
     range.last = dash == std::string::npos ? range.first : parseCount(std::string_view(text).substr(dash + 1), text, what);
     if (range.last < range.first) throw std::invalid_argument(std::string("expected ") + what + ", got '" + text + "'");
+    if (range.last > kMaxFrame)
+        throw std::invalid_argument("frame numbers go up to " + std::to_string(kMaxFrame) + ", got '" + text + "'");
     return range;
 }
 

@@ -21,7 +21,11 @@ struct FrameRange {
 
 // "24", "29.97" is refused (ambiguous), "24000/1001"; throws std::invalid_argument.
 Fps parseFps(const std::string& text);
-// "A-B" with 0 <= A <= B, or a single "A"; throws std::invalid_argument.
+// The highest frame number: 7 digits, 4.8 days at 24 fps. Bounded so that a range's count, the
+// loops over its frames and the frame lists of a shard stay far from int overflow and fit memory.
+constexpr int kMaxFrame = 9'999'999;
+
+// "A-B" with 0 <= A <= B <= kMaxFrame, or a single "A"; throws std::invalid_argument.
 FrameRange parseFrameRange(const std::string& text);
 
 // Whether the scene has anything to animate: a camera path or a glTF animation.

@@ -22,11 +22,12 @@ int requireInt(const EnvLookup& env, const std::string& name) {
     return *value;
 }
 
-Shard checked(Shard s, const std::string& source) {
-    if (s.count < 1 || s.index < 0 || s.index >= s.count)
-        throw std::invalid_argument(source + " gives shard " + std::to_string(s.index) + " of " + std::to_string(s.count) +
+// The index in 64 bits: a job array's task id minus its minimum may not fit an int.
+Shard checked(long long index, int count, const std::string& source) {
+    if (count < 1 || index < 0 || index >= count)
+        throw std::invalid_argument(source + " gives shard " + std::to_string(index) + " of " + std::to_string(count) +
                                     "; expected 0 <= I < N");
-    return s;
+    return {static_cast<int>(index), count};
 }
 
 } // namespace
@@ -36,7 +37,7 @@ Shard parseShard(const std::string& text) {
     const auto index = slash == std::string::npos ? std::nullopt : parseInt(std::string_view(text).substr(0, slash));
     const auto count = slash == std::string::npos ? std::nullopt : parseInt(std::string_view(text).substr(slash + 1));
     if (!index || !count) throw std::invalid_argument("expected a shard I/N, got '" + text + "'");
-    return checked({*index, *count}, "--shard " + text);
+    return checked(*index, *count, "--shard " + text);
 }
 
 Shard selectShard(const std::optional<Shard>& explicitShard, const std::optional<int>& shards, const EnvLookup& env) {
@@ -44,11 +45,11 @@ Shard selectShard(const std::optional<Shard>& explicitShard, const std::optional
     if (env("SLURM_ARRAY_TASK_ID")) {
         const int id = requireInt(env, "SLURM_ARRAY_TASK_ID");
         const int min = env("SLURM_ARRAY_TASK_MIN") ? requireInt(env, "SLURM_ARRAY_TASK_MIN") : 0;
-        return checked({id - min, requireInt(env, "SLURM_ARRAY_TASK_COUNT")}, "the Slurm job array");
+        return checked(static_cast<long long>(id) - min, requireInt(env, "SLURM_ARRAY_TASK_COUNT"), "the Slurm job array");
     }
     if (env("JOB_COMPLETION_INDEX")) {
         if (!shards) throw std::invalid_argument("JOB_COMPLETION_INDEX is set: give the job's completions as --shards N");
-        return checked({requireInt(env, "JOB_COMPLETION_INDEX"), *shards}, "JOB_COMPLETION_INDEX with --shards");
+        return checked(requireInt(env, "JOB_COMPLETION_INDEX"), *shards, "JOB_COMPLETION_INDEX with --shards");
     }
     if (shards && *shards != 1)
         throw std::invalid_argument("--shards needs JOB_COMPLETION_INDEX (a Kubernetes indexed job); use --shard I/N");

@@ -69,6 +69,27 @@ private slots:
         for (const char* bad : {"0", "24/0", "29.97", "x", "-24"}) QVERIFY2(throwsInvalid([bad] { parseFps(bad); }), bad);
     }
 
+    // Found by fuzz_cli_options (seeds/cli/crash-frame-range-count-overflow): 0-2147483647 made
+    // count() overflow, and the loops over a range's frames never end at INT_MAX.
+    void frameNumbersAreBounded() {
+        QCOMPARE(parseFrameRange("0-9999999").count(), kMaxFrame + 1);
+        for (const char* bad : {"0-10000000", "0-2147483647", "2147483647", "0-2147483648"})
+            QVERIFY2(throwsInvalid([bad] { parseFrameRange(bad); }), bad);
+    }
+
+    // Found by fuzz_cli_options (seeds/cli/crash-slurm-index-overflow): the task id minus the
+    // array's minimum overflowed an int.
+    void slurmIndexBeyondAnIntIsRefused() {
+        QVERIFY(throwsInvalid([] {
+            selectShard(std::nullopt, std::nullopt,
+                        envOf({{"SLURM_ARRAY_TASK_ID", "-2147483648"}, {"SLURM_ARRAY_TASK_MIN", "1"}, {"SLURM_ARRAY_TASK_COUNT", "8"}}));
+        }));
+        QVERIFY(throwsInvalid([] {
+            selectShard(std::nullopt, std::nullopt,
+                        envOf({{"SLURM_ARRAY_TASK_ID", "2147483647"}, {"SLURM_ARRAY_TASK_MIN", "-2"}, {"SLURM_ARRAY_TASK_COUNT", "8"}}));
+        }));
+    }
+
     void frameTimesFollowFps() {
         Scene scene;
         scene.settings.timeline.start = 0.5;
