@@ -7,11 +7,11 @@
 
 #include <QString>
 
-class QAction;
-
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+
+class QAction;
 
 namespace glint {
 class Scene;

@@ -88,11 +88,12 @@ void GpuScene::updateTransforms(const Scene& scene) {
 }
 
 bool GpuScene::updateMaterials(const Scene& scene) {
-    if (texturesUsed(scene, texturedMaterials(scene)) != texturesUsed_) return false; // another texture set
+    const std::set<MaterialId> materials = texturedMaterials(scene);
+    if (texturesUsed(scene, materials) != texturesUsed_) return false; // another texture set
     SceneFeatures features = features_;
     features.alpha = features.singleSided = false;
     addMeshMaterialFeatures(scene, features);
-    features.extensionTextures = extensionTexturesUsed(scene, texturedMaterials(scene), textureSlots_);
+    features.extensionTextures = extensionTexturesUsed(scene, materials, textureSlots_);
     if (features.alpha != features_.alpha || features.singleSided != features_.singleSided ||
         features.extensionTextures != features_.extensionTextures)
         return false; // another variant
