@@ -4,9 +4,11 @@
 #include "renderer/gl/render_target.h"
 #include "renderer/passes/accumulate_pass.h"
 #include "renderer/passes/mean_denoise_pass.h"
+#include "renderer/passes/motion_pass.h"
 #include "renderer/passes/reconstruction.h"
 #include "renderer/passes/reconstruction_parameters.h"
 #include "renderer/passes/region_composite.h"
+#include "renderer/passes/render_passes_pass.h"
 #include "renderer/passes/tonemap_pass.h"
 #include "renderer/scene_snapshot.h"
 #include "scene/anim/node_animation.h"
@@ -139,7 +141,7 @@ bool sameImageSettings(const FrameSettings& a, const FrameSettings& b) {
     return a.configuration == b.configuration && framesSpp(a) == framesSpp(b) &&
            effectiveBounces(a) == effectiveBounces(b) && a.seed == b.seed && a.view == b.view && a.clamp == b.clamp &&
            a.independentSampler == b.independentSampler && a.aoDistance == b.aoDistance && a.areaLightStrategy == b.areaLightStrategy && a.width == b.width &&
-           a.height == b.height;
+           a.height == b.height && a.renderPasses == b.renderPasses;
 }
 
 } // namespace
@@ -154,6 +156,16 @@ struct FrameTargets {
     AccumulatePass stillMean;    // every sample since the picture last changed
     gl::RenderTarget display;    // tonemapped RGBA8
     Reconstruction reconstruction;
+};
+
+// The render passes' targets (FrameSettings::renderPasses), made only when they are asked for: the
+// RENDER_PASSES variant's sample, the passes' running mean and the motion vectors.
+struct RenderPassTargets {
+    RenderPassTargets(gl::ProgramCache& programs, int width, int height)
+        : sample(makeRenderPassesGBuffer(width, height)), mean(programs, width, height), motion(programs, width, height) {}
+    gl::RenderTarget sample;
+    RenderPassesMean mean;
+    MotionPass motion;
 };
 
 // The low-resolution stand-in shown until the first full-resolution sample is complete
@@ -176,6 +188,7 @@ struct FrameRenderer::State {
     BloomPass previewBloom{programs};
     std::unique_ptr<FrameTargets> targets;
     std::unique_ptr<PreviewTargets> preview;
+    std::unique_ptr<RenderPassTargets> passTargets;
 
     FrameSettings settings;
     SceneSnapshot scene = snapshotOf(Scene{}, 0.0); // the document and the scene posed at scene.time
@@ -204,6 +217,9 @@ struct FrameRenderer::State {
     FrameWork lastWork;
     int denoisedSamples = 0; // the still mean's sample count when it was last filtered; 0: not since it changed
     bool regionChanged = false; // set, moved or cleared since the last frame
+    // The render passes' motion vectors measure from this camera and these instance transforms.
+    std::optional<CameraSetup> motionCamera;
+    std::map<NodeId, glm::mat4> motionInstances;
     RegionComposite region;     // with a render region: the image outside it stays (across resizes)
 
     void upload() {
@@ -238,8 +254,35 @@ struct FrameRenderer::State {
     PathTraceSettings pathTraceSettings() const {
         const ConfigurationTraits traits = traitsOf(settings.configuration);
         return {settings.seed, effectiveBounces(settings), settings.clamp, settings.independentSampler, settings.view,
-                settings.aoDistance, traits.svgf, traits.ao, settings.areaLightStrategy};
+                settings.aoDistance, traits.svgf, traits.ao, settings.areaLightStrategy, false};
     }
+    // Render passes are traced in whole Accumulate/Reference frames of the plain view only.
+    bool renderingPasses() const {
+        return settings.renderPasses && traitsOf(settings.configuration).accumulate && settings.view == DebugView::None &&
+               settings.rowsPerFrame <= 0 && settings.previewDivisor <= 1;
+    }
+    RenderPassTargets& passes() {
+        if (!passTargets || passTargets->sample.width() != settings.width || passTargets->sample.height() != settings.height)
+            passTargets = std::make_unique<RenderPassTargets>(programs, settings.width, settings.height);
+        return *passTargets;
+    }
+    // One whole sample into the still mean, with the render passes where they are asked for.
+    void traceAccumulatedSample(const PathTraceSettings& pt) {
+        FrameTargets& t = *targets;
+        const auto index = static_cast<std::uint32_t>(t.stillMean.sampleCount());
+        if (!renderingPasses()) {
+            pathTrace.render(*gpu, camera, pt, index, t.sample);
+            t.stillMean.add(t.sample);
+            return;
+        }
+        RenderPassTargets& p = passes();
+        PathTraceSettings withPasses = pt;
+        withPasses.renderPasses = true;
+        pathTrace.render(*gpu, camera, withPasses, index, p.sample);
+        t.stillMean.add(p.sample); // targets 0-6: the beauty and the G-buffer, as without passes
+        p.mean.add(p.sample, t.stillMean.sampleCount());
+    }
+    void readRenderPasses(FrameImages& out);
     // The pixels the path tracer covers: the region plus the reconstruction's reach around it.
     PixelRect tracedPixels() const {
         const ConfigurationTraits traits = traitsOf(settings.configuration);
@@ -309,8 +352,7 @@ void FrameRenderer::State::renderAccumulated() {
     } else {
         const PathTraceSettings pt = pathTraceSettings();
         for (int i = 0; i < framesSpp(settings) && t.stillMean.sampleCount() < limit; ++i) {
-            pathTrace.render(*gpu, camera, pt, static_cast<std::uint32_t>(t.stillMean.sampleCount()), t.sample);
-            t.stillMean.add(t.sample);
+            traceAccumulatedSample(pt);
             lastWork.rows += tracedPixels().height;
         }
     }
@@ -391,6 +433,46 @@ void FrameRenderer::State::renderRealTime() {
     t.reconstruction.svgf = svgfSettingsOf(document().settings.render.svgf);
     result = &t.reconstruction.run(in);
     historyValid = true;
+}
+
+// The render passes of the still mean (layout: render_passes_pass.h), rows top-down, and the
+// motion vectors from the motion reference (none set: the current camera and instances, so 0).
+void FrameRenderer::State::readRenderPasses(FrameImages& out) {
+    RenderPassTargets& p = passes();
+    const int w = out.width;
+    const int h = out.height;
+    const auto rgb = [](const std::vector<float>& rgba) {
+        std::vector<float> plane;
+        plane.reserve(rgba.size() / 4 * 3);
+        for (std::size_t i = 0; i < rgba.size(); i += 4) plane.insert(plane.end(), rgba.begin() + std::ptrdiff_t(i), rgba.begin() + std::ptrdiff_t(i + 3));
+        return plane;
+    };
+    const auto env = topDown(p.mean.mean().readRgba(0), w, h, 4);
+    const auto diffuseDirect = topDown(p.mean.mean().readRgba(1), w, h, 4);
+    const auto diffuseIndirect = topDown(p.mean.mean().readRgba(2), w, h, 4);
+    const auto glossyDirect = topDown(p.mean.mean().readRgba(3), w, h, 4);
+    const auto glossyIndirect = topDown(p.mean.mean().readRgba(4), w, h, 4);
+    auto& passes = out.lightPasses;
+    passes[std::size_t(LightPass::DiffuseDirect)] = rgb(diffuseDirect);
+    passes[std::size_t(LightPass::DiffuseIndirect)] = rgb(diffuseIndirect);
+    passes[std::size_t(LightPass::GlossyDirect)] = rgb(glossyDirect);
+    passes[std::size_t(LightPass::GlossyIndirect)] = rgb(glossyIndirect);
+    auto& emission = passes[std::size_t(LightPass::Emission)];
+    auto& environment = passes[std::size_t(LightPass::Environment)];
+    for (std::size_t i = 0; i < env.size(); i += 4) {
+        emission.insert(emission.end(), {diffuseDirect[i + 3], diffuseIndirect[i + 3], glossyDirect[i + 3]});
+        environment.insert(environment.end(), {env[i + 1], env[i + 2], env[i + 3]});
+    }
+    // Motion from the first sample's depth and id (as the depth and id AOVs), in GL's pixels (y up).
+    std::vector<MovedInstance> moved;
+    for (const auto& [id, worldFromNode] : instances) {
+        const auto previous = motionInstances.find(id);
+        if (motionCamera && previous != motionInstances.end() && previous->second != worldFromNode)
+            moved.push_back({static_cast<float>(id.value), previous->second * glm::inverse(worldFromNode)});
+    }
+    const auto motion = topDown(p.motion.execute(targets->stillMean.mean(), camera, motionCamera.value_or(camera), moved).readRgba(0), w, h, 2);
+    out.vectors.reserve(motion.size());
+    for (std::size_t i = 0; i < motion.size(); i += 2) out.vectors.insert(out.vectors.end(), {motion[i], -motion[i + 1]});
 }
 
 // The preview's images: one accumulated sample, at its own size.
@@ -563,6 +645,11 @@ void FrameRenderer::setShutterTime(double seconds) {
     s.shutterSample = true;
 }
 
+void FrameRenderer::setMotionReference(const CameraSetup& previousCamera, const Scene& previousPose) {
+    state_->motionCamera = previousCamera;
+    state_->motionInstances = instanceTransforms(previousPose);
+}
+
 void FrameRenderer::cut() { state_->historyValid = false; state_->pictureChanged = true; }
 
 void FrameRenderer::resetHistory() { state_->resetAll(); }
@@ -632,6 +719,7 @@ FrameImages FrameRenderer::readImages() {
         readGBuffer(t.stillMean.mean(), out);
         out.variance = sampleVariance(out.radiance, topDown(t.stillMean.mean().readRgba(radianceSquaredAttachment), out.width, out.height, 4),
                                       t.stillMean.sampleCount());
+        if (s.renderingPasses() && s.passTargets) s.readRenderPasses(out);
     } else {
         readGBuffer(framesSpp(s.settings) > 1 ? t.frameMean.mean() : t.sample, out);
         out.motion = topDown(t.reconstruction.motion().readRgba(0), out.width, out.height, 2);

@@ -18,6 +18,7 @@
 #include "scene/core/scene.h"
 #include "scene/history/change_set.h"
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -66,6 +67,10 @@ struct FrameSettings {
     // bloomLinear.
     BloomSettings bloom;
     bool bloomLinear = false;
+    // The EXR's render passes (FrameImages::lightPasses and vectors): Accumulate/Reference whole
+    // frames only (no bands, no preview), where the path tracer's RENDER_PASSES variant writes them
+    // (shaders/pathtrace/render_passes.glsl). Off, nothing of them is compiled, allocated or run.
+    bool renderPasses = false;
     friend bool operator==(const FrameSettings&, const FrameSettings&) = default;
 };
 
@@ -84,6 +89,11 @@ enum class ImageStage {
     Complete,   // full resolution, every sample whole
 };
 
+// The light passes of FrameImages::lightPasses, which sum to the radiance (docs/CLI.md, "Render
+// passes"): the EXR layers DiffDir, DiffInd, GlossDir, GlossInd, Emit and Env, in that order.
+enum class LightPass { DiffuseDirect, DiffuseIndirect, GlossyDirect, GlossyIndirect, Emission, Environment };
+inline constexpr int lightPassCount = 6;
+
 // Linear images read back from the last frame, rows top-down (as image files want them).
 struct FrameImages {
     int width = 0;
@@ -101,6 +111,11 @@ struct FrameImages {
     std::vector<float> motion;    // RG: previous minus current position in pixels (real-time configs)
     std::vector<std::uint8_t> tonemapped; // RGBA8, sRGB, as drawTo shows it
     std::vector<float> bvhCost;   // the optional bvh_cost AOV (renderer/bvh_cost_render.h); else empty
+    // FrameSettings::renderPasses (else empty): RGB each, indexed by LightPass; and the motion
+    // vectors, XY in pixels: where the pixel's surface was at the motion reference
+    // (setMotionReference) minus where it is now, x to the right, y down (image rows).
+    std::array<std::vector<float>, lightPassCount> lightPasses;
+    std::vector<float> vectors;
 };
 
 class FrameRenderer {
@@ -139,6 +154,9 @@ public:
     // averages the scene over the instants its samples were given.
     void setShutterTime(double seconds);
     void cut();                   // camera cut: history is dropped, as after a resize
+    // What the render passes' motion vectors (FrameImages::vectors) measure from: the camera and
+    // the scene (its instances' world transforms) of the previous frame. Unset: no motion.
+    void setMotionReference(const CameraSetup& previousCamera, const Scene& previousPose);
 
     void renderFrame();
     // Tonemaps the last frame into `framebuffer` (any id, 0 included) scaled to width x height.

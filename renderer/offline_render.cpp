@@ -48,6 +48,8 @@ void validate(const RenderRequest& request) {
         r && (r->x < 0 || r->y < 0 || r->width < 1 || r->height < 1 || r->x + r->width > request.width ||
               r->y + r->height > request.height))
         throw std::runtime_error("the render region must be a non-empty part of the image");
+    if (request.renderPasses && !traitsOf(request.configuration).accumulate)
+        throw std::runtime_error("render passes need the accumulate or reference configuration");
 }
 
 } // namespace
@@ -74,6 +76,7 @@ FrameSettings frameSettingsFor(const RenderRequest& request, int sppPerFrame) {
     s.clamp = request.clamp;
     s.bloom = request.bloom;
     s.bloomLinear = request.bloomLinear;
+    s.renderPasses = request.renderPasses;
     s.independentSampler = request.independentSampler;
     s.aoDistance = request.aoDistance;
     s.areaLightStrategy = request.areaLightStrategy;
@@ -99,6 +102,12 @@ RenderOutput OfflineRenderer::render(const Scene& scene, const RenderRequest& re
     frames.setCamera(resolveCamera(scene, request.cameraName, request.width, request.height));
     frames.setTime(request.time); // before the scene: setScene poses it at the renderer's time
     frames.setScene(scene, environmentPath(scene, request));
+    if (request.renderPasses) {
+        // The motion vectors' previous frame: the scene and its camera one frame earlier.
+        Scene storage;
+        const Scene& previous = request.motionSeconds > 0.0 ? posedAt(scene, request.time - request.motionSeconds, storage) : scene;
+        frames.setMotionReference(resolveCamera(previous, request.cameraName, request.width, request.height), previous);
+    }
     frames.resetHistory();
     RenderOutput out;
     out.glRenderer = state_->context.renderer();

@@ -46,6 +46,11 @@ struct RenderRequest {
     AreaLightStrategy areaLightStrategy = AreaLightStrategy::Mis;
     BloomSettings bloom;                  // on the tonemapped outputs; EXR radiance too with bloomLinear
     bool bloomLinear = false;
+    // The EXR's render passes (FrameSettings::renderPasses; Accumulate and Reference only, else
+    // render() throws). Their motion vectors measure from the scene posed `motionSeconds` before
+    // `time` (one frame at the project's fps); 0: no motion.
+    bool renderPasses = false;
+    double motionSeconds = 0.0;
     std::function<void(int done, int total)> progress; // after each sample (real-time: frame); may be empty
 };
 

@@ -64,13 +64,23 @@ bool regionFits(const RenderOptions& o, const Scene& scene) {
 
 // The project's output block stands in for what the command line leaves out: output.path for
 // --out (relative to the scene's folder and inside it; a '#' pattern renders the animation),
-// output.aovs for --aovs, output.codec for --codec. False: a usage error was printed.
+// output.aovs for --aovs, output.passes for --passes, output.codec for --codec. False: a usage
+// error was printed.
 bool applyProjectOutput(RenderOptions& o, const Scene& scene) {
     const OutputSettings& output = scene.settings.output;
+    const std::string project = projectPathFor(o.scene).string();
     if (!o.aovsGiven && !output.aovs.empty()) o.aovs = output.aovs;
+    if (!o.passesGiven && !output.passes.empty()) {
+        try {
+            renderer::parsePassList(output.passes);
+        } catch (const std::exception& e) {
+            printError(project, "key 'output.passes': " + std::string(e.what()));
+            return false;
+        }
+        o.passes = output.passes;
+    }
     if (o.video && !o.codec && !output.codec.empty()) o.codec = output.codec;
     if (!o.out.empty()) return true;
-    const std::string project = projectPathFor(o.scene).string();
     if (output.path.empty()) {
         printError("--out is required: " + project + " sets no output.path");
         return false;
@@ -93,9 +103,22 @@ bool applyProjectOutput(RenderOptions& o, const Scene& scene) {
     return true;
 }
 
+// Render passes come from the running mean: with a real-time configuration they are a usage error,
+// named with where the passes were asked for. (8-bit formats ignore them, as they ignore --aovs.)
+bool passesFitConfiguration(const RenderOptions& o, const Scene& scene) {
+    if (!renderer::parsePassList(o.passes).any() || renderer::imageFormatFor(o.out) != renderer::ImageFormat::Exr) return true;
+    const std::string name = o.common.config.value_or(scene.settings.render.configuration);
+    const auto configuration = renderer::parseConfiguration(name);
+    if (!configuration || traitsOf(*configuration).accumulate) return true; // an unknown one is reported by the planner
+    printError(std::string(o.passesGiven ? "--passes" : projectPathFor(o.scene).string() + ": key 'output.passes'") +
+               ": render passes need the accumulate or reference configuration, not '" + name + "'");
+    return false;
+}
+
 int runRender(RenderOptions o) {
     LoadResult loaded = openSceneFile(o.scene);
     if (!applyProjectOutput(o, loaded.scene)) return kUsage;
+    if (!passesFitConfiguration(o, loaded.scene)) return kUsage;
     completeForRender(loaded, o.scene, o.common.camera.value_or(""), o.common.env.has_value(), outputSize(o.common, loaded.scene));
     if (!regionFits(o, loaded.scene)) return kUsage;
     if (reportWarnings(loaded.warnings, o.common.strict)) return kFailure;
@@ -142,6 +165,12 @@ void addRenderCommand(CLI::App& app, Action& action) {
                                              "bvh_cost: BVH nodes visited + primitives tested by the camera "
                                              "rays, mean per pixel, stills and per-frame renders only)")
         ->check(CLI::Validator(rejection([](const std::string& v) { renderer::parseAovList(v); }), "LIST", "aovs"));
+    cmd->add_option("--passes", options->passes, "EXR render passes: all, none, light, or a list of DiffDir,DiffInd,"
+                                                 "GlossDir,GlossInd,Emit,Env,Vector (any case). The light passes sum "
+                                                 "to the beauty; Vector: motion in pixels since the previous frame. "
+                                                 "Accumulate and reference only; ignored for 8-bit formats (default: "
+                                                 "the project's output.passes, else none)")
+        ->check(CLI::Validator(rejection([](const std::string& v) { renderer::parsePassList(v); }), "LIST", "passes"));
     cmd->add_option("--time", options->time, "Render the scene at this time in seconds: camera path and node "
                                              "animations (default: the scene as stored)")
         ->check(finiteIn(-1e5, 1e5));
@@ -158,6 +187,7 @@ void addRenderCommand(CLI::App& app, Action& action) {
     addCommonRenderOptions(*cmd, options->common);
     cmd->callback([options, cmd, &action] {
         options->aovsGiven = cmd->count("--aovs") > 0;
+        options->passesGiven = cmd->count("--passes") > 0;
         if (!options->out.empty()) validateAnimationOptions(*options); // else once the project is read
         action = [options] { return runRender(*options); };
     });

@@ -37,12 +37,18 @@ RenderPlan planImage(const RenderOptions& o, const FrameJob& job) {
         plan.metadata["seed"] = std::to_string(plan.request.seed);
         plan.metadata["frame"] = std::to_string(*job.frame);
     }
-    if (job.fps) plan.metadata["fps"] = std::to_string(job.fps->numerator) + "/" + std::to_string(job.fps->denominator);
+    if (job.fps) {
+        plan.metadata["fps"] = std::to_string(job.fps->numerator) + "/" + std::to_string(job.fps->denominator);
+        plan.request.motionSeconds = double(job.fps->denominator) / double(job.fps->numerator);
+    }
     if (job.time) {
         plan.request.time = *job.time;
         plan.metadata["time"] = formatNumber(*job.time);
     }
-    if (renderer::imageFormatFor(job.out) == renderer::ImageFormat::Exr) plan.metadata["aovs"] = o.aovs;
+    if (renderer::imageFormatFor(job.out) == renderer::ImageFormat::Exr) {
+        plan.metadata["aovs"] = o.aovs;
+        renderer::planRenderPasses(plan, renderer::parsePassList(o.passes));
+    }
     sealSettings(plan.metadata);
     return plan;
 }
@@ -56,7 +62,8 @@ void renderImage(renderer::OfflineRenderer& gpu, const RenderOptions& o, const F
     if (stop.requested()) throw RenderStopped{};
     renderer::RenderOutput image = gpu.render(*job.scene, plan.request);
     if (job.warnings) job.warnings->report(image.warnings, o.scene, o.common.strict);
-    const renderer::ExrLayers layers = renderer::parseAovList(o.aovs);
+    renderer::ExrLayers layers = renderer::parseAovList(o.aovs);
+    if (renderer::imageFormatFor(job.out) == renderer::ImageFormat::Exr) layers.passes = renderer::parsePassList(o.passes);
     if (layers.bvhCost && renderer::imageFormatFor(job.out) == renderer::ImageFormat::Exr)
         image.bvhCost = renderer::renderBvhCost(gpu, *job.scene, plan.request); // a debug pass of its own
     renderer::ImageMetadata metadata = plan.metadata;

@@ -15,6 +15,8 @@ struct RenderOptions {
     std::string out;      // empty: the project file's output.path
     std::string aovs = "all";
     bool aovsGiven = false; // --aovs on the command line (else the project's output.aovs)
+    std::string passes;     // --passes: EXR render passes; empty: none
+    bool passesGiven = false; // --passes on the command line (else the project's output.passes)
     std::optional<double> time;
     std::optional<ImageWindow> region; // --region: pixels from the top-left corner; unset: the whole image
     bool animation = false;

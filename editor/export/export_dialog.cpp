@@ -104,6 +104,12 @@ void ExportDialog::buildForm(Kind kind) {
     keepTranslated(aovs_, TextRole::AccessibleName, staticMetaObject.className(), QT_TR_NOOP("EXR layers"));
     keepTranslated(aovs_, TextRole::ToolTip, staticMetaObject.className(), QT_TR_NOOP("all, none, or a list of albedo, normal, depth, id, variance"));
     form->addRow(rowLabel(this, QT_TR_NOOP("EXR layers")), aovs_);
+    passes_ = new QLineEdit(this);
+    keepTranslated(passes_, TextRole::AccessibleName, staticMetaObject.className(), QT_TR_NOOP("Render passes"));
+    keepTranslated(passes_, TextRole::ToolTip, staticMetaObject.className(),
+                   QT_TR_NOOP("EXR only, Accumulate and Reference: none, all, light, or a list of DiffDir, DiffInd, GlossDir, GlossInd, Emit, Env, Vector"));
+    keepTranslated(passes_, TextRole::Placeholder, staticMetaObject.className(), QT_TR_NOOP("none"));
+    form->addRow(rowLabel(this, QT_TR_NOOP("Render passes")), passes_);
     animation_ = new QCheckBox(tr("Animation"), this);
     animation_->setChecked(kind == Kind::Animation);
     animation_->setVisible(false);
@@ -150,6 +156,7 @@ ExportSettings ExportDialog::settings() const {
     s.seed = std::uint32_t(seed_->value());
     s.configuration = configuration_->currentData().toString().toStdString();
     s.aovs = aovs_->text().trimmed().toStdString();
+    s.passes = passes_->text().trimmed().toStdString();
     s.animation = animation_->isChecked();
     s.firstFrame = first_->value();
     s.lastFrame = last_->value();
@@ -171,6 +178,7 @@ void ExportDialog::setSettings(const ExportSettings& s) {
     seed_->setValue(int(s.seed));
     configuration_->setCurrentIndex(std::max(0, configuration_->findData(QString::fromStdString(s.configuration))));
     aovs_->setText(QString::fromStdString(s.aovs));
+    passes_->setText(QString::fromStdString(s.passes));
     first_->setValue(s.firstFrame);
     last_->setValue(s.lastFrame);
 }
@@ -180,6 +188,7 @@ void ExportDialog::setSettings(const ExportSettings& s) {
 void ExportDialog::applyProjectOutput(Kind kind) {
     const OutputSettings& output = document_.scene().settings.output;
     if (!output.aovs.empty()) aovs_->setText(QString::fromStdString(output.aovs));
+    passes_->setText(QString::fromStdString(output.passes));
     const QString path = QString::fromStdString(output.path);
     if (path.isEmpty() || path.contains('#') != (kind == Kind::Animation)) return;
     const QString folder = document_.filePath().isEmpty() ? QString() : QFileInfo(document_.filePath()).absolutePath();
@@ -202,6 +211,7 @@ void ExportDialog::restoreLast() {
     seed_->setValue(settings.value("seed", seed_->value()).toInt());
     configuration_->setCurrentIndex(std::max(0, configuration_->findData(settings.value("configuration", configuration_->currentData()))));
     aovs_->setText(settings.value("aovs", aovs_->text()).toString());
+    passes_->setText(settings.value("passes", passes_->text()).toString());
     first_->setValue(settings.value("first", first_->value()).toInt());
     last_->setValue(settings.value("last", last_->value()).toInt());
     if (video_) video_->setText(settings.value("video", video_->text()).toString());
@@ -218,6 +228,7 @@ void ExportDialog::rememberLast() const {
     settings.setValue("seed", seed_->value());
     settings.setValue("configuration", configuration_->currentData());
     settings.setValue("aovs", aovs_->text());
+    settings.setValue("passes", passes_->text());
     settings.setValue("first", first_->value());
     settings.setValue("last", last_->value());
     if (video_) settings.setValue("video", video_->text());

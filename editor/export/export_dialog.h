@@ -51,6 +51,7 @@ private:
     QSpinBox* seed_ = nullptr;
     QComboBox* configuration_ = nullptr;
     QLineEdit* aovs_ = nullptr;
+    QLineEdit* passes_ = nullptr;
     QCheckBox* animation_ = nullptr;
     QSpinBox* first_ = nullptr;
     QSpinBox* last_ = nullptr;

@@ -53,7 +53,9 @@ void ExportJob::run() {
             renderer::ImageMetadata metadata = frame.metadata;
             metadata["version"] = kVersion;
             metadata["renderTimeMs"] = formatNumber(image.timings.setupMs + image.timings.renderMs);
-            renderer::writeRenderImage(frame.out, image, renderer::parseAovList(settings_.aovs), metadata);
+            renderer::ExrLayers layers = renderer::parseAovList(settings_.aovs);
+            if (renderer::imageFormatFor(frame.out) == renderer::ImageFormat::Exr) layers.passes = renderer::parsePassList(settings_.passes);
+            renderer::writeRenderImage(frame.out, image, layers, metadata);
             files << QString::fromStdString(frame.out.string());
             emit frameWritten(files.back());
             before += std::max(1, settings_.spp);

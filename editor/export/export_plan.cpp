@@ -29,6 +29,16 @@ ExportFrame planBase(const Scene& scene, const ExportSettings& s) {
     return f;
 }
 
+// The EXR's AOVs and render passes, as `glint render --aovs --passes` records them. Throws
+// std::invalid_argument for an unknown pass name.
+void addExrLayers(ExportFrame& f, const ExportSettings& s) {
+    f.metadata["aovs"] = s.aovs;
+    renderer::RenderPlan plan{std::move(f.request), std::move(f.metadata)};
+    renderer::planRenderPasses(plan, renderer::parsePassList(s.passes));
+    f.request = std::move(plan.request);
+    f.metadata = std::move(plan.metadata);
+}
+
 } // namespace
 
 double exportFrameTime(const Scene& scene, const ExportSettings& s, int frame) {
@@ -47,7 +57,7 @@ std::vector<ExportFrame> planExport(const Scene& scene, const ExportSettings& s)
         f.out = s.out;
         f.time = s.time;
         if (s.time) f.metadata["time"] = formatNumber(*s.time);
-        if (exr) f.metadata["aovs"] = s.aovs;
+        if (exr) addExrLayers(f, s);
         renderer::sealSettings(f.metadata);
         frames.push_back(std::move(f));
         return frames;
@@ -64,8 +74,9 @@ std::vector<ExportFrame> planExport(const Scene& scene, const ExportSettings& s)
         f.metadata["seed"] = std::to_string(f.request.seed);
         f.metadata["frame"] = std::to_string(k);
         f.metadata["fps"] = std::to_string(s.fpsNumerator) + "/" + std::to_string(s.fpsDenominator);
+        f.request.motionSeconds = double(s.fpsDenominator) / double(s.fpsNumerator);
         f.metadata["time"] = formatNumber(*f.time);
-        if (exr) f.metadata["aovs"] = s.aovs;
+        if (exr) addExrLayers(f, s);
         renderer::sealSettings(f.metadata);
         frames.push_back(std::move(f));
     }

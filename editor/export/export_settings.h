@@ -18,6 +18,7 @@ struct ExportSettings {
     std::uint32_t seed = 0;
     std::string camera;               // empty: the project's active camera
     std::string aovs = "all";         // EXR layers, as --aovs
+    std::string passes;               // EXR render passes, as --passes; empty: none
     std::optional<double> time;       // a still at this time (as --time); unset: the scene as it is
     bool animation = false;
     int firstFrame = 0;

@@ -47,6 +47,9 @@ void appendPixel(Planes& p, const RenderOutput& img, const ExrLayers& layers, st
     if (layers.objectId) append(img.objectId, 1);
     if (layers.variance) append(img.variance, 3);
     if (layers.bvhCost) append(img.bvhCost, 1);
+    for (int k = 0; k < lightPassCount; ++k)
+        if (layers.passes.light[std::size_t(k)]) append(img.lightPasses[std::size_t(k)], 3);
+    if (layers.passes.vector) append(img.vectors, 2);
 }
 
 // The beauty pass and the requested AOVs of the data window, interleaved, with EXR channel names.
@@ -59,9 +62,17 @@ Planes exrPlanes(const RenderOutput& img, const ExrLayers& layers) {
     if (layers.objectId) p.names.push_back("id");
     if (layers.variance) p.names.insert(p.names.end(), {"variance.R", "variance.G", "variance.B"});
     if (layers.bvhCost) p.names.push_back("bvh_cost");
+    for (int k = 0; k < lightPassCount; ++k)
+        if (layers.passes.light[std::size_t(k)]) {
+            const std::string layer = lightPassName(LightPass(k));
+            p.names.insert(p.names.end(), {layer + ".R", layer + ".G", layer + ".B"});
+        }
+    if (layers.passes.vector) p.names.insert(p.names.end(), {"Vector.X", "Vector.Y"});
     const std::size_t count = std::size_t(img.width) * std::size_t(img.height);
     if (layers.bvhCost && img.bvhCost.size() != count)
         throw std::invalid_argument("the bvh_cost AOV is available for stills and per-frame renders only");
+    if (layers.passes.any() && (img.vectors.size() != count * 2 || img.lightPasses[0].size() != count * 3))
+        throw std::invalid_argument("render passes are available for the accumulate and reference configurations only");
     const ImageWindow window = dataWindowOf(img);
     p.pixels.reserve(std::size_t(window.width) * std::size_t(window.height) * p.names.size());
     for (int y = window.y; y < window.y + window.height; ++y)
@@ -163,7 +174,8 @@ ImageFormat imageFormatFor(const std::filesystem::path& file) {
 ExrLayers parseAovList(const std::string& list) {
     const std::string l = lower(list);
     if (l == "all") return {};
-    ExrLayers none{false, false, false, false};
+    ExrLayers none;
+    none.albedo = none.normal = none.depth = none.objectId = false;
     if (l == "none") return none;
     std::size_t start = 0;
     while (start <= l.size()) {
@@ -179,6 +191,49 @@ ExrLayers parseAovList(const std::string& list) {
         start = comma + 1;
     }
     return none;
+}
+
+bool RenderPasses::any() const {
+    return vector || std::find(light.begin(), light.end(), true) != light.end();
+}
+
+const char* lightPassName(LightPass pass) {
+    static constexpr const char* names[lightPassCount] = {"DiffDir", "DiffInd", "GlossDir", "GlossInd", "Emit", "Env"};
+    return names[std::size_t(pass)];
+}
+
+RenderPasses parsePassList(const std::string& list) {
+    const std::string l = lower(list);
+    RenderPasses passes;
+    if (l.empty() || l == "none") return passes;
+    if (l == "all") {
+        passes.light.fill(true);
+        passes.vector = true;
+        return passes;
+    }
+    std::size_t start = 0;
+    while (start <= l.size()) {
+        const std::size_t comma = std::min(l.find(',', start), l.size());
+        const std::string item = l.substr(start, comma - start);
+        bool known = false;
+        for (int k = 0; k < lightPassCount; ++k)
+            if (item == lower(lightPassName(LightPass(k)))) known = passes.light[std::size_t(k)] = true;
+        if (item == "light") known = true, passes.light.fill(true);
+        if (item == "vector") known = passes.vector = true;
+        if (!known)
+            throw std::invalid_argument("unknown render pass '" + list.substr(start, comma - start) +
+                                        "' (use all, none, light or a list of DiffDir, DiffInd, GlossDir, GlossInd, Emit, Env, Vector)");
+        start = comma + 1;
+    }
+    return passes;
+}
+
+std::string passListName(const RenderPasses& passes) {
+    std::string name;
+    for (int k = 0; k < lightPassCount; ++k)
+        if (passes.light[std::size_t(k)]) name += std::string(name.empty() ? "" : ",") + lightPassName(LightPass(k));
+    if (passes.vector) name += name.empty() ? "Vector" : ",Vector";
+    return name;
 }
 
 void prepareOutputFolder(const std::filesystem::path& file) {

@@ -7,6 +7,7 @@
 // crash or a full disk never leaves a partial file under the final name.
 #include "renderer/offline_render.h"
 
+#include <array>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -18,6 +19,25 @@ enum class ImageFormat { Exr, Png, Jpeg, Tiff };
 // From the extension (case-insensitive); throws std::invalid_argument naming the accepted ones.
 ImageFormat imageFormatFor(const std::filesystem::path& file);
 
+// The EXR's render passes (docs/CLI.md, "Render passes"): the light passes DiffDir, DiffInd,
+// GlossDir, GlossInd, Emit and Env, which sum to the beauty R, G, B, and the motion vectors Vector.
+struct RenderPasses {
+    std::array<bool, lightPassCount> light{}; // indexed by LightPass
+    bool vector = false;
+    bool any() const;
+    friend bool operator==(const RenderPasses&, const RenderPasses&) = default;
+};
+
+// The EXR layer name of a light pass ("DiffDir", ...).
+const char* lightPassName(LightPass pass);
+
+// Parses --passes and the project's output.passes: "all", "none" (or empty), "light" (the six
+// light passes) or a comma list of their layer names and Vector, any case. Throws
+// std::invalid_argument naming an unknown pass.
+RenderPasses parsePassList(const std::string& list);
+// The canonical list, as the metadata records it: "DiffDir,DiffInd,...,Vector"; "" for none.
+std::string passListName(const RenderPasses& passes);
+
 struct ExrLayers {
     bool albedo = true;
     bool normal = true;
@@ -25,6 +45,7 @@ struct ExrLayers {
     bool objectId = true;
     bool variance = false; // optional: only when listed
     bool bvhCost = false;  // optional debug AOV `bvh_cost` (one float channel): only when listed
+    RenderPasses passes;   // --passes: none unless asked for
 };
 
 // Parses --aovs: "all" (every layer but the optional variance), "none" or a comma list of albedo,

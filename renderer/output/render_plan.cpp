@@ -55,6 +55,13 @@ void addReconstruction(ImageMetadata& metadata, const RenderSettings& project, C
 
 } // namespace
 
+void planRenderPasses(RenderPlan& plan, const RenderPasses& passes) {
+    if (!passes.any()) return;
+    plan.request.renderPasses = true;
+    plan.metadata["passes"] = passListName(passes);
+    if (passes.vector) plan.metadata["vectorSeconds"] = formatNumber(plan.request.motionSeconds);
+}
+
 void sealSettings(ImageMetadata& metadata) {
     std::string canonical;
     for (const auto& [k, v] : metadata)
@@ -93,6 +100,7 @@ RenderPlan planRender(const Scene& scene, const std::filesystem::path& sceneFile
                                     ? double(timeline.fpsDenominator) / double(timeline.fpsNumerator)
                                     : 1.0 / 24.0;
     r.shutterSeconds = double(o.shutter.value_or(project.shutter)) * frameSeconds;
+    r.motionSeconds = frameSeconds;
 
     const Tonemapper tonemapper = r.tonemapper.value_or(project.tonemapper);
     // The camera's own exposure is part of what the PNG shows and what `glint encode` applies to EXRs.

@@ -48,6 +48,11 @@ struct RenderPlan {
 // Throws std::runtime_error for settings the renderer cannot honour (an unknown configuration).
 RenderPlan planRender(const Scene& scene, const std::filesystem::path& sceneFile, const RenderOverrides& overrides);
 
+// Asks for the EXR's render passes and records them (hashed): "passes" (passListName) and, with
+// Vector, "vectorSeconds" (request.motionSeconds: one frame of the project's timeline unless the
+// caller set another fps). No passes: nothing changes, so earlier frames keep their settings hash.
+void planRenderPasses(RenderPlan& plan, const RenderPasses& passes);
+
 // Sets metadata["settingsHash"]: FNV-1a over every entry but the render time and the version, so
 // a frame is re-rendered by --resume exactly when something that changes its pixels changed.
 void sealSettings(ImageMetadata& metadata);

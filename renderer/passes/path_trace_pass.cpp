@@ -30,6 +30,10 @@ gl::RenderTarget makeGBuffer(int width, int height) {
     return gl::RenderTarget(width, height, std::vector<GLenum>(gBufferAttachmentCount, GL_RGBA32F));
 }
 
+gl::RenderTarget makeRenderPassesGBuffer(int width, int height) {
+    return gl::RenderTarget(width, height, std::vector<GLenum>(renderPassesAttachmentCount, GL_RGBA32F));
+}
+
 void PathTracePass::render(const GpuScene& scene, const CameraSetup& camera, const PathTraceSettings& settings,
                            std::uint32_t sampleIndex, const gl::RenderTarget& target) {
     gl::Defines defines = scene.features().defines();
@@ -41,9 +45,13 @@ void PathTracePass::render(const GpuScene& scene, const CameraSetup& camera, con
     if (settings.areaLightStrategy != AreaLightStrategy::Mis)
         defines["AREA_LIGHT_STRATEGY"] = settings.areaLightStrategy == AreaLightStrategy::LightOnly ? "1" : "2";
     if (settings.view == DebugView::BvhCost) defines["DEBUG_VIEW_BVH_COST"] = defines["BVH_COUNT_COST"] = "";
-    const gl::ShaderProgram& program = programs_.get({"fullscreen.vert.glsl", "pathtrace/main.frag.glsl", defines,
-                                                      {"outRadiance", "outAlbedo", "outNormalDepth", "outObjectId",
-                                                       "outDiffuseAlbedo", "outSpecularAlbedo", "outSpecularRadiance"}});
+    std::vector<std::string> outputs = {"outRadiance", "outAlbedo", "outNormalDepth", "outObjectId",
+                                        "outDiffuseAlbedo", "outSpecularAlbedo", "outSpecularRadiance"};
+    if (settings.renderPasses) {
+        defines["RENDER_PASSES"] = "";
+        outputs.push_back("outGlossyIndirect");
+    }
+    const gl::ShaderProgram& program = programs_.get({"fullscreen.vert.glsl", "pathtrace/main.frag.glsl", defines, outputs});
     program.use();
     scene.bind(program);
     setCameraUniforms(program, camera, target);

@@ -37,6 +37,10 @@ struct PathTraceSettings {
     // configurations that cut paths short (ConfigurationTraits::ao).
     bool ambientTerm = false;
     AreaLightStrategy areaLightStrategy = AreaLightStrategy::Mis;
+    // The EXR's render passes (shaders/pathtrace/render_passes.glsl), a shader variant that writes
+    // them over targets 4-6 and an eighth (renderPassesAttachmentCount): offline Accumulate and
+    // Reference only, where nothing reads the denoiser's targets. Off: the shader is unchanged.
+    bool renderPasses = false;
 };
 
 enum GBufferAttachment {
@@ -49,6 +53,13 @@ enum GBufferAttachment {
     specularRadianceAttachment = 6, // rgb <= radiance; radiance - this is the diffuse lobe's part
     gBufferAttachmentCount = 7
 };
+
+// The RENDER_PASSES variant's targets (render_passes_pass.h reads them): objectId.yzw = Env,
+// diffuse albedo = DiffDir, specular albedo = DiffInd, specular radiance = GlossDir (their a:
+// Emit's r, g, b), and one more, GlossInd.
+inline constexpr int glossyIndirectAttachment = 7;
+inline constexpr int renderPassesAttachmentCount = 8;
+gl::RenderTarget makeRenderPassesGBuffer(int width, int height);
 
 gl::RenderTarget makeGBuffer(int width, int height);
 

@@ -86,6 +86,7 @@ struct Timeline {
 struct OutputSettings {
     std::string path;   // e.g. "frames/shot_####.exr"
     std::string aovs = "all";
+    std::string passes; // EXR render passes, as --passes; empty: none (docs/CLI.md, "Render passes")
     std::string codec = "h264";
     friend bool operator==(const OutputSettings&, const OutputSettings&) = default;
 };

@@ -108,7 +108,7 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(BloomParameters, strength, radiu
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(RenderSettings, configuration, width, height, spp, bounces, seed,
                                                 exposure, tonemapper, clamp, taa, svgf, bloom)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Timeline, start, end, fpsNumerator, fpsDenominator)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(OutputSettings, path, aovs, codec)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(OutputSettings, path, aovs, passes, codec)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(ProjectSettings, render, environment, activeCamera, timeline, output,
                                    lightUnits, unknown)
 

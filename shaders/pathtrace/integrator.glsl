@@ -191,6 +191,7 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng, OUT(LobeRadiance) l
         if (depth == 1 && reflectedPath) lobes.reflectionDistance = min(min(hit.t, lampT), REFLECTION_AT_INFINITY);
         if (lampT < hit.t) {
             addRadiance(result.radiance, lobes, throughput * lamp, specularPath);
+            PASS_FOUND(depth, throughput * lamp, specularPath, false);
             if (depth == 0) {
                 result.albedo = lamp;
                 result.depth = lampT * dot(ray.direction, viewAxis);
@@ -200,8 +201,10 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng, OUT(LobeRadiance) l
         }
         if (hit.material < 0) {
             vec3 environment = environmentRadiance(ray.direction);
-            addRadiance(result.radiance, lobes, throughput * (environment * environmentMisWeight(ray.direction, lastBsdfPdf) +
-                                                     sunDiskRadiance(ray.direction, lastBsdfPdf)), specularPath);
+            vec3 found = throughput * (environment * environmentMisWeight(ray.direction, lastBsdfPdf) +
+                                       sunDiskRadiance(ray.direction, lastBsdfPdf));
+            addRadiance(result.radiance, lobes, found, specularPath);
+            PASS_FOUND(depth, found, specularPath, true);
             if (depth == 0) result.albedo = environment;
             break;
         }
@@ -221,16 +224,22 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng, OUT(LobeRadiance) l
             result.objectId = hit.objectId;
             result.lobes = vec4(v.material.metallic, v.material.roughness, v.material.transmission, v.material.specularFactor);
         }
-        addRadiance(result.radiance, lobes, throughput * shading.emission * emissionMisWeight(hit, shading.sampledEmission, ray, lastPosition, lastBsdfPdf),
-                    specularPath);
+        vec3 emitted = throughput * shading.emission * emissionMisWeight(hit, shading.sampledEmission, ray, lastPosition, lastBsdfPdf);
+        addRadiance(result.radiance, lobes, emitted, specularPath);
+        PASS_FOUND(depth, emitted, specularPath, false);
         if (depth > maxBounces) break;
 
         vec3 diffuseDirect;
         vec3 direct = throughput * directLight(v, depth == 0, rng, diffuseDirect);
         if (depth == 0) addSplitRadiance(result.radiance, lobes, direct, throughput * diffuseDirect);
         else addRadiance(result.radiance, lobes, direct, specularPath);
+        PASS_LIGHT_SAMPLED(depth, direct, throughput * diffuseDirect, specularPath);
 #ifdef AMBIENT_TERM
-        if (depth == 0) addRadiance(result.radiance, lobes, ambientTerm(v, rng), false); // diffuse: it is albedo x light
+        if (depth == 0) {
+            vec3 ambient = ambientTerm(v, rng);
+            addRadiance(result.radiance, lobes, ambient, false); // diffuse: it is albedo x light
+            PASS_LIGHT_SAMPLED(1, ambient, ambient, false);      // it stands for indirect diffuse light
+        }
 #endif
 
         BsdfSample bs;

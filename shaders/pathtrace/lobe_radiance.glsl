@@ -60,5 +60,6 @@ void clampRadiance(INOUT(vec3) radiance, INOUT(LobeRadiance) lobes, float limit)
     vec3 scale = mix(vec3(1.0), clamped / max(radiance, vec3(1e-30)), greaterThan(radiance, clamped));
     lobes.diffuse *= scale;
     lobes.specular *= scale;
+    PASSES_SCALE(scale); // render_passes.glsl
     radiance = clamped;
 }

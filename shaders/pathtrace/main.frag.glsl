@@ -20,6 +20,7 @@
 #include "shape_lights.glsl"
 #endif
 #include "camera.glsl"
+#include "render_passes.glsl"
 #include "lobe_radiance.glsl"
 #include "integrator.glsl"
 #include "output_guard.glsl"
@@ -42,6 +43,17 @@ out vec4 outSpecularAlbedo; // rgb: approximate directional albedo of the specul
 // is 0 and the split compiles away. DEBUG_VIEW_DIFFUSE writes the diffuse part into outRadiance.
 // a: the first bounce's reflection distance (LobeRadiance) in the SPLIT_LOBES variant, else 1.
 out vec4 outSpecularRadiance;
+#ifdef RENDER_PASSES
+// The RENDER_PASSES variant (render_passes.glsl; offline Accumulate/Reference only, where nothing
+// reads the denoiser's targets 4-6) writes the passes there instead: diffuse albedo = DiffDir,
+// specular albedo = DiffInd, specular radiance = GlossDir, each with one channel of Emit in a;
+// objectId.yzw = Env; and an eighth target, GlossInd. renderer/passes/render_passes_pass.h
+// averages them.
+out vec4 outGlossyIndirect;
+
+// A pass of a sample whose radiance was dropped (output_guard.glsl) is dropped with it.
+vec3 guardedPass(vec3 pass, bool kept) { return kept ? finiteNonNegative(pass) : vec3(0.0); }
+#endif
 
 void main() {
     uvec2 pixel = uvec2(gl_FragCoord.xy);
@@ -68,4 +80,13 @@ void main() {
     outObjectId = vec4(path.objectId, 0.0, 0.0, 1.0);
     outDiffuseAlbedo = vec4(finiteNonNegative(diffuseAlbedo(path)), 1.0);
     outSpecularAlbedo = vec4(finiteNonNegative(specularAlbedo(path)), path.lobes.y);
+#ifdef RENDER_PASSES
+    bool kept = outRadiance.rgb == path.radiance;
+    vec3 emission = guardedPass(gPasses.emission, kept);
+    outObjectId.yzw = guardedPass(gPasses.environment, kept);
+    outDiffuseAlbedo = vec4(guardedPass(gPasses.diffuseDirect, kept), emission.r);
+    outSpecularAlbedo = vec4(guardedPass(gPasses.diffuseIndirect, kept), emission.g);
+    outSpecularRadiance = vec4(guardedPass(gPasses.glossyDirect, kept), emission.b);
+    outGlossyIndirect = vec4(guardedPass(gPasses.glossyIndirect, kept), 0.0);
+#endif
 }

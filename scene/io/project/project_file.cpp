@@ -264,6 +264,7 @@ void readOutput(ObjectReader& r, OutputSettings& o)
 {
     r.read("path", o.path);
     r.read("aovs", o.aovs);
+    r.read("passes", o.passes);
     r.read("codec", o.codec);
 }
 
@@ -405,6 +406,7 @@ std::string writeProjectFileText(const ProjectFile& project)
     const Timeline& t = s.timeline;
     root["timeline"] = {{"start", t.start}, {"end", t.end}, {"fps", {t.fpsNumerator, t.fpsDenominator}}};
     root["output"] = {{"path", s.output.path}, {"aovs", s.output.aovs}, {"codec", s.output.codec}};
+    if (!s.output.passes.empty()) root["output"]["passes"] = s.output.passes; // left out when none: older files keep their bytes
     mergeUnknown(root, s.unknown);
     return deterministicJsonText(root, 2) + "\n";
 }
