@@ -16,6 +16,8 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
+
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -71,12 +73,15 @@ private slots:
 
     void stillEqualsCommandLine_data() {
         QTest::addColumn<QString>("extension");
-        QTest::newRow("exr") << "exr";
-        QTest::newRow("png") << "png";
+        QTest::addColumn<QString>("passes");
+        QTest::newRow("exr") << "exr" << "";
+        QTest::newRow("exr with render passes") << "exr" << "all";
+        QTest::newRow("png") << "png" << "";
     }
 
     void stillEqualsCommandLine() {
         QFETCH(QString, extension);
+        QFETCH(QString, passes);
         const QString editorFile = dir_.filePath("editor." + extension), cliFile = dir_.filePath("cli." + extension);
         ExportSettings s;
         s.sceneFile = document_.filePath().toStdString();
@@ -85,6 +90,7 @@ private slots:
         s.height = 32;
         s.spp = 4;
         s.configuration = "accumulate";
+        s.passes = passes.toStdString();
         ExportController controller;
         QSignalSpy finished(&controller, &ExportController::finished);
         QSignalSpy running(&controller, &ExportController::running);
@@ -96,7 +102,7 @@ private slots:
 
         QProcess cli;
         cli.start(GLINT_EXECUTABLE, {"render", document_.filePath(), "--size", "48x32", "--spp", "4", "--config", "accumulate",
-                                     "--out", cliFile});
+                                     "--out", cliFile, "--passes", passes.isEmpty() ? QString("none") : passes});
         QVERIFY(cli.waitForFinished(60000));
         QVERIFY2(cli.exitStatus() == QProcess::NormalExit && cli.exitCode() == 0,
                  qPrintable(QString("exit %1: %2").arg(cli.exitCode()).arg(QString::fromUtf8(cli.readAllStandardError()))));
@@ -110,6 +116,7 @@ private slots:
         ExrContents a = readExr(editorFile.toStdString()), b = readExr(cliFile.toStdString());
         QVERIFY(!a.pixels.empty());
         QCOMPARE(a.channels, b.channels);
+        QCOMPARE(int(std::count(a.channels.begin(), a.channels.end(), "Vector.X")), passes.isEmpty() ? 0 : 1);
         QVERIFY(std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)) == 0 && a.pixels.size() == b.pixels.size());
         QVERIFY(a.attributes.count("glint:renderTimeMs") && a.attributes.count("glint:settingsHash"));
         // The render time is the one header entry allowed to differ (docs/CLI.md).
@@ -209,6 +216,7 @@ private slots:
         s.seed = 5;
         s.configuration = "reference";
         s.aovs = "albedo,depth";
+        s.passes = "Emit,Vector";
         s.firstFrame = 3;
         s.lastFrame = 7;
         dialog.setSettings(s);
@@ -220,6 +228,7 @@ private slots:
         QCOMPARE(back.seed, 5u);
         QCOMPARE(back.configuration, std::string("reference"));
         QCOMPARE(back.aovs, std::string("albedo,depth"));
+        QCOMPARE(back.passes, std::string("Emit,Vector"));
         QVERIFY(back.animation);
         QCOMPARE(back.firstFrame, 3);
         QCOMPARE(back.lastFrame, 7);
@@ -242,12 +251,14 @@ private slots:
         ProjectSettings settings = document_.scene().settings;
         settings.output.path = "renders/shot.png";
         settings.output.aovs = "none";
+        settings.output.passes = "light";
         document_.push(std::make_unique<SetProjectSettings>(settings));
         const QString expected = QFileInfo(document_.filePath()).absolutePath() + "/renders/shot.png";
         {
             ExportDialog still(document_, ExportDialog::Kind::Still);
             QCOMPARE(QString::fromStdString(still.settings().out.string()), expected);
             QCOMPARE(still.settings().aovs, std::string("none"));
+            QCOMPARE(still.settings().passes, std::string("light"));
             ExportDialog animation(document_, ExportDialog::Kind::Animation);
             QVERIFY(QString::fromStdString(animation.settings().out.string()).contains("####"));
         }
@@ -257,6 +268,7 @@ private slots:
         chosen.width = 24;
         chosen.height = 16;
         chosen.spp = 3;
+        chosen.passes = "Emit";
         dialog.setSettings(chosen);
         QSignalSpy finished(&dialog.controller(), &ExportController::finished);
         dialog.startExport();
@@ -266,6 +278,7 @@ private slots:
         QCOMPARE(QString::fromStdString(again.settings().out.string()), dir_.filePath("chosen.png"));
         QCOMPARE(again.settings().width, 24);
         QCOMPARE(again.settings().spp, 3);
+        QCOMPARE(again.settings().passes, std::string("Emit"));
         document_.undo();
     }
 
