@@ -24,7 +24,7 @@ ProjectFile sampleProject()
     p.settings.render.shutter = 0.5f;
     p.settings.environment = {.file = "studio.hdr", .color = {0.1f, 0.2f, 0.3f}, .intensity = 1.5f, .rotationDegrees = 33.3f};
     p.settings.timeline = {.start = 0.5, .end = 10.1, .fpsNumerator = 24000, .fpsDenominator = 1001};
-    p.settings.output = {.path = "frames/shot_####.exr", .aovs = "none", .codec = "prores"};
+    p.settings.output = {.path = "frames/shot_####.exr", .aovs = "none", .passes = "light,Vector", .codec = "prores"};
     p.settings.lightUnits = LightUnits::Raw;
     return p;
 }
@@ -95,6 +95,9 @@ private slots:
         QCOMPARE(parsed.sceneFile, original.sceneFile);
         QVERIFY(parsed.settings == original.settings);
         QCOMPARE(writeProjectFileText(parsed), writeProjectFileText(original));
+        QVERIFY(writeProjectFileText(original).find(R"("passes": "light,Vector")") != std::string::npos);
+        // No passes (the default): no key, so files saved before it existed keep their bytes.
+        QVERIFY(writeProjectFileText(ProjectFile{}).find("passes") == std::string::npos);
     }
 
     void defaultsFromAMinimalFile()
