@@ -3,32 +3,76 @@
 #include "renderer/gpu_scene/environment_cube.h"
 
 #include "scene/core/diagnostics.h"
+#include "scene/io/oiio/oiio_image_decoder.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
-namespace glint::renderer {
+#include <algorithm>
+#include <fstream>
 
-EnvironmentImage loadEnvironmentImage(const std::filesystem::path& file) {
-    auto input = OIIO::ImageInput::open(file.string());
-    if (!input) throw FileError(file.string(), "environment-unreadable", "cannot read the environment image: " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = input->spec();
+namespace glint::renderer {
+namespace {
+
+EnvironmentImage readEnvironment(OIIO::ImageInput& input, const std::string& name, const DecodeLimits& limits) {
+    const OIIO::ImageSpec& spec = input.spec();
     if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
-        throw FileError(file.string(), "environment-empty", "the environment image has no pixels");
+        throw FileError(name, "environment-empty", "the environment image has no pixels");
+    // The declared size against the limits before anything is allocated: 3 floats per pixel.
+    if (const std::string error = decodeLimitError(spec.width, spec.height, spec.nchannels, 3, sizeof(float), limits); !error.empty())
+        throw FileError(name, "environment-too-large", "cannot read the environment image: " + error);
+    if (spec.deep) throw FileError(name, "environment-unreadable", "cannot read the environment image: deep images are not read");
     EnvironmentImage image;
     image.width = spec.width;
     image.height = spec.height;
-    image.rgb.resize(static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height) * 3);
-    // Read channels 0..2 (a one-channel image is repeated into grey below).
-    const int channels = std::min(spec.nchannels, 3);
-    std::vector<float> pixels(static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height) * static_cast<std::size_t>(channels));
-    if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data()))
-        throw FileError(file.string(), "environment-unreadable", "cannot decode the environment image: " + input->geterror());
-    for (std::size_t i = 0; i < image.rgb.size() / 3; ++i)
-        for (std::size_t c = 0; c < 3; ++c)
-            image.rgb[i * 3 + c] = pixels[i * static_cast<std::size_t>(channels) + std::min<std::size_t>(c, static_cast<std::size_t>(channels) - 1)];
+    const std::size_t pixels = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height);
+    image.rgb.resize(pixels * 3);
+    if (spec.nchannels >= 3) { // channels 0..2 straight into the image
+        if (!input.read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, image.rgb.data()))
+            throw FileError(name, "environment-unreadable", "cannot decode the environment image: " + input.geterror());
+    } else { // grey, or grey and alpha: the grey on all three
+        std::vector<float> grey(pixels);
+        if (!input.read_image(0, 0, 0, 1, OIIO::TypeDesc::FLOAT, grey.data()))
+            throw FileError(name, "environment-unreadable", "cannot decode the environment image: " + input.geterror());
+        for (std::size_t i = 0; i < pixels; ++i) image.rgb[i * 3] = image.rgb[i * 3 + 1] = image.rgb[i * 3 + 2] = grey[i];
+    }
     // A cube map (a cross or a strip of six faces, told by its shape) becomes a latitude-longitude map.
     if (const auto layout = cubeLayoutOf(image.width, image.height)) return equirectFromCube(image, *layout);
     return image;
+}
+
+// Glint's own header checks before OpenImageIO opens the file (libjpeg allocates a progressive
+// JPEG's coefficients for the declared size on opening, OpenEXR an attribute's declared size).
+void checkHeader(std::span<const std::uint8_t> header, std::uint64_t fileSize, const std::string& name, const DecodeLimits& limits) {
+    if (const std::string error = headerLimitError(header, fileSize, 3, sizeof(float), limits); !error.empty())
+        throw FileError(name, "environment-too-large", "cannot read the environment image: " + error);
+}
+
+} // namespace
+
+EnvironmentImage loadEnvironmentImage(const std::filesystem::path& file, const DecodeLimits& limits) {
+    {
+        std::vector<std::uint8_t> header(256 * 1024); // JPEG's frame header may follow large metadata segments
+        std::ifstream in(file, std::ios::binary);
+        in.read(reinterpret_cast<char*>(header.data()), static_cast<std::streamsize>(header.size()));
+        header.resize(static_cast<std::size_t>(in.gcount()));
+        std::error_code ec;
+        const std::uintmax_t size = std::filesystem::file_size(file, ec);
+        checkHeader(header, ec ? header.size() : size, file.string(), limits);
+    }
+    auto input = OIIO::ImageInput::open(file.string());
+    if (!input) throw FileError(file.string(), "environment-unreadable", "cannot read the environment image: " + OIIO::geterror());
+    return readEnvironment(*input, file.string(), limits);
+}
+
+EnvironmentImage decodeEnvironmentImage(std::span<const std::uint8_t> encoded, const std::string& name, const DecodeLimits& limits) {
+    const char* format = memoryImageName(encoded);
+    if (!format) throw FileError(name, "environment-unreadable", "cannot read the environment image: not a PNG, JPEG, HDR, EXR or TIFF file");
+    checkHeader(encoded, encoded.size(), name, limits);
+    OIIO::Filesystem::IOMemReader reader(encoded.data(), encoded.size());
+    auto input = OIIO::ImageInput::open(format, nullptr, &reader);
+    if (!input) throw FileError(name, "environment-unreadable", "cannot read the environment image: " + OIIO::geterror());
+    return readEnvironment(*input, name, limits);
 }
 
 } // namespace glint::renderer

@@ -67,6 +67,19 @@ std::vector<TextureLevel> buildMipChain(TextureLevel base, bool srgb) {
     return levels;
 }
 
+TextureLevel halveLevel(const TextureLevel& level, bool srgb) { return halve(level, srgb); }
+
+DecodedMipChain decodeMipChain(const ImageDecoder& decoder, std::span<const std::uint8_t> encoded, bool srgb, int maxSize,
+                               const DecodeLimits& limits) {
+    DecodedImage<std::uint8_t> decoded = decoder.decode8(encoded, limits);
+    if (!decoded.ok()) return {{}, decoded.error.empty() ? std::string("the image has no pixels") : decoded.error};
+    TextureLevel level{decoded.width, decoded.height, std::move(decoded.rgba)};
+    // Halved in the stored values (not linear light) as before, so the bytes stay the same.
+    maxSize = std::max(maxSize, 1);
+    while (level.width > maxSize || level.height > maxSize) level = halve(level, false);
+    return {buildMipChain(std::move(level), srgb), {}};
+}
+
 TextureLevel resampleLevel(const TextureLevel& level, int width, int height, bool srgb) {
     TextureLevel out{width, height, std::vector<std::uint8_t>(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4)};
     std::size_t i = 0;

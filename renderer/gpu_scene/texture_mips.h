@@ -1,7 +1,12 @@
 #pragma once
 // CPU mipmaps for material textures: a deterministic 2x2 box filter (driver glGenerateMipmap
-// filters differ between vendors), averaged in linear light for sRGB images. CPU only: no GL here.
+// filters differ between vendors), averaged in linear light for sRGB images. CPU only: no GL here
+// (library glint_renderer_image, which the scene-only build fuzzes).
+#include "scene/io/image_decoder.h"
+
 #include <cstdint>
+#include <span>
+#include <string>
 #include <vector>
 
 namespace glint::renderer {
@@ -24,6 +29,18 @@ std::uint8_t linearToSrgb8(float linear); // rounded to the nearest code
 // n, the odd last row or column of an odd-sized level folded into its neighbour by clamping. Colour
 // channels of an sRGB image are averaged as linear values and re-encoded; alpha is always linear.
 std::vector<TextureLevel> buildMipChain(TextureLevel base, bool srgb);
+
+// One level halved: level 1 of buildMipChain(level, srgb), without the levels after it.
+TextureLevel halveLevel(const TextureLevel& level, bool srgb);
+
+// An encoded image decoded (8-bit) within `limits`, halved until neither side exceeds `maxSize`,
+// and its mip chain built; or why it could not be decoded (no levels).
+struct DecodedMipChain {
+    MipChain levels;
+    std::string error;
+};
+DecodedMipChain decodeMipChain(const ImageDecoder& decoder, std::span<const std::uint8_t> encoded, bool srgb, int maxSize,
+                               const DecodeLimits& limits = {});
 
 // Bilinear resampling to another size (texel centres aligned, edges clamped), in linear light for
 // sRGB images: used only when the scene has more texture sizes than sampler units.

@@ -35,11 +35,9 @@ std::pair<Chain, std::string> decodeChain(const Scene& scene, Use use, const Ima
     if (image.missing || image.encoded.empty()) return {nullptr, imageName(scene, id) + ": missing"};
     if (cache)
         if (Chain hit = cache->find(image.encoded, use.second, maxSize)) return {std::move(hit), {}};
-    DecodedImage<std::uint8_t> decoded = decoder.decode8(image.encoded, DecodeLimits{});
-    if (!decoded.ok()) return {nullptr, imageName(scene, id) + ": " + decoded.error};
-    TextureLevel level{decoded.width, decoded.height, std::move(decoded.rgba)};
-    while (level.width > maxSize || level.height > maxSize) level = buildMipChain(std::move(level), false).at(1);
-    Chain chain = std::make_shared<const MipChain>(buildMipChain(std::move(level), use.second));
+    DecodedMipChain decoded = decodeMipChain(decoder, image.encoded, use.second, maxSize);
+    if (!decoded.error.empty()) return {nullptr, imageName(scene, id) + ": " + decoded.error};
+    Chain chain = std::make_shared<const MipChain>(std::move(decoded.levels));
     if (cache) cache->insert(image.encoded, use.second, maxSize, chain);
     return {std::move(chain), {}};
 }

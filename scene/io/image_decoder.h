@@ -21,8 +21,29 @@ std::optional<ImageSize> probeImageHeader(std::span<const std::uint8_t> bytes);
 
 struct DecodeLimits {
     std::uint64_t maxPixels = 16384ull * 16384ull;
-    std::uint64_t maxBytes = 1ull << 31; // of the decoded RGBA pixels
+    std::uint64_t maxBytes = 1ull << 31; // of the decoded pixels: width x height x channels x bytes per value
 };
+
+// Why an image whose header declares width x height pixels of `channels` channels may not be
+// decoded into `decodedChannels` values of `bytesPerValue` bytes per pixel, naming the limit it
+// exceeds; empty when it may. Checked on the header before any pixel buffer is allocated (an image
+// bomb: a few bytes declaring 65535 x 65535 pixels or thousands of channels).
+std::string decodeLimitError(std::int64_t width, std::int64_t height, std::int64_t channels, int decodedChannels,
+                             std::size_t bytesPerValue, const DecodeLimits& limits);
+
+// What in an image file's first bytes declares more than the file of `fileSize` bytes can hold,
+// where an image library would allocate the declared size before reading it: a PNG chunk's length
+// (libpng), an OpenEXR attribute's size or value, or its table of chunk offsets (OpenEXR). Empty
+// when nothing does.
+std::string imageHeaderProblem(std::span<const std::uint8_t> header, std::uint64_t fileSize);
+
+// Why an image file may not be opened, from its first bytes (`header`) and its size: the size
+// probeImageHeader reads beyond the limits (one channel assumed), or an imageHeaderProblem. So an
+// image bomb is refused before an image library opens it: some allocate for the declared size on
+// opening (libjpeg for a progressive JPEG's coefficients, libpng for a chunk, OpenEXR for its
+// attributes). Empty when neither applies.
+std::string headerLimitError(std::span<const std::uint8_t> header, std::uint64_t fileSize, int decodedChannels,
+                             std::size_t bytesPerValue, const DecodeLimits& limits);
 
 // Decoded pixels, RGBA, rows top to bottom. Empty pixels and a message when decoding failed.
 template <class T>

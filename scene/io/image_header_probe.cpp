@@ -44,23 +44,28 @@ bool isStartOfFrame(std::uint8_t marker)
     return marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC;
 }
 
-// Walk the marker segments to the first start-of-frame: precision, height, width.
+// The marker segments up to the first start-of-frame: precision, height, width. Markers are found
+// as libjpeg finds them (anything before a 0xFF is skipped, then fill bytes), so that a frame
+// header behind garbage is read here too: libjpeg allocates for its size on opening.
 std::optional<ImageSize> probeJpeg(Bytes b)
 {
     std::size_t at = 2;
-    while (at + 4 <= b.size()) {
-        if (b[at] != 0xFF) return std::nullopt;
-        const std::uint8_t marker = b[at + 1];
-        if (marker == 0xFF) { ++at; continue; } // fill byte
-        const std::size_t length = bigEndian16(b, at + 2);
+    while (true) {
+        while (at < b.size() && b[at] != 0xFF) ++at;
+        while (at < b.size() && b[at] == 0xFF) ++at;
+        if (at >= b.size()) return std::nullopt;
+        const std::uint8_t marker = b[at++]; // `at` is now at the segment's length
+        if (marker == 0x00 || marker == 0x01 || (marker >= 0xD0 && marker <= 0xD8)) continue; // no segment
+        if (marker == 0xD9 || marker == 0xDA) return std::nullopt; // the end, or a scan before any frame
+        if (at + 2 > b.size()) return std::nullopt;
+        const std::size_t length = bigEndian16(b, at);
         if (isStartOfFrame(marker)) {
-            if (at + 9 > b.size()) return std::nullopt;
-            return sizeIfPositive(bigEndian16(b, at + 7), bigEndian16(b, at + 5));
+            if (at + 7 > b.size()) return std::nullopt;
+            return sizeIfPositive(bigEndian16(b, at + 5), bigEndian16(b, at + 3));
         }
         if (length < 2) return std::nullopt;
-        at += 2 + length;
+        at += length;
     }
-    return std::nullopt;
 }
 
 // Text header lines up to an empty line, then "-Y height +X width".
@@ -102,6 +107,139 @@ std::optional<ImageSize> probeExr(Bytes b)
 }
 
 } // namespace
+
+namespace {
+
+// The bytes OpenEXR 3.1 reads for an attribute of a known fixed-size type, whatever size the file
+// declares for it (0: not a fixed-size type).
+std::size_t exrFixedSize(std::string_view type)
+{
+    static const std::pair<std::string_view, std::size_t> sizes[] = {
+        {"box2i", 16}, {"box2f", 16}, {"chromaticities", 32}, {"compression", 1}, {"double", 8}, {"envmap", 1},
+        {"float", 4}, {"int", 4}, {"keycode", 28}, {"lineOrder", 1}, {"m33f", 36}, {"m33d", 72}, {"m44f", 64},
+        {"m44d", 128}, {"rational", 8}, {"tiledesc", 9}, {"timecode", 8}, {"v2i", 8}, {"v2f", 8}, {"v2d", 16},
+        {"v3i", 12}, {"v3f", 12}, {"v3d", 24}, {"deepImageState", 1}};
+    for (const auto& [name, size] : sizes)
+        if (name == type) return size;
+    return 0;
+}
+
+// Empty when OpenEXR reads exactly `size` bytes for this attribute's value, allocating no more than
+// that; otherwise what is wrong. Values of a fixed-size type, a channel list (entries up to an empty
+// name), a string vector (lengths and strings), a preview (width, height, RGBA pixels).
+std::string exrValueProblem(std::string_view type, Bytes value)
+{
+    if (const std::size_t fixed = exrFixedSize(type)) return value.size() == fixed ? "" : "is not " + std::to_string(fixed) + " bytes";
+    if (type == "chlist") {
+        std::size_t at = 0;
+        while (at < value.size() && value[at] != 0) {
+            const auto nameEnd = std::find(value.begin() + static_cast<std::ptrdiff_t>(at), value.end(), 0);
+            at = static_cast<std::size_t>(nameEnd - value.begin()) + 1 + 16; // type, linear, reserved, x and y sampling
+        }
+        return at + 1 == value.size() ? "" : "does not end where it says";
+    }
+    if (type == "stringvector") {
+        std::size_t at = 0;
+        while (at + 4 <= value.size()) {
+            const std::int32_t length = littleEndian32(value, at);
+            if (length < 0 || static_cast<std::size_t>(length) > value.size() - at - 4) return "holds a string longer than itself";
+            at += 4 + static_cast<std::size_t>(length);
+        }
+        return at == value.size() ? "" : "does not end where it says";
+    }
+    if (type == "preview") {
+        if (value.size() < 8) return "is cut short";
+        const std::uint64_t width = std::uint32_t(littleEndian32(value, 0)), height = std::uint32_t(littleEndian32(value, 4));
+        return width * height * 4 == value.size() - 8 ? "" : "does not hold its declared pixels";
+    }
+    return {}; // strings and types OpenEXR does not know: it reads the declared size
+}
+
+// Lines per chunk of a scanline image, by compression (OpenEXR's table).
+int exrLinesPerChunk(std::uint8_t compression)
+{
+    switch (compression) {
+    case 3: case 5: return 16; // ZIP, PXR24
+    case 4: case 6: case 7: case 8: return 32; // PIZ, B44, B44A, DWAA
+    case 9: return 256; // DWAB
+    default: return 1;
+    }
+}
+
+// PNG: every chunk (length, type, data, CRC) up to IEND must fit in the file: libpng allocates
+// an ancillary chunk's declared length before reading it.
+std::string pngChunkProblem(Bytes b, std::uint64_t fileSize)
+{
+    std::size_t at = 8;
+    while (at + 8 <= b.size()) {
+        const std::uint64_t length = bigEndian32(b, at);
+        const std::string type(b.begin() + static_cast<std::ptrdiff_t>(at) + 4, b.begin() + static_cast<std::ptrdiff_t>(at) + 8);
+        if (length > 0x7FFFFFFFu || at + 12 + length > fileSize)
+            return "the PNG chunk '" + type + "' declares " + std::to_string(length) + " bytes, more than the file holds";
+        if (type == "IEND") return {};
+        at += 12 + static_cast<std::size_t>(length);
+    }
+    return {};
+}
+
+} // namespace
+
+std::string imageHeaderProblem(std::span<const std::uint8_t> b, std::uint64_t fileSize)
+{
+    if (startsWith(b, "\x89PNG\r\n\x1a\n")) return pngChunkProblem(b, fileSize);
+    if (!startsWith(b, "\x76\x2f\x31\x01") || b.size() < 8) return {};
+    // OpenEXR allocates what an attribute declares, reads some types for their own size whatever
+    // the declared one, and allocates a table of every chunk's offset. So every value must be
+    // exactly what OpenEXR reads, fit in the file, and the chunks' offsets too.
+    const bool multipart = (b[5] & 0x10) != 0; // version flags: bit 12
+    std::size_t at = 8;
+    std::int64_t width = 0, height = 0, tileWidth = 0, tileHeight = 0;
+    std::uint8_t compression = 0;
+    const auto chunksProblem = [&]() -> std::string {
+        if (width <= 0 || height <= 0) return {};
+        const std::int64_t chunks = tileWidth > 0 && tileHeight > 0
+                                        ? ((width + tileWidth - 1) / tileWidth) * ((height + tileHeight - 1) / tileHeight)
+                                        : (height + exrLinesPerChunk(compression) - 1) / exrLinesPerChunk(compression);
+        if (static_cast<std::uint64_t>(chunks) > fileSize / 8)
+            return "the OpenEXR header declares " + std::to_string(chunks) + " chunks, more than the file can hold";
+        return {};
+    };
+    while (at < b.size()) {
+        if (b[at] == 0) { // the end of a header; a multi-part file's list of headers ends with an empty one
+            if (std::string problem = chunksProblem(); !problem.empty()) return problem;
+            width = height = tileWidth = tileHeight = 0;
+            compression = 0;
+            if (!multipart || ++at >= b.size() || b[at] == 0) return {};
+            continue;
+        }
+        const auto nameEnd = std::find(b.begin() + static_cast<std::ptrdiff_t>(at), b.end(), 0);
+        const auto typeEnd = nameEnd == b.end() ? b.end() : std::find(nameEnd + 1, b.end(), 0);
+        if (typeEnd == b.end()) return {}; // cut short here: read no further
+        const std::string name(b.begin() + static_cast<std::ptrdiff_t>(at), nameEnd);
+        const std::string type(nameEnd + 1, typeEnd);
+        const std::size_t sizeAt = static_cast<std::size_t>(typeEnd - b.begin()) + 1;
+        if (sizeAt + 4 > b.size()) return {};
+        const std::int64_t size = littleEndian32(b, sizeAt);
+        const std::size_t dataAt = sizeAt + 4;
+        const std::string attribute = "the OpenEXR attribute '" + name + "' (" + type + ")";
+        if (size < 0 || static_cast<std::uint64_t>(size) > fileSize - std::min<std::uint64_t>(fileSize, dataAt))
+            return attribute + " declares " + std::to_string(size) + " bytes, more than the file holds";
+        if (dataAt + static_cast<std::size_t>(size) > b.size()) return {}; // beyond what was read: read no further
+        const Bytes value = b.subspan(dataAt, static_cast<std::size_t>(size));
+        if (std::string problem = exrValueProblem(type, value); !problem.empty()) return attribute + " " + problem;
+        if (name == "dataWindow" && type == "box2i") {
+            width = std::int64_t(littleEndian32(value, 8)) - littleEndian32(value, 0) + 1;
+            height = std::int64_t(littleEndian32(value, 12)) - littleEndian32(value, 4) + 1;
+        } else if (name == "tiles" && type == "tiledesc") {
+            tileWidth = std::uint32_t(littleEndian32(value, 0));
+            tileHeight = std::uint32_t(littleEndian32(value, 4));
+        } else if (name == "compression" && type == "compression") {
+            compression = value[0];
+        }
+        at = dataAt + static_cast<std::size_t>(size);
+    }
+    return {};
+}
 
 std::optional<ImageSize> probeImageHeader(std::span<const std::uint8_t> bytes)
 {

@@ -4,6 +4,8 @@
 
 #include "io_read_helpers.h"
 
+#include <OpenImageIO/imageio.h>
+
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -27,6 +29,7 @@ std::vector<std::uint8_t> readAll(const fs::path& file)
 const fs::path kSwatches = fs::path(GLINT_TEST_DATA_DIR) / "gltf/MorphStressTest/glTF/ColorSwatches.png"; // 64x64 RGB
 const fs::path kArrow = fs::path(GLINT_TEST_DATA_DIR) / "gltf/TextureTransformTest/Arrow.png";             // 128x128 RGBA
 const fs::path kHdr = fs::path(GLINT_TEST_DATA_DIR) / "env/studio_small_03_1k.hdr";                       // 1024x512
+const fs::path kBombs = fs::path(GLINT_FUZZ_SEEDS_DIR) / "image_decode";
 
 // SOI, an APP0 segment, then a baseline start-of-frame: precision, height, width, components.
 std::vector<std::uint8_t> jpegHeader(std::uint16_t width, std::uint16_t height)
@@ -127,8 +130,80 @@ private slots:
         limits.maxPixels = 1000;
         const DecodedImage<std::uint8_t> image = decoder.decode8(readAll(kSwatches), limits);
         QVERIFY(!image.ok());
-        QCOMPARE(QString::fromStdString(image.error), QStringLiteral("image of 64x64 pixels exceeds the limits"));
+        QCOMPARE(QString::fromStdString(image.error), QStringLiteral("the image declares 64x64 pixels, more than the limit of 1000 pixels"));
         QVERIFY(image.rgba.empty());
+        limits = {};
+        limits.maxBytes = 10000;
+        QCOMPARE(QString::fromStdString(decoder.decode8(readAll(kSwatches), limits).error),
+                 QStringLiteral("the image declares 64x64 pixels x 4 channels (1 MiB decoded), more than the limit of 1 MiB"));
+    }
+
+    // Image bombs (docs/RELIABILITY.md): a few bytes declaring a huge image, refused on Glint's own
+    // reading of the header, before OpenImageIO opens them (libjpeg and OpenEXR allocate for what a
+    // header declares on opening). The files are the fuzz target's regression inputs.
+    void imageBombsAreRefusedBeforeOpening_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<QString>("error");
+        QTest::newRow("png") << "bomb-65535x65535.png" << "the image declares 65535x65535 pixels, more than the limit of 268435456 pixels";
+        QTest::newRow("hdr") << "bomb-65535x65535.hdr" << "the image declares 65535x65535 pixels, more than the limit of 268435456 pixels";
+        QTest::newRow("exr window") << "bomb-65535x65535.exr" << "the OpenEXR header declares 4096 chunks, more than the file can hold";
+        QTest::newRow("progressive jpeg") << "crash-progressive-jpeg-65500x65500.jpg"
+                                          << "the image declares 65500x65500 pixels, more than the limit of 268435456 pixels";
+        QTest::newRow("jpeg frame after garbage") << "crash-jpeg-frame-after-garbage.jpg"
+                                                  << "the image declares 65500x65500 pixels, more than the limit of 268435456 pixels";
+        QTest::newRow("exr attribute size") << "crash-exr-attribute-size-bomb.exr" << "declares";
+        QTest::newRow("exr channel list") << "crash-exr-channel-list-overrun.exr" << "the OpenEXR attribute 'channels' (chlist) does not end where it says";
+    }
+
+    void imageBombsAreRefusedBeforeOpening()
+    {
+        QFETCH(QString, file);
+        QFETCH(QString, error);
+        const std::vector<std::uint8_t> bytes = readAll(kBombs / file.toStdString());
+        QVERIFY(!bytes.empty());
+        const OiioImageDecoder decoder;
+        const DecodedImage<std::uint8_t> image = decoder.decode8(bytes, {});
+        QVERIFY(!image.ok());
+        QVERIFY2(QString::fromStdString(image.error).contains(error), image.error.c_str());
+        QVERIFY(!decoder.decodeFloat(bytes, {}).ok());
+    }
+
+    // Valid files pass the header checks and decode: the one in the test data, and OpenEXR's
+    // layouts written here (scanline ZIP, PIZ and DWAB, tiled, 23 channels, string attributes).
+    void validImagesPassTheHeaderChecks()
+    {
+        QTemporaryDir dir;
+        std::vector<fs::path> files = {kSwatches, kArrow, kHdr, fs::path(GLINT_TEST_DATA_DIR) / "renderer/cornell_box_128_4b.exr"};
+        const auto write = [&](const std::string& name, int channels, const std::string& compression, int tile) {
+            OIIO::ImageSpec spec(37, 19, channels, OIIO::TypeDesc::HALF);
+            spec.attribute("compression", compression);
+            spec.attribute("glint:settingsHash", "0123456789abcdef");
+            spec.attribute("Software", "Glint test");
+            std::vector<std::string> names;
+            for (int c = 0; c < channels; ++c) names.push_back(c < 4 ? std::string(1, "RGBA"[c]) : "aov" + std::to_string(c) + ".X");
+            spec.channelnames = names;
+            if (tile) { spec.tile_width = tile; spec.tile_height = tile; }
+            const fs::path path = fs::path(dir.path().toStdString()) / name;
+            auto out = OIIO::ImageOutput::create(path.string());
+            QVERIFY(out && out->open(path.string(), spec));
+            std::vector<float> pixels(std::size_t(37 * 19 * channels), 0.5f);
+            QVERIFY(out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()));
+            QVERIFY(out->close());
+            files.push_back(path);
+        };
+        write("zip.exr", 4, "zip", 0);
+        write("piz.exr", 3, "piz", 0);
+        write("dwab.exr", 3, "dwab", 0);
+        write("aovs.exr", 23, "zip", 0);
+        write("tiled.exr", 4, "zip", 8);
+        const OiioImageDecoder decoder;
+        for (const fs::path& file : files) {
+            const std::vector<std::uint8_t> bytes = readAll(file);
+            QVERIFY2(headerLimitError(bytes, bytes.size(), 4, 4, {}).empty(), file.c_str());
+            const DecodedImage<float> image = decoder.decodeFloat(bytes, {});
+            QVERIFY2(image.ok(), (file.string() + ": " + image.error).c_str());
+        }
     }
 
     void refusesGarbage()

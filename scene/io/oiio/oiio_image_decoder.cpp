@@ -12,8 +12,10 @@ namespace {
 
 namespace OIIO = OIIO_NAMESPACE;
 
+} // namespace
+
 // OpenImageIO picks its reader by file name: name the bytes after their signature.
-const char* pseudoFileName(std::span<const std::uint8_t> b)
+const char* memoryImageName(std::span<const std::uint8_t> b)
 {
     auto has = [&](std::initializer_list<std::uint8_t> magic) {
         return b.size() >= magic.size() && std::equal(magic.begin(), magic.end(), b.begin());
@@ -26,6 +28,8 @@ const char* pseudoFileName(std::span<const std::uint8_t> b)
     return nullptr;
 }
 
+namespace {
+
 struct OpenedImage {
     std::unique_ptr<OIIO::Filesystem::IOMemReader> reader;
     std::unique_ptr<OIIO::ImageInput> input;
@@ -34,7 +38,7 @@ struct OpenedImage {
 OpenedImage openFromMemory(std::span<const std::uint8_t> encoded)
 {
     OpenedImage opened;
-    const char* name = pseudoFileName(encoded);
+    const char* name = memoryImageName(encoded);
     if (!name) return opened;
     opened.reader = std::make_unique<OIIO::Filesystem::IOMemReader>(encoded.data(), encoded.size());
     opened.input = OIIO::ImageInput::open(name, nullptr, opened.reader.get());
@@ -45,17 +49,21 @@ template <class T>
 DecodedImage<T> decode(std::span<const std::uint8_t> encoded, const DecodeLimits& limits, OIIO::TypeDesc type)
 {
     DecodedImage<T> out;
+    // Glint's own header checks first: libjpeg allocates a progressive JPEG's coefficients for the
+    // declared size when OpenImageIO opens it, OpenEXR an attribute's declared size.
+    out.error = headerLimitError(encoded, encoded.size(), 4, sizeof(T), limits);
+    if (!out.error.empty()) return out;
     OpenedImage opened = openFromMemory(encoded);
     if (!opened.input) {
         out.error = "not an image OpenImageIO can read";
         return out;
     }
     const OIIO::ImageSpec& spec = opened.input->spec();
+    // The header's size against the limits before anything is allocated for the pixels.
+    out.error = decodeLimitError(spec.width, spec.height, spec.nchannels, 4, sizeof(T), limits);
+    if (out.error.empty() && spec.deep) out.error = "deep images are not read";
+    if (!out.error.empty()) return out;
     const auto pixels = static_cast<std::uint64_t>(spec.width) * static_cast<std::uint64_t>(spec.height);
-    if (spec.width <= 0 || spec.height <= 0 || pixels > limits.maxPixels || pixels * 4 * sizeof(T) > limits.maxBytes) {
-        out.error = "image of " + std::to_string(spec.width) + "x" + std::to_string(spec.height) + " pixels exceeds the limits";
-        return out;
-    }
     out.width = spec.width;
     out.height = spec.height;
     out.rgba.assign(pixels * 4, spec.nchannels >= 4 ? T(0) : type == OIIO::TypeDesc::FLOAT ? T(1) : T(255));
@@ -78,6 +86,9 @@ DecodedImage<T> decode(std::span<const std::uint8_t> encoded, const DecodeLimits
 
 std::optional<ImageSize> OiioImageDecoder::probe(std::span<const std::uint8_t> encoded) const
 {
+    // Read without OpenImageIO where Glint's probe can: opening may allocate for the declared size.
+    if (auto size = probeImageHeader(encoded)) return size;
+    if (!imageHeaderProblem(encoded, encoded.size()).empty()) return std::nullopt;
     OpenedImage opened = openFromMemory(encoded);
     if (!opened.input) return std::nullopt;
     return ImageSize{opened.input->spec().width, opened.input->spec().height};
