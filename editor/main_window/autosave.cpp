@@ -130,10 +130,12 @@ QString Autosave::saveNow() {
         return QString::fromStdString(e.what());
     }
     scene.settings.environment.file = environment;
-    QSaveFile note(slotPath(slot(), ".source"));
-    if (!note.open(QIODevice::WriteOnly)) return note.errorString();
+    // Its errors name it, as the copy's do (a full disk or a read-only folder is said with the file).
+    const QString notePath = slotPath(slot(), ".source");
+    QSaveFile note(notePath);
+    if (!note.open(QIODevice::WriteOnly)) return notePath + QStringLiteral(": ") + note.errorString();
     note.write(QStringList{document_.filePath(), session_, QString::fromStdString(environment)}.join('\n').toUtf8());
-    if (!note.commit()) return note.errorString();
+    if (!note.commit()) return notePath + QStringLiteral(": ") + note.errorString();
     return {};
 }
 

@@ -2,11 +2,14 @@
 
 #include "scene/core/diagnostics.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <stdexcept>
 #include <system_error>
 
@@ -95,13 +98,46 @@ std::vector<std::uint8_t> displayPixels(const RenderOutput& img) {
     return pixels;
 }
 
-void writeWithOiio(const std::filesystem::path& target, const std::filesystem::path& temp, const OIIO::ImageSpec& spec,
-                   const void* pixels) {
-    // OIIO picks the format from the name, so the temporary keeps the extension.
+// OpenImageIO encodes into memory and Glint writes the bytes itself (writeFile), checking every
+// write: OpenImageIO's file writers go through stdio and not all of them see a failed flush (a PNG
+// written to a full disk came out empty, and was published).
+std::vector<unsigned char> encodeWithOiio(const std::filesystem::path& target, const OIIO::ImageSpec& spec, const void* pixels) {
     auto out = OIIO::ImageOutput::create(target.string()); // by the final name's extension
     if (!out) throw FileError(target.string(), "image-format", "no writer for this format: " + OIIO::geterror());
-    if (!out->open(temp.string(), spec) || !out->write_image(spec.format, pixels) || !out->close())
-        throw FileError(target.string(), "write-failed", "cannot write image: " + out->geterror());
+    std::vector<unsigned char> bytes;
+    OIIO::Filesystem::IOVecOutput memory(bytes);
+    if (!out->set_ioproxy(&memory)) throw FileError(target.string(), "image-format", "this format cannot be written to memory");
+    if (!out->open(target.string(), spec) || !out->write_image(spec.format, pixels) || !out->close())
+        throw FileError(target.string(), "write-failed", "cannot encode the image: " + out->geterror());
+    return bytes;
+}
+
+// Writes `bytes` to `temp` and makes them durable: the data reaches the disk before the name does,
+// so after a crash or power loss the final name holds either nothing or the whole image. Errors
+// name the final file and say why (a full disk: "No space left on device").
+void writeFile(const std::filesystem::path& temp, const std::vector<unsigned char>& bytes, const std::filesystem::path& file) {
+    const auto fail = [&](const std::string& what, int error) {
+        throw FileError(file.string(), "write-failed", what + ": " + std::strerror(error));
+    };
+    const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    if (fd < 0) fail("cannot create the image in its folder", errno);
+    std::size_t done = 0;
+    while (done < bytes.size()) {
+        const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+            const int error = n < 0 ? errno : ENOSPC;
+            ::close(fd);
+            fail("cannot write the image", error);
+        }
+        done += static_cast<std::size_t>(n);
+    }
+    if (::fsync(fd) != 0) {
+        const int error = errno;
+        ::close(fd);
+        fail("cannot flush the image to disk", error);
+    }
+    if (::close(fd) != 0) fail("cannot close the image", errno);
 }
 
 std::filesystem::path temporaryNameFor(const std::filesystem::path& file) {
@@ -113,25 +149,13 @@ std::filesystem::path temporaryNameFor(const std::filesystem::path& file) {
     return file.parent_path() / name;
 }
 
-// The data reaches the disk before the name does: after a crash or power loss the final name
-// holds either nothing or the whole image.
-bool flushToDisk(const std::filesystem::path& temp) {
-    const int fd = ::open(temp.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0) return false;
-    const bool synced = ::fsync(fd) == 0;
-    return ::close(fd) == 0 && synced;
-}
-
 void publish(const std::filesystem::path& temp, const std::filesystem::path& file) {
     std::error_code ec;
-    if (!flushToDisk(temp)) {
-        std::filesystem::remove(temp, ec);
-        throw FileError(file.string(), "write-failed", "cannot flush the image to disk");
-    }
     std::filesystem::rename(temp, file, ec);
     if (ec) {
+        const std::string why = ec.message();
         std::filesystem::remove(temp, ec);
-        throw FileError(file.string(), "write-failed", "cannot move the finished image into place");
+        throw FileError(file.string(), "write-failed", "cannot move the finished image into place: " + why);
     }
 }
 
@@ -251,7 +275,7 @@ void prepareOutputFolder(const std::filesystem::path& file) {
     if (!std::filesystem::is_directory(folder, ec) && !std::filesystem::create_directories(folder, ec))
         throw FileError(file.string(), "no-folder", "cannot create the output folder '" + folder.string() + "': " + ec.message());
     if (::access(folder.c_str(), W_OK) != 0)
-        throw FileError(file.string(), "not-writable", "the output folder is not writable");
+        throw FileError(file.string(), "not-writable", "the output folder '" + folder.string() + "' is not writable: " + std::strerror(errno));
 }
 
 void writeRenderImage(const std::filesystem::path& file, const RenderOutput& img, const ExrLayers& layers,
@@ -274,10 +298,14 @@ void writeRenderImage(const std::filesystem::path& file, const RenderOutput& img
     // OpenImageIO stamps the wall-clock time into an EXR that names none (capDate), which would make
     // two identical renders differ; the render time is recorded, and allowed to differ, on its own.
     if (format == ImageFormat::Exr) spec.attribute("DateTime", "");
-    try {
+    std::vector<unsigned char> bytes;
+    {
         const std::vector<std::uint8_t> display = format == ImageFormat::Exr ? std::vector<std::uint8_t>() : displayPixels(img);
-        writeWithOiio(file, temp, spec, format == ImageFormat::Exr ? static_cast<const void*>(planes.pixels.data())
-                                                                     : static_cast<const void*>(display.data()));
+        bytes = encodeWithOiio(file, spec, format == ImageFormat::Exr ? static_cast<const void*>(planes.pixels.data())
+                                                                       : static_cast<const void*>(display.data()));
+    }
+    try {
+        writeFile(temp, bytes, file);
     } catch (...) {
         std::error_code ec;
         std::filesystem::remove(temp, ec);

@@ -329,6 +329,39 @@ private slots:
         QVERIFY(files.size() < 41);
     }
 
+    // A still over an image already there, on a full disk: exit 1 with the file and the reason,
+    // and the old image stays (a PNG used to be published empty: OpenImageIO's writer did not
+    // see the failed flush).
+    void fullDiskKeepsTheOldStill() {
+        QTemporaryDir dir;
+        const QString full = dir.filePath("full");
+        QVERIFY(QDir(dir.path()).mkdir("full"));
+        const bool mounted = QProcess::execute("mount", {"-t", "tmpfs", "-o", "size=96k", "tmpfs", full}) == 0;
+        for (const QString name : {"still.png", "still.exr"}) {
+            {
+                QFile old(full + "/" + name);
+                QVERIFY(old.open(QIODevice::WriteOnly));
+                old.write("an image rendered earlier");
+            }
+            // On the tmpfs a filler takes every free block; otherwise a small file-size limit.
+            const QString fill = mounted ? QString("cat /dev/zero > '%1/filler' 2>/dev/null; ").arg(full) : QString();
+            const QString command = QString("%1%2 '%3' render '%4' --size 64x64 --spp 1 --out '%5/%6'")
+                                        .arg(fill, mounted ? "exec" : "trap '' XFSZ; ulimit -f 1; exec", GLINT_EXECUTABLE, dolly, full, name);
+            QProcess p;
+            p.start("/bin/sh", {"-c", command});
+            QVERIFY(p.waitForFinished(120000));
+            const QString err = QString::fromUtf8(p.readAllStandardError());
+            QFile::remove(full + "/filler");
+            QVERIFY2(p.exitCode() == 1, qPrintable(err));
+            const QString reason = mounted ? "No space left on device" : "File too large";
+            QVERIFY2(err.contains("glint: " + full + "/" + name + ": cannot write the image: " + reason), qPrintable(err));
+            QCOMPARE(readAll(full + "/" + name), QByteArray("an image rendered earlier"));
+            QCOMPARE(filesIn(full), QStringList{name});
+            QFile::remove(full + "/" + name);
+        }
+        if (mounted) QProcess::execute("umount", {full});
+    }
+
     void encodeWritesTaggedReproducibleVideos() {
         QTemporaryDir dir;
         QDir(dir.path()).mkdir("f");
