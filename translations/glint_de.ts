@@ -578,6 +578,18 @@
         <translation>all, none oder eine Liste aus albedo, normal, depth, id, variance</translation>
     </message>
     <message>
+        <source>Render passes</source>
+        <translation>Render-Passes</translation>
+    </message>
+    <message>
+        <source>EXR only, Accumulate and Reference: none, all, light, or a list of DiffDir, DiffInd, GlossDir, GlossInd, Emit, Env, Vector</source>
+        <translation>Nur EXR, Accumulate und Reference: none, all, light oder eine Liste aus DiffDir, DiffInd, GlossDir, GlossInd, Emit, Env, Vector</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
         <source>Animation</source>
         <translation>Animation</translation>
     </message>

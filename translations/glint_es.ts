@@ -578,6 +578,18 @@
         <translation>all, none, o una lista de albedo, normal, depth, id, variance</translation>
     </message>
     <message>
+        <source>Render passes</source>
+        <translation>Pases de render</translation>
+    </message>
+    <message>
+        <source>EXR only, Accumulate and Reference: none, all, light, or a list of DiffDir, DiffInd, GlossDir, GlossInd, Emit, Env, Vector</source>
+        <translation>Solo EXR, Accumulate y Reference: none, all, light o una lista de DiffDir, DiffInd, GlossDir, GlossInd, Emit, Env, Vector</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>ninguno</translation>
+    </message>
+    <message>
         <source>Animation</source>
         <translation>Animación</translation>
     </message>

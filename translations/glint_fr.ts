@@ -578,6 +578,18 @@
         <translation>all, none, ou une liste parmi albedo, normal, depth, id, variance</translation>
     </message>
     <message>
+        <source>Render passes</source>
+        <translation>Passes de rendu</translation>
+    </message>
+    <message>
+        <source>EXR only, Accumulate and Reference: none, all, light, or a list of DiffDir, DiffInd, GlossDir, GlossInd, Emit, Env, Vector</source>
+        <translation>EXR uniquement, Accumulate et Reference : none, all, light ou une liste parmi DiffDir, DiffInd, GlossDir, GlossInd, Emit, Env, Vector</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>aucune</translation>
+    </message>
+    <message>
         <source>Animation</source>
         <translation>Animation</translation>
     </message>

@@ -578,6 +578,18 @@
         <translation>all, none, oppure un elenco tra albedo, normal, depth, id, variance</translation>
     </message>
     <message>
+        <source>Render passes</source>
+        <translation>Passate di rendering</translation>
+    </message>
+    <message>
+        <source>EXR only, Accumulate and Reference: none, all, light, or a list of DiffDir, DiffInd, GlossDir, GlossInd, Emit, Env, Vector</source>
+        <translation>Solo EXR, Accumulate e Reference: none, all, light oppure un elenco tra DiffDir, DiffInd, GlossDir, GlossInd, Emit, Env, Vector</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>nessuna</translation>
+    </message>
+    <message>
         <source>Animation</source>
         <translation>Animazione</translation>
     </message>
