@@ -74,6 +74,13 @@ ChangeSet Document::undo() {
     return changes;
 }
 
+ChangeSet Document::revertInteraction(std::uint64_t interaction) {
+    const std::size_t before = history_.index();
+    ChangeSet changes = history_.revertInteraction(interaction);
+    for (std::size_t i = history_.index(); i < before; ++i) selectionBefore_.erase(i);
+    return changes;
+}
+
 ChangeSet Document::redo() {
     if (!history_.canRedo()) return {};
     ChangeSet changes = history_.redo();

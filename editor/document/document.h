@@ -43,6 +43,8 @@ public:
     ChangeSet undo();
     ChangeSet redo();
     ChangeSet jumpTo(std::size_t index);
+    // Takes back a cancelled interaction's edits without leaving a redo step (History).
+    ChangeSet revertInteraction(std::uint64_t interaction);
     bool canUndo() const { return history_.canUndo(); }
     bool canRedo() const { return history_.canRedo(); }
     std::uint64_t beginInteraction() { return history_.beginInteraction(); }

@@ -28,8 +28,11 @@ void GizmoDrag::moveTo(const bvh::Ray& ray, const GizmoSnap& snap) {
     push(applyDrag(mode_, startLocal_, worldFromParent_, frame_.axes[axis_], axis_, *amount));
 }
 
+// Takes the drag's step back whole: pushing the start pose again would leave a key that the drag
+// made on a keyed node, and a redo step for an edit the user cancelled.
 void GizmoDrag::cancel() {
-    if (active() && moved_) push(startLocal_);
+    if (active() && moved_) document_.revertInteraction(interaction_);
+    moved_ = false;
 }
 
 void GizmoDrag::push(const Transform& local) {

@@ -66,6 +66,20 @@ ChangeSet History::jumpTo(std::size_t index) {
     return changes;
 }
 
+ChangeSet History::revertInteraction(std::uint64_t interaction) {
+    refuseInMacro("revert");
+    ChangeSet changes;
+    if (interaction == 0) return changes;
+    const std::size_t before = index_;
+    for (; index_ > 0 && commands_[index_ - 1]->interaction == interaction; --index_)
+        changes.merge(commands_[index_ - 1]->revert(scene_));
+    if (index_ == before) return changes;
+    discardRedo();
+    notifyChange(changes);
+    notifyIndex();
+    return changes;
+}
+
 void History::beginMacro(std::string label) {
     if (macroDepth_++ == 0) openMacro_ = std::make_unique<MacroCommand>(std::move(label));
 }

@@ -56,6 +56,9 @@ public:
     ChangeSet undo();
     ChangeSet redo();
     ChangeSet jumpTo(std::size_t index); // undo or redo until index() == index
+    // Undoes and forgets the steps on top that belong to `interaction` (a cancelled drag): no redo
+    // step is left for an edit the user took back with Esc. Nothing happens for another interaction.
+    ChangeSet revertInteraction(std::uint64_t interaction);
 
     std::uint64_t beginInteraction() { return ++lastInteraction_; }
 

@@ -242,6 +242,19 @@ private slots:
         document_->undo();
         QCOMPARE(nodeKeyTimes(document_->scene().animations.at(*id), sphere), (std::vector<double>{0.0, 1.0}));
         QVERIFY(std::abs(posedX(*document_, sphere, 0.5) - (-0.2f)) < 1e-5f);
+        // The same drag cancelled (Esc) leaves neither a key nor a step to redo; the step before it
+        // stays redoable until then.
+        const Scene beforeCancel = document_->scene();
+        QVERIFY(document_->canRedo());
+        GizmoDrag cancelled(*document_, sphere, frame, GizmoMode::Translate, rayAt(handle));
+        for (const float dx : {0.2f, 0.4f}) cancelled.moveTo(rayAt(handle + glm::vec3(dx, 0.0f, 0.0f)), {});
+        QCOMPARE(nodeKeyTimes(document_->scene().animations.at(*id), sphere).size(), std::size_t(3));
+        cancelled.cancel();
+        QVERIFY(document_->scene() == beforeCancel);
+        QCOMPARE(document_->history().index(), steps);
+        QVERIFY(!document_->canRedo());
+        cancelled.cancel(); // twice: nothing more happens
+        QCOMPARE(document_->history().index(), steps);
 
         // The panel's field edits the pose shown too: x typed at 0.5 becomes a key there.
         QCOMPARE(editTransform(*document_, sphere, [](Transform& t) { t.translation.x = -1.0f; }, 0), QString());

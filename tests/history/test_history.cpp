@@ -105,6 +105,29 @@ private slots:
         QCOMPARE(xOf(scene, ids.ball), 1.0f);
     }
 
+    void revertingAnInteractionUndoesItsStepsAndLeavesNoRedo() {
+        SampleIds ids;
+        Scene scene = sampleScene(&ids);
+        History history(scene);
+        history.push(moveTo(ids.ball, 1.0f, history.beginInteraction()));
+        const Scene afterFirst = scene;
+        const std::uint64_t drag = history.beginInteraction();
+        history.push(moveTo(ids.ball, 2.0f, drag));
+        history.push(rename(ids.ball, "orb", drag)); // another target: a second step of the drag
+        history.push(moveTo(ids.ball, 3.0f, drag));
+        QCOMPARE(history.count(), std::size_t{4});
+        QVERIFY(history.revertInteraction(drag + 1).empty()); // not the top's: nothing happens
+        QCOMPARE(history.count(), std::size_t{4});
+        const ChangeSet changes = history.revertInteraction(drag);
+        QVERIFY(changes.has(Change::Transform));
+        QVERIFY(scene == afterFirst);
+        QCOMPARE(history.count(), std::size_t{1});
+        QVERIFY(!history.canRedo());
+        QVERIFY(history.revertInteraction(0).empty());
+        history.undo();
+        QVERIFY(scene == sampleScene());
+    }
+
     void oneOffEditsNeverMerge() {
         SampleIds ids;
         Scene scene = sampleScene(&ids);
