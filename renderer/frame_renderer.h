@@ -70,6 +70,8 @@ struct FrameSettings {
     // The EXR's render passes (FrameImages::lightPasses and vectors): Accumulate/Reference whole
     // frames only (no bands, no preview), where the path tracer's RENDER_PASSES variant writes them
     // (shaders/pathtrace/render_passes.glsl). Off, nothing of them is compiled, allocated or run.
+    // The light passes sum to the raw mean (what readImages() gives without denoise and
+    // bloomLinear); on, diffuseAlbedo and specularAlbedo read back hold passes, not albedos.
     bool renderPasses = false;
     friend bool operator==(const FrameSettings&, const FrameSettings&) = default;
 };
