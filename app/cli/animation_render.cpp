@@ -13,6 +13,7 @@
 #include "renderer/output/image_files.h"
 #include "scene/anim/scene_at_time.h"
 #include "scene/core/diagnostics.h"
+#include "scene/io/project/project_file.h"
 
 #include <CLI/CLI.hpp>
 
@@ -100,7 +101,12 @@ int renderAnimation(const RenderOptions& o, const Scene& scene) {
         throw FileError(o.scene, "no-animation", "the scene has no camera path and no animation to render");
     const FramePattern pattern = parseFramePattern(o.out);
     const Fps fps = o.fps.value_or(Fps{scene.settings.timeline.fpsNumerator, scene.settings.timeline.fpsDenominator});
-    const FrameRange range = o.frames.value_or(defaultFrameRange(scene, fps));
+    FrameRange range;
+    try {
+        range = o.frames ? *o.frames : defaultFrameRange(scene, fps); // the timeline only when --frames is not given
+    } catch (const std::invalid_argument& e) {
+        throw FileError(projectPathFor(o.scene).string(), "frame-range", e.what());
+    }
     Shard shard;
     try {
         shard = selectShard(o.shard, o.shards, fromEnvironment);

@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace glint::cli {
@@ -56,7 +57,17 @@ FrameRange defaultFrameRange(const Scene& scene, const Fps& fps) {
     const double end = timeline.end > timeline.start ? timeline.end : sceneAnimationTimeSpan(scene).second;
     const double frames = std::max(0.0, end - timeline.start) * fps.value();
     // A last key exactly on a frame time is that frame, despite rounding (1e-6 of a frame).
-    return {0, int(std::floor(frames + 1e-6))};
+    const double last = std::floor(frames + 1e-6);
+    // The project file bounds neither end nor start: a last frame beyond kMaxFrame (or not a number)
+    // would not fit the int it becomes.
+    if (!(last <= double(kMaxFrame))) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%g", last);
+        throw std::invalid_argument("the timeline's end is frame " + std::string(text) + " at " + std::to_string(fps.numerator) + "/" +
+                                    std::to_string(fps.denominator) + " fps, beyond the last frame number " +
+                                    std::to_string(kMaxFrame) + ": choose the frames with --frames");
+    }
+    return {0, static_cast<int>(last)};
 }
 
 double frameTime(const Scene& scene, const Fps& fps, int frame) {

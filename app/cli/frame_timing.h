@@ -32,7 +32,8 @@ FrameRange parseFrameRange(const std::string& text);
 bool hasAnimation(const Scene& scene);
 
 // The default range: frame 0 at the timeline start to the last frame at or before the timeline
-// end (or the animation's last key when the project sets no end), at `fps`.
+// end (or the animation's last key when the project sets no end), at `fps`. Throws
+// std::invalid_argument when that last frame is beyond kMaxFrame.
 FrameRange defaultFrameRange(const Scene& scene, const Fps& fps);
 
 // t0 + k * denominator / numerator, computed so that every run gives the same double.

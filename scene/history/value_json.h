@@ -10,6 +10,10 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+
 namespace nlohmann {
 
 template <glm::length_t L, class T, glm::qualifier Q>
@@ -60,6 +64,55 @@ struct adl_serializer<glint::Id<Tag>> {
 
 namespace glint {
 
+// One field of a generated reader (GLINT_JSON_TYPE below). Numbers go through checkedNumber, so an
+// integer field refuses a non-integral number, a negative one for an unsigned field and one out of
+// its range, naming the key (nlohmann's own readers cast: -1.5 to an unsigned is undefined, -1
+// becomes 4294967295, 2.5 becomes 2); everything else reads as nlohmann reads it.
+template <class T>
+void readJsonField(const nlohmann::json& value, const char* key, T& field) {
+    if constexpr (std::is_arithmetic_v<T> && !std::is_same_v<T, bool>) {
+        try {
+            field = checkedNumber<T>(value);
+        } catch (const std::invalid_argument& e) {
+            throw std::invalid_argument(std::string("key '") + key + "': " + e.what());
+        }
+    } else {
+        value.get_to(field);
+    }
+}
+
+// The same where a missing key keeps `fallback` (readers of types that gained fields later).
+template <class T>
+void readJsonFieldOr(const nlohmann::json& object, const char* key, T& field, const T& fallback) {
+    if (!object.is_object()) throw std::invalid_argument(std::string("an object with key '") + key + "' expected");
+    const auto found = object.find(key);
+    if (found == object.end()) field = fallback;
+    else readJsonField(*found, key, field);
+}
+
+} // namespace glint
+
+// GLINT_JSON_TYPE(_WITH_DEFAULT) with readJsonField(Or) for each field.
+#define GLINT_JSON_FROM(v1) ::glint::readJsonField(nlohmann_json_j.at(#v1), #v1, nlohmann_json_t.v1);
+#define GLINT_JSON_FROM_WITH_DEFAULT(v1) ::glint::readJsonFieldOr(nlohmann_json_j, #v1, nlohmann_json_t.v1, nlohmann_json_default_obj.v1);
+#define GLINT_JSON_TYPE(Type, ...)                                                                                        \
+    inline void to_json(nlohmann::json& nlohmann_json_j, const Type& nlohmann_json_t) {                                   \
+        NLOHMANN_JSON_EXPAND(NLOHMANN_JSON_PASTE(NLOHMANN_JSON_TO, __VA_ARGS__))                                          \
+    }                                                                                                                     \
+    inline void from_json(const nlohmann::json& nlohmann_json_j, Type& nlohmann_json_t) {                                 \
+        NLOHMANN_JSON_EXPAND(NLOHMANN_JSON_PASTE(GLINT_JSON_FROM, __VA_ARGS__))                                           \
+    }
+#define GLINT_JSON_TYPE_WITH_DEFAULT(Type, ...)                                                                           \
+    inline void to_json(nlohmann::json& nlohmann_json_j, const Type& nlohmann_json_t) {                                   \
+        NLOHMANN_JSON_EXPAND(NLOHMANN_JSON_PASTE(NLOHMANN_JSON_TO, __VA_ARGS__))                                          \
+    }                                                                                                                     \
+    inline void from_json(const nlohmann::json& nlohmann_json_j, Type& nlohmann_json_t) {                                 \
+        const Type nlohmann_json_default_obj{};                                                                           \
+        NLOHMANN_JSON_EXPAND(NLOHMANN_JSON_PASTE(GLINT_JSON_FROM_WITH_DEFAULT, __VA_ARGS__))                              \
+    }
+
+namespace glint {
+
 NLOHMANN_JSON_SERIALIZE_ENUM(ShapeKind, {{ShapeKind::Sphere, "sphere"}, {ShapeKind::Quad, "quad"},
                                          {ShapeKind::Disk, "disk"}, {ShapeKind::Box, "box"},
                                          {ShapeKind::Cylinder, "cylinder"}, {ShapeKind::GroundPlane, "groundPlane"}})
@@ -78,38 +131,38 @@ NLOHMANN_JSON_SERIALIZE_ENUM(Tonemapper, {{Tonemapper::None, "none"}, {Tonemappe
                                           {Tonemapper::PbrNeutral, "pbrNeutral"}, {Tonemapper::AgX, "agx"},
                                           {Tonemapper::Reinhard, "reinhard"}, {Tonemapper::Hable, "hable"}})
 
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Transform, translation, rotation, scale)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(MeshInstance, mesh)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Shape, kind, radius, size, height, material)
+GLINT_JSON_TYPE(Transform, translation, rotation, scale)
+GLINT_JSON_TYPE(MeshInstance, mesh)
+GLINT_JSON_TYPE(Shape, kind, radius, size, height, material)
 // With defaults: command logs written before area lights existed still replay.
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(Light, type, color, intensity, range, innerConeAngle, outerConeAngle,
+GLINT_JSON_TYPE_WITH_DEFAULT(Light, type, color, intensity, range, innerConeAngle, outerConeAngle,
                                                 angularDiameter, radius, areaShape, size)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CameraKey, time, position, orientation, yfov, focusDistance, lensRadius)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CameraPath, keys, rotation, constantSpeed)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Camera, projection, yfov, aspectRatio, znear, zfar, xmag, ymag, lensRadius,
+GLINT_JSON_TYPE(CameraKey, time, position, orientation, yfov, focusDistance, lensRadius)
+GLINT_JSON_TYPE(CameraPath, keys, rotation, constantSpeed)
+GLINT_JSON_TYPE(Camera, projection, yfov, aspectRatio, znear, zfar, xmag, ymag, lensRadius,
                                    focusDistance, exposure, path)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(TextureTransform, offset, rotation, scale, texCoord)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(TextureRef, texture, texCoord, scale, transform, unknown)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Primitive, positions, normals, tangents, uv0, uv1, colors, indices, material,
+GLINT_JSON_TYPE(TextureTransform, offset, rotation, scale, texCoord)
+GLINT_JSON_TYPE(TextureRef, texture, texCoord, scale, transform, unknown)
+GLINT_JSON_TYPE(Primitive, positions, normals, tangents, uv0, uv1, colors, indices, material,
                                    unknown)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Mesh, name, primitives, unknown)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(AnimationChannel, node, path, interpolation, times, values)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Animation, name, channels, bakedCameraPath, unknown)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Image, name, uri, mimeType, encoded, width, height, missing, unknown)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Sampler, name, magFilter, minFilter, wrapS, wrapT, unknown)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Texture, name, image, sampler, unknown)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Environment, file, color, intensity, rotationDegrees)
+GLINT_JSON_TYPE(Mesh, name, primitives, unknown)
+GLINT_JSON_TYPE(AnimationChannel, node, path, interpolation, times, values)
+GLINT_JSON_TYPE(Animation, name, channels, bakedCameraPath, unknown)
+GLINT_JSON_TYPE(Image, name, uri, mimeType, encoded, width, height, missing, unknown)
+GLINT_JSON_TYPE(Sampler, name, magFilter, minFilter, wrapS, wrapT, unknown)
+GLINT_JSON_TYPE(Texture, name, image, sampler, unknown)
+GLINT_JSON_TYPE(Environment, file, color, intensity, rotationDegrees)
 NLOHMANN_JSON_SERIALIZE_ENUM(TaaClip, {{TaaClip::Variance, "variance"}, {TaaClip::MinMax, "minmax"}, {TaaClip::None, "none"}})
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(TaaParameters, blend, clip, clipGamma, perceptualBlend)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(SvgfParameters, iterations, alpha, momentsAlpha, sigmaLuminance,
+GLINT_JSON_TYPE_WITH_DEFAULT(TaaParameters, blend, clip, clipGamma, perceptualBlend)
+GLINT_JSON_TYPE_WITH_DEFAULT(SvgfParameters, iterations, alpha, momentsAlpha, sigmaLuminance,
                                                 sigmaNormal, sigmaDepth, fireflyRatio)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(BloomParameters, strength, radius)
+GLINT_JSON_TYPE_WITH_DEFAULT(BloomParameters, strength, radius)
 // With defaults: command logs written before the reconstruction parameters existed still replay.
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(RenderSettings, configuration, width, height, spp, bounces, seed,
+GLINT_JSON_TYPE_WITH_DEFAULT(RenderSettings, configuration, width, height, spp, bounces, seed,
                                                 exposure, tonemapper, clamp, taa, svgf, bloom)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Timeline, start, end, fpsNumerator, fpsDenominator)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(OutputSettings, path, aovs, passes, codec)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(ProjectSettings, render, environment, activeCamera, timeline, output,
+GLINT_JSON_TYPE(Timeline, start, end, fpsNumerator, fpsDenominator)
+GLINT_JSON_TYPE_WITH_DEFAULT(OutputSettings, path, aovs, passes, codec)
+GLINT_JSON_TYPE(ProjectSettings, render, environment, activeCamera, timeline, output,
                                    lightUnits, unknown)
 
 // Hand-written: attenuationDistance defaults to infinity, which JSON numbers cannot hold.

@@ -6,6 +6,8 @@
 
 #include <QtTest>
 
+#include <limits>
+
 #include <map>
 #include <set>
 
@@ -88,6 +90,28 @@ private slots:
             selectShard(std::nullopt, std::nullopt,
                         envOf({{"SLURM_ARRAY_TASK_ID", "2147483647"}, {"SLURM_ARRAY_TASK_MIN", "-2"}, {"SLURM_ARRAY_TASK_COUNT", "8"}}));
         }));
+    }
+
+    // The project file bounds neither the timeline's start nor its end: a default range beyond
+    // kMaxFrame (or not a number) is refused, never converted to an int.
+    void defaultRangeBeyondTheLastFrameIsRefused() {
+        Scene scene;
+        scene.settings.timeline.end = 10.0;
+        QCOMPARE(defaultFrameRange(scene, Fps{24, 1}).last, 240);
+        scene.settings.timeline.end = 9'999'999.0 / 24.0;
+        QCOMPARE(defaultFrameRange(scene, Fps{24, 1}).last, kMaxFrame);
+        for (const double end : {1e300, 9'999'999.0 / 24.0 + 1.0, std::numeric_limits<double>::infinity()}) {
+            scene.settings.timeline.end = end;
+            QVERIFY2(throwsInvalid([&] { defaultFrameRange(scene, Fps{24, 1}); }), qPrintable(QString::number(end)));
+        }
+        scene.settings.timeline.start = -1e300;
+        scene.settings.timeline.end = 1.0;
+        QVERIFY(throwsInvalid([&] { defaultFrameRange(scene, Fps{24, 1}); }));
+        try {
+            defaultFrameRange(scene, Fps{24, 1});
+        } catch (const std::invalid_argument& e) {
+            QVERIFY2(std::string(e.what()).find("beyond the last frame number 9999999") != std::string::npos, e.what());
+        }
     }
 
     void frameTimesFollowFps() {

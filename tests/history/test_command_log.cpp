@@ -63,6 +63,38 @@ private slots:
         QCOMPARE(commandFromJson(integral)->typeName(), std::string("add_image"));
     }
 
+    // The generated readers of value types refuse what an integer field cannot hold, naming the
+    // key: a fraction (once cast, -1.5 into an unsigned was undefined and 2.5 became 2) and a
+    // negative number for an unsigned field (once -1 became 4294967295).
+    void integerFieldsRefuseFractionsAndNegatives() {
+        Image image;
+        image.name = "tiny";
+        image.encoded = std::vector<std::uint8_t>{1, 2, 3};
+        const nlohmann::json good = commandToJson(AddAsset<Image>(image, ImageId{9}));
+        for (const nlohmann::json& bad : {nlohmann::json(-1.5), nlohmann::json(2.5), nlohmann::json("4")}) {
+            nlohmann::json j = good;
+            j["value"]["width"] = bad;
+            try {
+                commandFromJson(j);
+                QFAIL(qPrintable(QString::fromStdString("width " + bad.dump() + " was accepted")));
+            } catch (const std::invalid_argument& e) {
+                QVERIFY2(std::string(e.what()).find("key 'width'") != std::string::npos, e.what());
+            }
+        }
+        RenderSettings render;
+        nlohmann::json settings = render;
+        for (const double bad : {-1.5, -1.0, 0.5, 4294967296.0}) {
+            settings["seed"] = bad;
+            QVERIFY_THROWS_EXCEPTION(std::invalid_argument, (void)settings.get<RenderSettings>());
+        }
+        settings["seed"] = -1; // as an integer too
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, (void)settings.get<RenderSettings>());
+        settings["seed"] = 4294967295.0;
+        QCOMPARE(settings.get<RenderSettings>().seed, 4294967295u);
+        settings.erase("seed"); // a missing key keeps the default
+        QCOMPARE(settings.get<RenderSettings>().seed, render.seed);
+    }
+
     void everyCommandRoundTripsThroughJsonText_data() {
         QTest::addColumn<int>("position");
         SampleIds ids;
