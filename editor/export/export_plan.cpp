@@ -30,11 +30,13 @@ ExportFrame planBase(const Scene& scene, const ExportSettings& s) {
 }
 
 // The EXR's AOVs and render passes, as `glint render --aovs --passes` records them. Throws
-// std::invalid_argument for an unknown pass name.
+// std::invalid_argument for an unknown pass name, and for passes with a real-time configuration.
 void addExrLayers(ExportFrame& f, const ExportSettings& s) {
     f.metadata["aovs"] = s.aovs;
     renderer::RenderPlan plan{std::move(f.request), std::move(f.metadata)};
     renderer::planRenderPasses(plan, renderer::parsePassList(s.passes));
+    if (plan.request.renderPasses && !traitsOf(plan.request.configuration).accumulate)
+        throw std::invalid_argument("render passes need the accumulate or reference configuration, not '" + s.configuration + "'");
     f.request = std::move(plan.request);
     f.metadata = std::move(plan.metadata);
 }

@@ -204,6 +204,15 @@ private slots:
         s.animation = true;
         s.out = dir_.filePath("no_pattern.exr").toStdString();
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, controller.start(document_.scene(), s));
+        // Render passes: an unknown name, and passes with a real-time configuration.
+        s.animation = false;
+        s.out = dir_.filePath("x.exr").toStdString();
+        s.passes = "Emit,Shadow";
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, controller.start(document_.scene(), s));
+        s.passes = "Emit";
+        s.configuration = "full";
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, controller.start(document_.scene(), s));
+        QVERIFY(!controller.isRunning());
     }
 
     void dialogFieldsRoundTrip() {
