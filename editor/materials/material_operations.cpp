@@ -6,6 +6,7 @@
 #include "scene/history/material_commands.h"
 #include "scene/history/set_node_field.h"
 #include "scene/io/image_decoder.h"
+#include "scene/io/oiio/oiio_image_decoder.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -23,6 +24,7 @@
 #include <cstdio>
 #include <exception>
 #include <set>
+#include <span>
 
 namespace glint::editor {
 namespace {
@@ -108,9 +110,18 @@ struct EncodedTexture {
 // OpenImageIO (linear to sRGB for colour slots). Throws a message naming the file.
 EncodedTexture encodeForGltf(const QString& path, const QByteArray& bytes, bool color) {
     const QString name = QFileInfo(path).fileName();
+    // Glint's limits on the header before OpenImageIO opens the file, and on the opened spec before
+    // a pixel is read: an image bomb is refused, not allocated (docs/RELIABILITY.md).
+    const auto refuse = [&](const std::string& why) {
+        throw std::runtime_error(tr("%1 cannot be read as an image: %2").arg(name, QString::fromStdString(why)).toStdString());
+    };
+    const std::span<const std::uint8_t> raw(reinterpret_cast<const std::uint8_t*>(bytes.constData()), std::size_t(bytes.size()));
+    if (const std::string why = headerLimitError(raw, raw.size(), 4, sizeof(float), DecodeLimits{}); !why.empty()) refuse(why);
     OIIO::Filesystem::IOMemReader reader(bytes.constData(), std::size_t(bytes.size()));
     // OpenImageIO picks its reader by the file's extension; the bytes decide whether it reads.
     OIIO::ImageBuf image(path.toStdString(), 0, 0, nullptr, nullptr, &reader);
+    if (image.spec().width > 0)
+        if (const std::string why = openedLimitError(image.spec(), 4, sizeof(float), DecodeLimits{}); !why.empty()) refuse(why);
     if (!image.read(0, 0, true, OIIO::TypeDesc::FLOAT) || image.spec().width <= 0 || image.spec().height <= 0) {
         std::string why = image.geterror();
         if (why.empty()) why = "not an image OpenImageIO can read";

@@ -110,6 +110,8 @@ std::optional<CubeLayout> cubeLayoutOf(int width, int height) {
     return std::nullopt;
 }
 
+int cubeFaceSide(CubeLayout layout, int width) { return faceSideOf(layout, width); }
+
 EnvironmentImage equirectFromCube(const EnvironmentImage& cube, CubeLayout layout) {
     const FaceSampler faces{cube, layout, faceSideOf(layout, cube.width)};
     EnvironmentImage out;

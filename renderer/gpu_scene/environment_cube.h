@@ -17,6 +17,9 @@ enum class CubeLayout { HorizontalCross, VerticalCross, HorizontalStrip, Vertica
 // The layout an image of this size holds, if it is one (face sides of at least 1 pixel).
 std::optional<CubeLayout> cubeLayoutOf(int width, int height);
 
+// The side of one face of a cube map `width` pixels wide in this layout.
+int cubeFaceSide(CubeLayout layout, int width);
+
 // The cube resampled (bilinear within each face) to an equirectangular image 4 faces wide and 2
 // high, in the orientation of docs/UNITS.md.
 EnvironmentImage equirectFromCube(const EnvironmentImage& cube, CubeLayout layout);

@@ -19,9 +19,23 @@ EnvironmentImage readEnvironment(OIIO::ImageInput& input, const std::string& nam
     if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
         throw FileError(name, "environment-empty", "the environment image has no pixels");
     // The declared size against the limits before anything is allocated: 3 floats per pixel.
-    if (const std::string error = decodeLimitError(spec.width, spec.height, spec.nchannels, 3, sizeof(float), limits); !error.empty())
-        throw FileError(name, "environment-too-large", "cannot read the environment image: " + error);
-    if (spec.deep) throw FileError(name, "environment-unreadable", "cannot read the environment image: deep images are not read");
+    if (const std::string error = openedLimitError(spec, 3, sizeof(float), limits); !error.empty())
+        throw FileError(name, spec.deep ? "environment-unreadable" : "environment-too-large", "cannot read the environment image: " + error);
+    // Its importance-sampling table (renderer/cpu_twin/env_sampling.h) is max(width, height) + 1 by
+    // height + 1 floats: quadratic in the height, so a tall, narrow image (7 x 38661 asked for 6 GB)
+    // is refused too. A cube map becomes 4 x 2 faces first.
+    std::int64_t width = spec.width, height = spec.height;
+    if (const auto layout = cubeLayoutOf(spec.width, spec.height)) {
+        const std::int64_t side = cubeFaceSide(*layout, spec.width);
+        width = 4 * side;
+        height = 2 * side;
+    }
+    const std::uint64_t table = static_cast<std::uint64_t>(std::max(width, height) + 1) * static_cast<std::uint64_t>(height + 1) * sizeof(float);
+    if (table > limits.maxBytes)
+        throw FileError(name, "environment-too-large",
+                        "cannot read the environment image: its sampling table for " + std::to_string(width) + "x" + std::to_string(height) +
+                            " pixels takes " + std::to_string((table + (1u << 20) - 1) >> 20) + " MiB, more than the limit of " +
+                            std::to_string(limits.maxBytes >> 20) + " MiB (an equirectangular image is twice as wide as high)");
     EnvironmentImage image;
     image.width = spec.width;
     image.height = spec.height;

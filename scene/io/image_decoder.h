@@ -37,6 +37,12 @@ std::string decodeLimitError(std::int64_t width, std::int64_t height, std::int64
 // when nothing does.
 std::string imageHeaderProblem(std::span<const std::uint8_t> header, std::uint64_t fileSize);
 
+// The same for the buffer an image library reads one tile or strip into (OpenImageIO: a tile, or
+// a TIFF strip of its RowsPerStrip rows, whatever the image's own height): `chunkWidth` x
+// `chunkHeight` pixels of `channels` values of `bytesPerValue` bytes.
+std::string chunkLimitError(std::int64_t chunkWidth, std::int64_t chunkHeight, std::int64_t channels, std::size_t bytesPerValue,
+                            const DecodeLimits& limits);
+
 // Why an image file may not be opened, from its first bytes (`header`) and its size: the size
 // probeImageHeader reads beyond the limits (one channel assumed), or an imageHeaderProblem. So an
 // image bomb is refused before an image library opens it: some allocate for the declared size on

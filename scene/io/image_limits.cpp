@@ -32,6 +32,15 @@ std::string decodeLimitError(std::int64_t width, std::int64_t height, std::int64
     return {};
 }
 
+std::string chunkLimitError(std::int64_t chunkWidth, std::int64_t chunkHeight, std::int64_t channels, std::size_t bytesPerValue,
+                            const DecodeLimits& limits)
+{
+    std::string error = decodeLimitError(chunkWidth, chunkHeight, channels, 1, bytesPerValue, limits);
+    const std::string prefix = "the image declares ";
+    if (error.starts_with(prefix)) error.insert(prefix.size(), "tiles or strips of ");
+    return error;
+}
+
 std::string headerLimitError(std::span<const std::uint8_t> header, std::uint64_t fileSize, int decodedChannels,
                              std::size_t bytesPerValue, const DecodeLimits& limits)
 {

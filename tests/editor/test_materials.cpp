@@ -310,6 +310,11 @@ private slots:
         broken.close();
         error = loadTextureFile(document, s.grey, *findTextureSlot("normal"), broken.fileName());
         QVERIFY2(error.contains("broken.png"), qPrintable(error));
+        // An image bomb: a PNG header declaring 65535 x 65535 pixels, refused before it is read.
+        const QString bomb = temp_.filePath("bomb.png");
+        QVERIFY(QFile::copy(GLINT_TEST_DATA_DIR "/../fuzz/seeds/image_decode/bomb-65535x65535.png", bomb));
+        error = loadTextureFile(document, s.grey, *findTextureSlot("baseColor"), bomb);
+        QVERIFY2(error.contains("bomb.png") && error.contains("more than the limit of 268435456 pixels"), qPrintable(error));
         QCOMPARE(document.history().index(), steps);
         QVERIFY(document.scene() == before);
     }

@@ -139,8 +139,9 @@ private slots:
     }
 
     // Image bombs (docs/RELIABILITY.md): a few bytes declaring a huge image, refused on Glint's own
-    // reading of the header, before OpenImageIO opens them (libjpeg and OpenEXR allocate for what a
-    // header declares on opening). The files are the fuzz target's regression inputs.
+    // reading of the header before OpenImageIO opens them (libjpeg, libpng and OpenEXR allocate for
+    // what a header declares on opening), or on the opened spec before any pixel is read (a TIFF
+    // strip). The files are the fuzz target's regression inputs.
     void imageBombsAreRefusedBeforeOpening_data()
     {
         QTest::addColumn<QString>("file");
@@ -154,6 +155,8 @@ private slots:
                                                   << "the image declares 65500x65500 pixels, more than the limit of 268435456 pixels";
         QTest::newRow("exr attribute size") << "crash-exr-attribute-size-bomb.exr" << "declares";
         QTest::newRow("exr channel list") << "crash-exr-channel-list-overrun.exr" << "the OpenEXR attribute 'channels' (chlist) does not end where it says";
+        QTest::newRow("tiff strip") << "crash-tiff-strip-taller-than-image.tif"
+                                    << "the image declares tiles or strips of 65524x10784 pixels, more than the limit of 268435456 pixels";
     }
 
     void imageBombsAreRefusedBeforeOpening()

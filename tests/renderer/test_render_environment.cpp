@@ -7,6 +7,7 @@
 #include "renderer/gpu_scene/environment_cube.h"
 #include "renderer/gpu_scene/environment_image.h"
 #include "renderer/offline_render.h"
+#include "scene/core/diagnostics.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -15,6 +16,7 @@
 
 #include <cmath>
 #include <memory>
+#include <string>
 
 using namespace glint;
 using namespace glint::test;
@@ -93,6 +95,23 @@ private slots:
     // 4x4, 1 spp, seed 0, a 0.001 rad field of view: each view direction d must show the map at
     // u = 0.5 + atan2(z, x) / 2pi, v = acos(y) / pi (and, rotated by 90 degrees about +Y, at the
     // direction turned back by -90 degrees). Tolerance 1 % of the bilinear value.
+    // Image bombs found by fuzz_image_decode (tests/fuzz/seeds/image_decode): a 7 x 38661 image,
+    // whose sampling table (quadratic in the height) asked for 6 GB, and a Radiance header declaring
+    // 65535 x 65535 pixels; both refused before anything is allocated, naming the file and the limit.
+    void environmentsBeyondTheLimitsAreRefused() {
+        const std::string seeds = GLINT_TEST_DATA_DIR "/../fuzz/seeds/image_decode/";
+        for (const std::string name : {"crash-environment-tall-sampling-table.tif", "bomb-65535x65535.hdr"}) {
+            try {
+                renderer::loadEnvironmentImage(seeds + name);
+                QFAIL(name.c_str());
+            } catch (const FileError& e) {
+                QCOMPARE(e.code(), std::string("environment-too-large"));
+                QCOMPARE(e.file(), seeds + name);
+                QVERIFY2(e.message().find("more than the limit") != std::string::npos, e.what());
+            }
+        }
+    }
+
     void orientationFollowsTheContract_data() {
         QTest::addColumn<float>("x");
         QTest::addColumn<float>("y");

@@ -60,8 +60,7 @@ DecodedImage<T> decode(std::span<const std::uint8_t> encoded, const DecodeLimits
     }
     const OIIO::ImageSpec& spec = opened.input->spec();
     // The header's size against the limits before anything is allocated for the pixels.
-    out.error = decodeLimitError(spec.width, spec.height, spec.nchannels, 4, sizeof(T), limits);
-    if (out.error.empty() && spec.deep) out.error = "deep images are not read";
+    out.error = openedLimitError(spec, 4, sizeof(T), limits);
     if (!out.error.empty()) return out;
     const auto pixels = static_cast<std::uint64_t>(spec.width) * static_cast<std::uint64_t>(spec.height);
     out.width = spec.width;
@@ -83,6 +82,21 @@ DecodedImage<T> decode(std::span<const std::uint8_t> encoded, const DecodeLimits
 }
 
 } // namespace
+
+std::string openedLimitError(const OIIO::ImageSpec& spec, int decodedChannels, std::size_t bytesPerValue, const DecodeLimits& limits)
+{
+    if (spec.deep) return "deep images are not read";
+    const std::size_t perValue = std::max(bytesPerValue, spec.format.size()); // as stored or as read, the larger
+    if (std::string error = decodeLimitError(spec.width, spec.height, spec.nchannels, decodedChannels, perValue, limits); !error.empty())
+        return error;
+    // OpenImageIO reads a tile, or a TIFF strip of RowsPerStrip rows, at a time: a strip declared
+    // 10784 rows high in a 5-row image made it allocate 8 GB.
+    const bool tiled = spec.tile_width > 0 && spec.tile_height > 0;
+    const std::int64_t chunkWidth = tiled ? spec.tile_width : spec.width;
+    const std::int64_t chunkHeight = tiled ? std::int64_t(spec.tile_height) * std::max(1, spec.tile_depth)
+                                           : std::max(1, spec.get_int_attribute("tiff:RowsPerStrip", 1));
+    return chunkLimitError(chunkWidth, chunkHeight, spec.nchannels, perValue, limits);
+}
 
 std::optional<ImageSize> OiioImageDecoder::probe(std::span<const std::uint8_t> encoded) const
 {
