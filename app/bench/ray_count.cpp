@@ -60,7 +60,8 @@ glm::vec3 sampleLightPoint(Walk& w) {
                                                 static_cast<std::size_t>(lights.count() - 1));
     float a = w.uniform(), b = w.uniform();
     if (a + b > 1.0f) a = 1.0f - a, b = 1.0f - b;
-    const glm::vec3 p0(lights.texels[4 * i]), p1(lights.texels[4 * i + 1]), p2(lights.texels[4 * i + 2]);
+    const std::size_t first = renderer::EmissiveTriangles::texelsPerTriangle * i;
+    const glm::vec3 p0(lights.texels[first]), p1(lights.texels[first + 1]), p2(lights.texels[first + 2]);
     return p0 + a * (p1 - p0) + b * (p2 - p0);
 }
 

@@ -59,10 +59,10 @@ GpuMeshes::GpuMeshes(MeshData data) : data_(std::move(data)) {
 
 GpuMeshes::~GpuMeshes() = default;
 
-void GpuMeshes::updateTransforms(const Scene& scene, const std::map<MaterialId, int>& materialIndex) {
+void GpuMeshes::updateTransforms(const Scene& scene, const std::map<MaterialId, int>& materialIndex, const TextureSet* textures) {
     if (!buffers_) return;
     const bool hadEmitters = !data_.lights.texels.empty();
-    updateMeshTransforms(data_, scene, materialIndex);
+    updateMeshTransforms(data_, scene, materialIndex, textures);
     // The mesh trees did not change (validated when they were prepared): only the top level is
     // checked and rewritten, after the mesh nodes in the node buffers (glBufferSubData). Checking
     // and re-sending every mesh node cost 100 ms per gizmo-drag frame on 1.1 M unique triangles.
@@ -80,9 +80,9 @@ void GpuMeshes::updateTransforms(const Scene& scene, const std::map<MaterialId, 
     setCounts();
 }
 
-void GpuMeshes::updateEmission(const Scene& scene, const std::map<MaterialId, int>& materialIndex) {
+void GpuMeshes::updateEmission(const Scene& scene, const std::map<MaterialId, int>& materialIndex, const TextureSet* textures) {
     if (!buffers_) return;
-    updateMeshEmission(data_, scene, materialIndex);
+    updateMeshEmission(data_, scene, materialIndex, textures);
     buffers_->emissiveTriangles = upload("the emissive triangles", GL_RGBA32F, data_.lights.texels);
     buffers_->emissiveCdf = upload("the emissive CDF", GL_R32F, data_.lights.cdf);
     setCounts();

@@ -24,9 +24,9 @@ public:
     ~GpuMeshes();
     // After a transform-only change: rebuilds the top level and the emissive triangles and uploads
     // the node, instance and emissive buffers; mesh BVHs and vertex buffers stay as they are.
-    void updateTransforms(const Scene& scene, const std::map<MaterialId, int>& materialIndex);
+    void updateTransforms(const Scene& scene, const std::map<MaterialId, int>& materialIndex, const TextureSet* textures);
     // After a material-only change: re-uploads the emissive triangles alone.
-    void updateEmission(const Scene& scene, const std::map<MaterialId, int>& materialIndex);
+    void updateEmission(const Scene& scene, const std::map<MaterialId, int>& materialIndex, const TextureSet* textures);
     const MeshData& data() const { return data_; }
 
     bool empty() const { return triangleCount_ == 0; }

@@ -49,7 +49,7 @@ GpuScene::GpuScene(PreparedScene prepared)
       lights_(vec4Buffer("the light buffer", packed_.lights)),
       meshes_(std::move(prepared.meshes)),
       textureArrays_(prepared.textures),
-      textureSlots_{{}, std::move(prepared.textures.slotOf), {}},
+      textureSlots_{{}, std::move(prepared.textures.slotOf), {}, std::move(prepared.textures.meanOf)},
       texturesUsed_(std::move(prepared.texturesUsed)),
       warnings_(std::move(prepared.warnings)) {
     if (const auto& env = prepared.environmentMap) {
@@ -84,7 +84,7 @@ void GpuScene::updateTransforms(const Scene& scene) {
     // The pass reads the variant from the features at each frame: a light change that adds the
     // first emissive shape compiles it in.
     features_.emissiveShapes = moved.emissiveShapes;
-    meshes_.updateTransforms(scene, packed_.materialIndex);
+    meshes_.updateTransforms(scene, packed_.materialIndex, &textureSlots_);
 }
 
 bool GpuScene::updateMaterials(const Scene& scene) {
@@ -101,7 +101,7 @@ bool GpuScene::updateMaterials(const Scene& scene) {
     if (repacked.materialIndex != packed_.materialIndex || repacked.shapes != packed_.shapes) return false;
     packed_.materials = std::move(repacked.materials);
     materials_ = vec4Buffer("the material buffer", packed_.materials);
-    meshes_.updateEmission(scene, packed_.materialIndex);
+    meshes_.updateEmission(scene, packed_.materialIndex, &textureSlots_);
     return true;
 }
 

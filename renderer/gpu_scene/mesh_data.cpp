@@ -58,14 +58,26 @@ std::vector<glm::vec4> vertexTexels(const Scene& scene, const std::vector<MeshId
     return texels;
 }
 
-EmissiveTriangles emissiveTriangles(const Scene& scene, const MeshData& data, const std::map<MaterialId, int>& materialIndex) {
+// Slot -> triangle inverted, for the meshes with emissive-textured triangles only.
+std::vector<std::uint32_t> slotOfTriangle(const bvh::MeshBvh& mesh) {
+    std::vector<std::uint32_t> slots(mesh.bvh.itemOrder.size());
+    for (std::size_t slot = 0; slot < mesh.bvh.itemOrder.size(); ++slot) slots[mesh.bvh.itemOrder[slot]] = static_cast<std::uint32_t>(slot);
+    return slots;
+}
+
+EmissiveTriangles emissiveTriangles(const Scene& scene, const MeshData& data, const std::map<MaterialId, int>& materialIndex,
+                                    const TextureSet* textures) {
     std::vector<glm::vec3> emissionOf(materialIndex.size() + 1, glm::vec3(0.0f));
     std::vector<bool> twoSidedOf(materialIndex.size() + 1, true);
+    std::vector<bool> texturedOf(materialIndex.size() + 1, false);
     for (const auto& [id, index] : materialIndex) {
-        emissionOf[static_cast<std::size_t>(index)] = sampledEmission(scene, scene.materials.at(id));
-        twoSidedOf[static_cast<std::size_t>(index)] = scene.materials.at(id).doubleSided;
+        const Material& material = scene.materials.at(id);
+        emissionOf[static_cast<std::size_t>(index)] = sampledEmission(scene, material, textures);
+        twoSidedOf[static_cast<std::size_t>(index)] = material.doubleSided;
+        texturedOf[static_cast<std::size_t>(index)] = hasEmissiveTexture(scene, material);
     }
     EmissiveTriangles lights;
+    std::map<std::uint32_t, std::vector<std::uint32_t>> slotsOf; // mesh BVH index -> slotOfTriangle
     for (const bvh::Instance& instance : data.instances) {
         const bvh::MeshTriangles& mesh = data.bvhs[instance.target].triangles;
         // A mirroring transform turns the winding around; the front stays where the transformed
@@ -76,7 +88,14 @@ EmissiveTriangles emissiveTriangles(const Scene& scene, const MeshData& data, co
             if (emission == glm::vec3(0.0f)) continue;
             const auto world = [&](std::uint32_t v) { return glm::vec3(instance.worldFromLocal * glm::vec4(mesh.positions[v], 1.0f)); };
             const glm::uvec3 v = mesh.triangles[t];
-            lights.add(world(v.x), world(mirrored ? v.z : v.y), world(mirrored ? v.y : v.z), emission, twoSidedOf.at(mesh.materials[t]));
+            std::optional<EmitterTexturing> texturing;
+            if (texturedOf.at(mesh.materials[t])) {
+                auto slots = slotsOf.find(instance.target);
+                if (slots == slotsOf.end()) slots = slotsOf.emplace(instance.target, slotOfTriangle(data.bvhs[instance.target])).first;
+                texturing = EmitterTexturing{data.flat.meshes.at(instance.target).firstSlot + slots->second.at(t), mirrored};
+            }
+            lights.add(world(v.x), world(mirrored ? v.z : v.y), world(mirrored ? v.y : v.z), emission, twoSidedOf.at(mesh.materials[t]),
+                       texturing);
         }
     }
     lights.finish();
@@ -104,7 +123,7 @@ void MeshBvhCache::keepOnly(const std::vector<MeshId>& used) {
 }
 
 MeshData buildMeshData(const Scene& scene, const std::map<MaterialId, int>& materialIndex, bool texturing, MeshBvhCache& cache,
-                       const std::function<void(std::size_t, std::size_t)>& beforeMesh) {
+                       const std::function<void(std::size_t, std::size_t)>& beforeMesh, const TextureSet* textures) {
     const auto indexOf = [&](MaterialId id) {
         const auto it = materialIndex.find(id);
         return static_cast<std::uint32_t>(it == materialIndex.end() ? 0 : it->second);
@@ -124,28 +143,30 @@ MeshData buildMeshData(const Scene& scene, const std::map<MaterialId, int>& mate
     if (data.instances.empty()) return data;
     data.flat = bvh::flattenScene(data.bvhs, bvh::buildTopLevel(data.instances, data.bvhs));
     data.vertexTexels = vertexTexels(scene, data.ids, texturing);
-    data.lights = emissiveTriangles(scene, data, materialIndex);
+    data.lights = emissiveTriangles(scene, data, materialIndex, textures);
     return data;
 }
 
 MeshData validatedMeshData(const Scene& scene, const std::map<MaterialId, int>& materialIndex, bool texturing, MeshBvhCache& cache,
-                           const std::function<void(std::size_t, std::size_t)>& beforeMesh) {
-    MeshData data = buildMeshData(scene, materialIndex, texturing, cache, beforeMesh);
+                           const std::function<void(std::size_t, std::size_t)>& beforeMesh, const TextureSet* textures) {
+    MeshData data = buildMeshData(scene, materialIndex, texturing, cache, beforeMesh, textures);
     if (data.instances.empty()) return data;
     if (const auto problem = bvh::validateFlatScene(data.flat)) throw std::runtime_error("invalid BVH: " + *problem);
     return data;
 }
 
-void updateMeshTransforms(MeshData& data, const Scene& scene, const std::map<MaterialId, int>& materialIndex) {
+void updateMeshTransforms(MeshData& data, const Scene& scene, const std::map<MaterialId, int>& materialIndex,
+                          const TextureSet* textures) {
     data.instances = meshInstances(scene, data.ids);
     if (data.instances.empty()) return;
     const bvh::TopLevel topLevel = bvh::buildTopLevel(data.instances, data.bvhs);
     bvh::replaceTopLevel(data.flat, bvh::flattenTopLevel(topLevel, data.flat.meshes, data.flat.meshNodeCount));
-    data.lights = emissiveTriangles(scene, data, materialIndex);
+    data.lights = emissiveTriangles(scene, data, materialIndex, textures);
 }
 
-void updateMeshEmission(MeshData& data, const Scene& scene, const std::map<MaterialId, int>& materialIndex) {
-    if (!data.instances.empty()) data.lights = emissiveTriangles(scene, data, materialIndex);
+void updateMeshEmission(MeshData& data, const Scene& scene, const std::map<MaterialId, int>& materialIndex,
+                        const TextureSet* textures) {
+    if (!data.instances.empty()) data.lights = emissiveTriangles(scene, data, materialIndex, textures);
 }
 
 } // namespace glint::renderer

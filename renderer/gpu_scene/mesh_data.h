@@ -5,6 +5,7 @@
 // incremental path is tested byte for byte against a full build without a GL context.
 #include "renderer/bvh/flat_scene.h"
 #include "renderer/gpu_scene/emissive_triangles.h"
+#include "renderer/gpu_scene/texture_set.h"
 #include "scene/core/scene.h"
 
 #include <cstddef>
@@ -45,20 +46,26 @@ struct MeshData {
 
 // Everything from scratch except the mesh BVHs `cache` already holds. `beforeMesh(i, n)` runs
 // before each of the n mesh BVHs is fetched or built (progress; it may throw to stop the build).
+// `textures`: the scene's texture set, whose mean colours weigh emissive-textured triangles as lights
+// (none: such triangles are not light-sampled).
 MeshData buildMeshData(const Scene& scene, const std::map<MaterialId, int>& materialIndex, bool texturing,
-                       MeshBvhCache& cache, const std::function<void(std::size_t, std::size_t)>& beforeMesh = {});
+                       MeshBvhCache& cache, const std::function<void(std::size_t, std::size_t)>& beforeMesh = {},
+                       const TextureSet* textures = nullptr);
 
 // buildMeshData plus the BVH's validation (bvh/validate.h), CPU only: what GpuMeshes(MeshData)
 // uploads. Throws std::runtime_error when the BVH is invalid.
 MeshData validatedMeshData(const Scene& scene, const std::map<MaterialId, int>& materialIndex, bool texturing, MeshBvhCache& cache,
-                           const std::function<void(std::size_t, std::size_t)>& beforeMesh = {});
+                           const std::function<void(std::size_t, std::size_t)>& beforeMesh = {},
+                           const TextureSet* textures = nullptr);
 
 // After transforms alone changed (same visible instances, same meshes and materials): new instance
 // matrices, top level and emissive triangles; mesh BVHs, triangles and vertex attributes are kept.
 // Gives the same bytes as buildMeshData of `scene`.
-void updateMeshTransforms(MeshData& data, const Scene& scene, const std::map<MaterialId, int>& materialIndex);
+void updateMeshTransforms(MeshData& data, const Scene& scene, const std::map<MaterialId, int>& materialIndex,
+                          const TextureSet* textures = nullptr);
 
 // After material content alone changed: the emissive triangles (their emission is the materials').
-void updateMeshEmission(MeshData& data, const Scene& scene, const std::map<MaterialId, int>& materialIndex);
+void updateMeshEmission(MeshData& data, const Scene& scene, const std::map<MaterialId, int>& materialIndex,
+                        const TextureSet* textures = nullptr);
 
 } // namespace glint::renderer

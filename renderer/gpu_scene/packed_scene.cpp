@@ -11,8 +11,8 @@
 namespace glint::renderer {
 namespace {
 
-// `emission`: the radiance light sampling assumes (sampledEmission: none for an emissive texture,
-// which BSDF sampling alone finds). An emissive shape is light-sampled with the power luminance x world area (one side of a quad or disk,
+// `emission`: the radiance light sampling assumes (none for an emissive texture, which BSDF
+// sampling alone finds on a shape: its light samples would need the shape's texture coordinates). An emissive shape is light-sampled with the power luminance x world area (one side of a quad or disk,
 // the outside of a closed shape); the infinite ground plane never is.
 void packShape(PackedScene& out, const Shape& shape, const glm::mat4& worldFromLocal, float objectId, int material,
                glm::vec3 emission) {
@@ -76,8 +76,9 @@ void packLight(PackedScene& out, const Light& light, const glm::mat4& worldFromL
 
 // Texels: base colour; emission, roughness; metallic, specular, transmission, IOR; specular colour,
 // thickness (0: thin-walled); attenuation colour, attenuation distance (0: no absorption); alpha mode
-// (0 opaque, 1 mask, 2 blend), alpha cutoff, double-sided, 0; then the texture references
-// (texture_refs.h).
+// (0 opaque, 1 mask, 2 blend), alpha cutoff, double-sided, 0 (an area light's material: 1, front
+// face only); then the texture references (texture_refs.h), the emissive one's last w holding the
+// luminance light sampling assumes for an emissive-textured mesh triangle (sampledEmission).
 std::vector<glm::vec4> packMaterial(const Material& m, const Scene* scene, const TextureSet* textures) {
     const bool absorbs = std::isfinite(m.attenuationDistance) && m.attenuationDistance > 0.0f;
     std::vector<glm::vec4> texels{m.baseColorFactor,
@@ -88,6 +89,8 @@ std::vector<glm::vec4> packMaterial(const Material& m, const Scene* scene, const
             glm::vec4(m.attenuationColor, absorbs ? m.attenuationDistance : 0.0f),
             {static_cast<float>(m.alphaMode), m.alphaCutoff, m.doubleSided ? 1.0f : 0.0f, 0.0f}};
     appendMaterialTextureRefs(texels, scene, m, textures);
+    if (scene && hasEmissiveTexture(*scene, m))
+        texels[materialBaseTexels + textureRefTexels * emissiveRef + 2].w = emissionLuminance(sampledEmission(*scene, m, textures));
     return texels;
 }
 
@@ -108,7 +111,8 @@ PackedScene packScene(const Scene& scene, const TextureSet* textures) {
             const Material* material = scene.materials.find(shape->material);
             packShape(out, *shape, scene.worldFromNode(id), static_cast<float>(id.value),
                       it == out.materialIndex.end() ? 0 : it->second,
-                      material ? sampledEmission(scene, *material) : glm::vec3(0.0f));
+                      material && !hasEmissiveTexture(scene, *material) ? sampledEmission(scene, *material, textures)
+                                                                        : glm::vec3(0.0f));
         } else if (const auto* light = node.get<Light>()) {
             if (light->type == LightType::Area)
                 packAreaLight(out, *light, scene.worldFromNode(id), static_cast<float>(id.value));

@@ -108,7 +108,8 @@ PreparedScene prepareScene(const Scene& scene, const std::filesystem::path& envi
     out.features.emissiveShapes = out.packed.emissiveShapes;
     const bool colors = meshesHaveColors(scene);
     out.meshes = validatedMeshData(scene, out.packed.materialIndex, !out.textures.empty() || colors, meshCache,
-                               [&](std::size_t done, std::size_t total) { report(control, PreparationStage::Meshes, done, total); });
+                               [&](std::size_t done, std::size_t total) { report(control, PreparationStage::Meshes, done, total); },
+                               &out.textures);
     out.features.meshes = !out.meshes.instances.empty() && !out.meshes.flat.trianglePositions.empty();
     addMeshMaterialFeatures(scene, out.features);
     out.features.textures = !out.textures.empty() || colors;

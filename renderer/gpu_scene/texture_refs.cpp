@@ -64,9 +64,16 @@ void appendMaterialTextureRefs(std::vector<glm::vec4>& out, const Scene* scene, 
     add(m.thicknessTexture, false);
 }
 
-glm::vec3 sampledEmission(const Scene& scene, const Material& m) {
-    if (m.emissiveTexture.valid() && scene.textures.contains(m.emissiveTexture.texture)) return glm::vec3(0.0f);
-    return m.emissiveFactor * m.emissiveStrength;
+bool hasEmissiveTexture(const Scene& scene, const Material& m) {
+    return m.emissiveTexture.valid() && scene.textures.contains(m.emissiveTexture.texture);
+}
+
+glm::vec3 sampledEmission(const Scene& scene, const Material& m, const TextureSet* textures) {
+    const glm::vec3 factor = m.emissiveFactor * m.emissiveStrength;
+    if (!hasEmissiveTexture(scene, m)) return factor;
+    if (!textures) return glm::vec3(0.0f);
+    const auto mean = textures->meanOf.find({scene.textures.at(m.emissiveTexture.texture).image, true});
+    return mean == textures->meanOf.end() ? glm::vec3(0.0f) : factor * mean->second;
 }
 
 unsigned extensionTexturesUsed(const Scene& scene, const std::set<MaterialId>& materials, const TextureSet& textures) {

@@ -32,16 +32,22 @@ float samplerFlags(const Sampler& sampler);
 
 // Three texels: (bucket or -1, layer, flags, texCoord); (a, b, c, d); (tx, ty, scale, 0) with
 // uv' = (a u + b v + tx, c u + d v + ty) = offset + rotation * scale * uv (the extension's order).
+// The last 0 is the emissive reference's light luminance in a material record (packMaterial).
 void appendTextureRef(std::vector<glm::vec4>& out, const TextureRef& ref, TextureSlot slot, const Sampler& sampler);
 
 // The references of `m` in TextureRefIndex order (colour space per slot: sRGB for base colour,
 // emission and specular colour). Without a texture set every reference is empty.
 void appendMaterialTextureRefs(std::vector<glm::vec4>& out, const Scene* scene, const Material& m, const TextureSet* textures);
 
-// Emission that light sampling assumes for `m`: its factors, or none when an emissive texture
-// modulates them (a factor would misstate the texels): such surfaces are found by BSDF sampling
-// alone (shaders/pathtrace/material.glsl).
-glm::vec3 sampledEmission(const Scene& scene, const Material& m);
+// Emission that light sampling assumes for `m`, which weighs each emissive triangle by its area
+// times this luminance: its factors, times its emissive texture's mean colour where it has one
+// (TextureSet::meanOf; none without `textures`). A textured emitter's light samples then carry the
+// texel's emission at the sampled point (shaders/pathtrace/emissive_lights.glsl), so the estimate
+// stays unbiased whatever the texture's layout.
+glm::vec3 sampledEmission(const Scene& scene, const Material& m, const TextureSet* textures);
+
+// Whether `m`'s emission is modulated by a texture.
+bool hasEmissiveTexture(const Scene& scene, const Material& m);
 
 // ExtensionTextureBits of the textures that `materials` sample and `textures` holds.
 unsigned extensionTexturesUsed(const Scene& scene, const std::set<MaterialId>& materials, const TextureSet& textures);

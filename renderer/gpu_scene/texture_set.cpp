@@ -73,6 +73,13 @@ void mergeOnce(std::vector<Group>& groups, std::vector<std::string>& warnings) {
     groups.erase(groups.begin() + static_cast<std::ptrdiff_t>(smallest));
 }
 
+// The colour of a 1x1 level, in linear light.
+glm::vec3 meanColor(const TextureLevel& level, bool srgb) {
+    if (level.rgba.size() < 3) return glm::vec3(0.0f);
+    const auto channel = [&](int c) { return srgb ? srgbToLinear(level.rgba[c]) : level.rgba[c] / 255.0f; };
+    return {channel(0), channel(1), channel(2)};
+}
+
 } // namespace
 
 TextureSlot TextureSet::find(ImageId image, bool srgb) const {
@@ -147,6 +154,7 @@ TextureSet buildTextureSet(const Scene& scene, const std::set<MaterialId>& mater
         TextureBucket bucket{group.srgb, group.width, group.height, {}};
         for (auto& [use, chain] : group.images) {
             set.slotOf[use] = TextureSlot{static_cast<int>(set.buckets.size()), static_cast<int>(bucket.layers.size())};
+            set.meanOf[use] = meanColor(chain->back(), use.second);
             bucket.layers.push_back(std::move(chain));
         }
         set.buckets.push_back(std::move(bucket));

@@ -43,6 +43,9 @@ struct TextureSet {
     std::vector<TextureBucket> buckets;
     std::map<std::pair<ImageId, bool>, TextureSlot> slotOf; // (image, sRGB) -> where it lives (not "slots": a Qt macro)
     std::vector<std::string> warnings;
+    // (image, sRGB) -> its mean colour in linear light (its 1x1 mip level): the light sampling of
+    // emissive textures weighs triangles by it (texture_refs.h, sampledEmission).
+    std::map<std::pair<ImageId, bool>, glm::vec3> meanOf;
 
     TextureSlot find(ImageId image, bool srgb) const;
     bool empty() const { return buckets.empty(); }

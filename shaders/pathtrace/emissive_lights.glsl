@@ -6,9 +6,12 @@
 // weight from the material alone. A single-sided material emits
 // from its front face only (emissionSeen), so a point behind it gets no sample; the triangle's
 // texels hold its vertices counter-clockwise seen from the front and, in the emission's w, 1 for a
-// double-sided emitter.
+// double-sided emitter. An emissive-textured triangle is chosen by its material's mean emission
+// (the luminance its hits carry in SurfaceShading.sampledEmission) and its sample carries the
+// texel's emission at the sampled point: unbiased whatever the texture's layout.
 #ifdef HAS_MESHES
-uniform samplerBuffer uEmissiveTriangles; // 4 texels per triangle: p0, p1, p2, emission
+const int EMISSIVE_TRIANGLE_TEXELS = 5; // emissive_triangles.h
+uniform samplerBuffer uEmissiveTriangles; // p0, p1, p2, emission, texturing
 uniform samplerBuffer uEmissiveCdf;       // uEmissiveCount + 1 ascending values
 uniform int uEmissiveCount;
 uniform float uEmissivePower;
@@ -74,15 +77,28 @@ int findEmissiveTriangle(float u) {
 }
 #endif
 
+#if defined(HAS_MESHES) && defined(HAS_TEXTURES)
+// The emission at a point of an emissive-textured triangle: its texturing texel (slot / 65536,
+// slot % 65536, 1, 1 if p1 and p2 were swapped) and the point's weights of the stored p1 and p2.
+vec3 texturedTriangleEmission(vec4 texturing, vec2 storedWeights) {
+    int slot = int(texturing.x) * 65536 + int(texturing.y);
+    vec2 barycentric = texturing.w > 0.0 ? storedWeights.yx : storedWeights;
+    int material = int(bvhTriangleVertices(slot).w);
+    TextureRef r = fetchTextureRef(material, TEXREF_EMISSIVE);
+    return fetchEmission(material) * sampleSurfaceTexture(meshPointSurface(slot, barycentric), r).rgb;
+}
+#endif
+
 bool sampleEmissiveTriangle(vec3 p, vec3 u, OUT(AreaLightSample) s) {
     s = AreaLightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0), 0.0, vec3(0.0));
 #ifdef HAS_MESHES
     if (uEmissiveCount == 0) return false;
     int i = findEmissiveTriangle(u.x);
-    vec3 p0 = texelFetch(uEmissiveTriangles, 4 * i).xyz;
-    vec3 p1 = texelFetch(uEmissiveTriangles, 4 * i + 1).xyz;
-    vec3 p2 = texelFetch(uEmissiveTriangles, 4 * i + 2).xyz;
-    vec4 emission = texelFetch(uEmissiveTriangles, 4 * i + 3);
+    int first = EMISSIVE_TRIANGLE_TEXELS * i;
+    vec3 p0 = texelFetch(uEmissiveTriangles, first).xyz;
+    vec3 p1 = texelFetch(uEmissiveTriangles, first + 1).xyz;
+    vec3 p2 = texelFetch(uEmissiveTriangles, first + 2).xyz;
+    vec4 emission = texelFetch(uEmissiveTriangles, first + 3);
     float su = sqrt(u.y);
     vec3 q = (1.0 - su) * p0 + (u.z * su) * p1 + (su - u.z * su) * p2;
     vec3 offset = q - p;
@@ -95,7 +111,12 @@ bool sampleEmissiveTriangle(vec3 p, vec3 u, OUT(AreaLightSample) s) {
     if (emission.w > 0.0) cosAtLight = abs(cosAtLight);
     float pdf = emissiveLightPdf(emission.rgb, distance, cosAtLight);
     if (!(pdf > 0.0) || !isFiniteFloat(pdf)) return false;
-    s = AreaLightSample(direction, distance, emission.rgb, pdf, bvhOffsetRayOrigin(q, towardsP));
+    vec3 radiance = emission.rgb;
+#ifdef HAS_TEXTURES
+    vec4 texturing = texelFetch(uEmissiveTriangles, first + 4);
+    if (texturing.z > 0.0) radiance = texturedTriangleEmission(texturing, vec2(u.z * su, su - u.z * su));
+#endif
+    s = AreaLightSample(direction, distance, radiance, pdf, bvhOffsetRayOrigin(q, towardsP));
     return true;
 #else
     return false;

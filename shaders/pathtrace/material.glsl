@@ -88,9 +88,10 @@ void applyExtensionTextures(Hit hit, vec3 rayDirection, TexturedSurface m, INOUT
 }
 
 // glTF's texture semantics: base colour x texture x COLOR_0; roughness x G, metallic x B;
-// emission x texture. Emissive-textured triangles and shapes are not light-sampled (the light
-// tables hold factors), so their emission is found by BSDF sampling alone, unweighted. Meshes and
-// analytic shapes alike (shape_uv.glsl). The occlusion texture is
+// emission x texture. Emissive-textured triangles are light-sampled by their material's mean
+// emission, whose luminance the emissive reference holds (emissive_lights.glsl); emissive-textured
+// shapes are not (their light samples would need the shape's UV), so BSDF sampling alone finds
+// them, unweighted. Meshes and analytic shapes alike (shape_uv.glsl). The occlusion texture is
 // not read: a path tracer computes occlusion itself (docs/MATERIALS.md).
 void applyTextures(Hit hit, vec3 rayDirection, float coneWidth, INOUT(SurfaceShading) s) {
     TexturedSurface m = texturedSurface(hit, rayDirection, coneWidth);
@@ -107,7 +108,7 @@ void applyTextures(Hit hit, vec3 rayDirection, float coneWidth, INOUT(SurfaceSha
     r = fetchTextureRef(hit.material, TEXREF_EMISSIVE);
     if (hasTexture(r)) {
         s.emission *= sampleSurfaceTexture(m, r).rgb;
-        s.sampledEmission = vec3(0.0);
+        s.sampledEmission = hit.onMesh ? vec3(emissiveTextureLightLuminance(hit.material)) : vec3(0.0);
     }
     r = fetchTextureRef(hit.material, TEXREF_NORMAL);
     if (hasTexture(r)) s.normal = mappedNormal(s.normal, hit.geometricNormal, m, r);

@@ -17,6 +17,15 @@ float edgeCurvature(vec3 n0, vec3 n1, vec3 p0, vec3 p1) {
     return length(n1 - n0) / max(length(p1 - p0), 1e-12);
 }
 
+// The UV sets at a point of a slot's triangle (weights of vertices 1 and 2) seen by no ray: a light
+// sample, which reads the textures' base level.
+TexturedSurface meshPointSurface(int slot, vec2 barycentric) {
+    uvec4 v = bvhTriangleVertices(slot);
+    vec3 w = vec3(1.0 - barycentric.x - barycentric.y, barycentric.x, barycentric.y);
+    vec4 uv = w.x * vertexTexel(v.x, 1) + w.y * vertexTexel(v.y, 1) + w.z * vertexTexel(v.z, 1);
+    return TexturedSurface(uv.xy, uv.zw, vec4(1.0), vec3(0.0), 1.0, -64.0, -64.0, 0.0);
+}
+
 TexturedSurface meshSurface(int slot, int instance, vec2 barycentric, vec3 rayDirection, vec3 geometricNormal, float coneWidth) {
     uvec4 v = bvhTriangleVertices(slot);
     vec3 w = vec3(1.0 - barycentric.x - barycentric.y, barycentric.x, barycentric.y);

@@ -35,6 +35,12 @@ TextureRef fetchTextureRef(int material, int ref) {
 
 bool hasTexture(TextureRef r) { return r.bucket >= 0; }
 
+// The luminance light sampling assumes for a material's emissive-textured triangles: the factor
+// times the texture's mean (renderer/gpu_scene/packed_scene.cpp), in the emissive reference's last w.
+float emissiveTextureLightLuminance(int material) {
+    return materialTexel(material, MATERIAL_BASE_TEXELS + TEXTURE_REF_TEXELS * TEXREF_EMISSIVE + 2).w;
+}
+
 vec2 transformUv(TextureRef r, vec2 uv) {
     return vec2(r.matrix.x * uv.x + r.matrix.y * uv.y, r.matrix.z * uv.x + r.matrix.w * uv.y) + r.offset;
 }

@@ -100,7 +100,13 @@ private slots:
         QCOMPARE(lights.count(), 2);
         QCOMPARE(lights.totalPower, 2.0f);
         QCOMPARE(lights.cdf, (std::vector<float>{0.0f, 0.25f, 1.0f}));
-        QCOMPARE(lights.texels.size(), std::size_t(8));
+        QCOMPARE(lights.texels.size(), 2 * renderer::EmissiveTriangles::texelsPerTriangle);
+        QCOMPARE(lights.texels[4], glm::vec4(0.0f)); // untextured: no slot
+        // A textured one names its slot exactly, beyond 2^24 too, and whether p1 and p2 were swapped.
+        const std::uint32_t slot = (1u << 24) + 3u;
+        lights.add({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, glm::vec3(1.0f), true, renderer::EmitterTexturing{slot, true});
+        QCOMPARE(lights.texels.back(), glm::vec4(float(slot >> 16), 3.0f, 1.0f, 1.0f));
+        QCOMPARE(std::uint32_t(lights.texels.back().x) * 65536u + std::uint32_t(lights.texels.back().y), slot);
     }
 };
 
