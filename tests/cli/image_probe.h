@@ -5,6 +5,7 @@
 
 #include <QString>
 
+#include <algorithm>
 #include <map>
 #include <string>
 #include <vector>
@@ -35,4 +36,16 @@ inline ProbedImage probeImage(const QString& file) {
     p.ok = in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, p.pixels.data());
     if (!p.ok) (void)in->geterror();
     return p;
+}
+
+// EXR keeps channels sorted by name (readers put R, G, B, A first): compare them as a set.
+inline std::vector<std::string> sorted(std::vector<std::string> names) {
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+// A `glint:` string attribute of the header, or empty.
+inline QString glintAttr(const ProbedImage& image, const char* key) {
+    auto it = image.attributes.find(std::string("glint:") + key);
+    return it == image.attributes.end() ? QString() : QString::fromStdString(it->second);
 }

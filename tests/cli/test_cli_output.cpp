@@ -48,17 +48,6 @@ QJsonObject probeVideo(const QString& file) {
 
 int countOf(const QString& text, const QString& word) { return text.count(word); }
 
-// EXR keeps channels sorted by name (readers put R, G, B, A first): compare them as a set.
-std::vector<std::string> sorted(std::vector<std::string> names) {
-    std::sort(names.begin(), names.end());
-    return names;
-}
-
-QString glintAttr(const ProbedImage& image, const char* key) {
-    auto it = image.attributes.find(std::string("glint:") + key);
-    return it == image.attributes.end() ? QString() : QString::fromStdString(it->second);
-}
-
 } // namespace
 
 class TestCliOutput : public QObject {

@@ -36,16 +36,6 @@ QString sceneWithProject(const QTemporaryDir& dir, const QString& name, const QB
     return folder + "/s.gltf";
 }
 
-std::vector<std::string> sorted(std::vector<std::string> names) {
-    std::sort(names.begin(), names.end());
-    return names;
-}
-
-QString glintAttr(const ProbedImage& image, const char* key) {
-    auto it = image.attributes.find(std::string("glint:") + key);
-    return it == image.attributes.end() ? QString() : QString::fromStdString(it->second);
-}
-
 QString videoCodec(const QString& file) {
     QProcess p;
     p.start("ffprobe", {"-v", "error", "-select_streams", "v:0", "-show_entries", "stream=codec_name", "-of", "json", file});
