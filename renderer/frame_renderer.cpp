@@ -447,11 +447,12 @@ void FrameRenderer::State::readRenderPasses(FrameImages& out) {
         for (std::size_t i = 0; i < rgba.size(); i += 4) plane.insert(plane.end(), rgba.begin() + std::ptrdiff_t(i), rgba.begin() + std::ptrdiff_t(i + 3));
         return plane;
     };
-    const auto env = topDown(p.mean.mean().readRgba(0), w, h, 4);
-    const auto diffuseDirect = topDown(p.mean.mean().readRgba(1), w, h, 4);
-    const auto diffuseIndirect = topDown(p.mean.mean().readRgba(2), w, h, 4);
-    const auto glossyDirect = topDown(p.mean.mean().readRgba(3), w, h, 4);
-    const auto glossyIndirect = topDown(p.mean.mean().readRgba(4), w, h, 4);
+    const auto plane = [&](int attachment) { return topDown(p.mean.mean().readRgba(attachment), w, h, 4); };
+    const auto env = plane(0);
+    const auto diffuseDirect = plane(1);
+    const auto diffuseIndirect = plane(2);
+    const auto glossyDirect = plane(3);
+    const auto glossyIndirect = plane(4);
     auto& passes = out.lightPasses;
     passes[std::size_t(LightPass::DiffuseDirect)] = rgb(diffuseDirect);
     passes[std::size_t(LightPass::DiffuseIndirect)] = rgb(diffuseIndirect);

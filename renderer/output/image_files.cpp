@@ -195,16 +195,29 @@ ImageFormat imageFormatFor(const std::filesystem::path& file) {
     throw std::invalid_argument("unsupported image format '" + ext + "' (use .exr, .png, .jpg or .tif)");
 }
 
+namespace {
+
+// Calls `use(lowered, asGiven)` for each item of a comma-separated list (an empty item too).
+template <typename Use>
+void forEachListItem(const std::string& list, Use use) {
+    const std::string l = lower(list);
+    std::size_t start = 0;
+    while (start <= l.size()) {
+        const std::size_t comma = std::min(l.find(',', start), l.size());
+        use(l.substr(start, comma - start), list.substr(start, comma - start));
+        start = comma + 1;
+    }
+}
+
+} // namespace
+
 ExrLayers parseAovList(const std::string& list) {
     const std::string l = lower(list);
     if (l == "all") return {};
     ExrLayers none;
     none.albedo = none.normal = none.depth = none.objectId = false;
     if (l == "none") return none;
-    std::size_t start = 0;
-    while (start <= l.size()) {
-        std::size_t comma = std::min(l.find(',', start), l.size());
-        const std::string item = l.substr(start, comma - start);
+    forEachListItem(list, [&](const std::string& item, const std::string&) {
         if (item == "albedo") none.albedo = true;
         else if (item == "normal") none.normal = true;
         else if (item == "depth") none.depth = true;
@@ -212,8 +225,7 @@ ExrLayers parseAovList(const std::string& list) {
         else if (item == "variance") none.variance = true;
         else if (item == "bvh_cost") none.bvhCost = true;
         else throw std::invalid_argument("unknown AOV '" + item + "' (use all, none or a list of albedo, normal, depth, id, variance, bvh_cost)");
-        start = comma + 1;
-    }
+    });
     return none;
 }
 
@@ -235,20 +247,16 @@ RenderPasses parsePassList(const std::string& list) {
         passes.vector = true;
         return passes;
     }
-    std::size_t start = 0;
-    while (start <= l.size()) {
-        const std::size_t comma = std::min(l.find(',', start), l.size());
-        const std::string item = l.substr(start, comma - start);
+    forEachListItem(list, [&](const std::string& item, const std::string& asGiven) {
         bool known = false;
         for (int k = 0; k < lightPassCount; ++k)
             if (item == lower(lightPassName(LightPass(k)))) known = passes.light[std::size_t(k)] = true;
         if (item == "light") known = true, passes.light.fill(true);
         if (item == "vector") known = passes.vector = true;
         if (!known)
-            throw std::invalid_argument("unknown render pass '" + list.substr(start, comma - start) +
+            throw std::invalid_argument("unknown render pass '" + asGiven +
                                         "' (use all, none, light or a list of DiffDir, DiffInd, GlossDir, GlossInd, Emit, Env, Vector)");
-        start = comma + 1;
-    }
+    });
     return passes;
 }
 
