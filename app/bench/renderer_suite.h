@@ -5,11 +5,15 @@
 // Blender Cycles' curve beside it when its CSV is given (app/bench/cycles/cornell_cycles.py).
 // Writes renderer_bench.csv/.json, glint_convergence.csv, glint_reference.exr and the chart
 // convergence.png/.svg into `out`; prints the tables.
+#include "shader_suite.h"
+
 #include <string>
 
 namespace glint::bench {
 
 struct SuiteOptions {
+    std::string suite = "renderer";                        // or "shaders" (shader_suite.h)
+    ShaderSuiteOptions shaders;                            // --suite shaders: its own options
     std::string cornellBox;                                // the Cornell box glTF
     std::string bunny = "tests/data/meshes/stanford-bunny.obj";
     int width = 512, height = 512;                          // throughput image size

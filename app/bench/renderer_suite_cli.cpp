@@ -10,9 +10,9 @@ std::shared_ptr<SuiteCli> addRendererSuiteOptions(CLI::App& bench) {
     SuiteOptions& o = cli->options;
     bench.add_option("--suite", cli->suite,
                      "renderer: SCENE is the Cornell box; time it, the bunny in its room and 16 bunnies (1.1M "
-                     "triangles) at --size (default 512x512) and measure its convergence (default: off, the "
-                     "configuration bench)")
-        ->check(CLI::IsMember({"renderer"}));
+                     "triangles) at --size (default 512x512) and measure its convergence; shaders: compile, link "
+                     "and first-draw time of SCENE's path-tracer program (default: off, the configuration bench)")
+        ->check(CLI::IsMember({"renderer", "shaders"}));
     bench.add_option("--bunny", o.bunny, "Suite: the Stanford bunny OBJ (default: " + o.bunny + ")");
     bench.add_option("--runs", o.runs, "Suite: timed renders per scene, median taken (default: 5)")->check(CLI::Range(1, 1000));
     bench.add_option("--convergence-size", o.convergenceSize, "Suite: square image size of the convergence study (default: 128)")
@@ -23,6 +23,17 @@ std::shared_ptr<SuiteCli> addRendererSuiteOptions(CLI::App& bench) {
     bench.add_flag("--lambert", o.lambert,
                    "Suite: convergence study with every material pure Lambert (specular 0), to compare with "
                    "cornell_cycles.py --materials diffuse (default: off, the materials as stored)");
+    ShaderSuiteOptions& sh = o.shaders;
+    bench.add_option("--variants", sh.variants, "Suite shaders: path-tracer variants, comma-separated: " +
+                                                    shaderSuiteVariantNames() + " (default: accumulate)")
+        ->delimiter(',');
+    bench.add_option("--compiles", sh.compiles, "Suite shaders: builds of each variant, each from a fresh program cache (default: 1)")
+        ->check(CLI::Range(1, 100));
+    bench.add_option("--shader-prelude", sh.prelude,
+                     "Suite shaders: a GLSL line after the variant's defines, e.g. '#pragma optionNV(unroll none)' "
+                     "(repeatable; default: none)");
+    bench.add_option("--shader-dir", sh.shaderDir,
+                     "Suite shaders: read GLSL files from this copy of shaders/ before the embedded ones (default: none)");
     bench.add_flag("!--no-throughput", o.throughput, "Suite: skip the throughput scenes");
     bench.add_flag("!--no-convergence", o.convergence, "Suite: skip the convergence study");
     return cli;
@@ -31,7 +42,11 @@ std::shared_ptr<SuiteCli> addRendererSuiteOptions(CLI::App& bench) {
 SuiteOptions suiteOptions(const SuiteCli& cli, const CLI::App& bench, const std::string& scene, const std::string& out,
                           int width, int height, std::optional<int> spp, std::optional<int> bounces, int referenceSpp) {
     SuiteOptions o = cli.options;
+    o.suite = cli.suite;
     o.cornellBox = scene;
+    o.shaders.scene = scene;
+    o.shaders.out = out;
+    if (bounces) o.shaders.bounces = *bounces;
     o.out = out;
     if (bench.count("--size") > 0) o.width = width, o.height = height;
     if (spp) o.spp = *spp;
@@ -42,7 +57,7 @@ SuiteOptions suiteOptions(const SuiteCli& cli, const CLI::App& bench, const std:
 
 int runRendererSuiteCommand(const SuiteOptions& options) {
     try {
-        return runRendererSuite(options);
+        return options.suite == "shaders" ? runShaderSuite(options.shaders) : runRendererSuite(options);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "glint: %s: %s\n", options.cornellBox.c_str(), e.what());
         return 1;

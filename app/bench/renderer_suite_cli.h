@@ -1,5 +1,6 @@
 #pragma once
-// The options of `glint bench --suite renderer` that plain `glint bench` does not have; the shared
+// The options of `glint bench --suite renderer` and `--suite shaders` that plain `glint bench` does
+// not have; the shared
 // ones (SCENE, --size, --spp, --bounces, --out, --reference-spp) stay with the bench command.
 #include "renderer_suite.h"
 
@@ -24,7 +25,8 @@ std::shared_ptr<SuiteCli> addRendererSuiteOptions(CLI::App& bench);
 SuiteOptions suiteOptions(const SuiteCli& cli, const CLI::App& bench, const std::string& scene, const std::string& out,
                           int width, int height, std::optional<int> spp, std::optional<int> bounces, int referenceSpp);
 
-// Runs the suite; errors become the one-line message and exit code 1 (docs/CLI.md).
+// Runs the suite (renderer, or shaders: shader_suite.h); errors become the one-line message and exit
+// code 1 (docs/CLI.md).
 int runRendererSuiteCommand(const SuiteOptions& options);
 
 } // namespace glint::bench

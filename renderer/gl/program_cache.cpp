@@ -13,7 +13,10 @@ std::string keyOf(const ProgramSource& source) {
 
 const ShaderProgram& ProgramCache::get(const ProgramSource& source) {
     auto& slot = programs_[keyOf(source)];
-    if (!slot) slot = std::make_unique<ShaderProgram>(source);
+    if (!slot) {
+        slot = std::make_unique<ShaderProgram>(source, options_);
+        built_.push_back(slot.get());
+    }
     return *slot;
 }
 
