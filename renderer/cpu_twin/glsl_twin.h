@@ -5,6 +5,8 @@
 // array constructors).
 // The files land in an unnamed namespace: GLSL functions cannot be marked inline, and internal
 // linkage keeps each test's copy to itself.
+#include "renderer/cpu_twin/ggx_energy_tables.h"
+
 #include <array>
 #include <cstdint>
 #include <glm/glm.hpp>
@@ -23,12 +25,6 @@ struct sampler2D {
 
 inline vec4 texelFetch(const sampler2D& texture, ivec2 p, int /*lod*/) {
     return vec4(texture.texels[p.y * texture.width + p.x], 0.0f, 0.0f, 1.0f);
-}
-
-template <std::size_t N, typename... Values>
-constexpr std::array<float, N> floatTable(Values... values) {
-    static_assert(sizeof...(Values) == N, "FLOAT_TABLE: wrong number of values");
-    return {float(values)...};
 }
 
 #define OUT(T) T&

@@ -1,15 +1,19 @@
 #include "renderer/gpu_scene/gpu_scene.h"
 
+#include "renderer/cpu_twin/ggx_energy_tables.h"
 #include "renderer/gpu_scene/texture_refs.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 namespace glint::renderer {
 namespace {
 
 enum TextureUnit : GLuint { shapeUnit = 0, materialUnit = 1, lightUnit = 2, environmentUnit = 3, environmentCdfUnit = 4, firstMeshUnit = 5, firstTextureUnit = 13 };
+constexpr GLuint ggxEnergyBinding = 0; // uniform-buffer binding point of the block GgxEnergyTables
 
 gl::TextureBuffer vec4Buffer(const std::string& what, const std::vector<glm::vec4>& texels) {
     return gl::TextureBuffer(what, GL_RGBA32F, texels.data(), texels.size(), sizeof(glm::vec4));
@@ -37,6 +41,28 @@ void bindTexture2D(const gl::Texture& texture, GLuint unit, GLint location) {
 
 } // namespace
 
+gl::Buffer uploadGgxEnergyTables() {
+    static constexpr std::array<float, twin::ggxEnergyBlockFloats> block = twin::ggxEnergyBlock();
+    gl::Buffer buffer = gl::makeBuffer();
+    glBindBuffer(GL_UNIFORM_BUFFER, buffer.get());
+    glBufferData(GL_UNIFORM_BUFFER, GLsizeiptr(sizeof block), block.data(), GL_STATIC_DRAW);
+    glBindBuffer(GL_UNIFORM_BUFFER, 0);
+    return buffer;
+}
+
+// A block of another size than the C++ side's would read other numbers than the twin's: an error.
+void bindGgxEnergyTables(const gl::ShaderProgram& program, const gl::Buffer& tables) {
+    const GLuint block = glGetUniformBlockIndex(program.id(), "GgxEnergyTables");
+    if (block == GL_INVALID_INDEX) return; // not in this program (or optimised away)
+    GLint bytes = 0;
+    glGetActiveUniformBlockiv(program.id(), block, GL_UNIFORM_BLOCK_DATA_SIZE, &bytes);
+    if (std::size_t(bytes) != twin::ggxEnergyBlockFloats * sizeof(float))
+        throw std::logic_error("the shader's GgxEnergyTables block has " + std::to_string(bytes) + " bytes, the C++ tables " +
+                               std::to_string(twin::ggxEnergyBlockFloats * sizeof(float)));
+    glUniformBlockBinding(program.id(), block, ggxEnergyBinding);
+    glBindBufferBase(GL_UNIFORM_BUFFER, ggxEnergyBinding, tables.get());
+}
+
 GpuScene::GpuScene(const Scene& scene, const std::filesystem::path& environmentFile, MeshBvhCache& meshCache, TextureCache* textureCache)
     : GpuScene(prepareScene(scene, environmentFile, queryTextureLimits(), meshCache, {}, textureCache)) {}
 
@@ -47,6 +73,7 @@ GpuScene::GpuScene(PreparedScene prepared)
       shapes_(vec4Buffer("the shape buffer", packed_.shapes)),
       materials_(vec4Buffer("the material buffer", packed_.materials)),
       lights_(vec4Buffer("the light buffer", packed_.lights)),
+      ggxEnergyTables_(uploadGgxEnergyTables()),
       meshes_(std::move(prepared.meshes)),
       textureArrays_(prepared.textures),
       textureSlots_{{}, std::move(prepared.textures.slotOf), {}, std::move(prepared.textures.meanOf)},
@@ -109,6 +136,7 @@ void GpuScene::bind(const gl::ShaderProgram& program) const {
     shapes_.bind(shapeUnit, program.uniform("uShapes"));
     materials_.bind(materialUnit, program.uniform("uMaterials"));
     lights_.bind(lightUnit, program.uniform("uLights"));
+    bindGgxEnergyTables(program, ggxEnergyTables_);
     glUniform1i(program.uniform("uShapeCount"), packed_.shapeCount);
     glUniform1i(program.uniform("uLightCount"), packed_.lightCount);
     if (features_.emissiveShapes) glUniform1f(program.uniform("uShapeEmitterPower"), packed_.shapeEmitterPower);

@@ -15,6 +15,12 @@
 
 namespace glint::renderer {
 
+// The GGX energy tables (renderer/cpu_twin/ggx_energy_tables.h, the C++ twin's floats) as a uniform
+// buffer, and pointing `program`'s block GgxEnergyTables (shaders/bsdf/ggx_energy.glsl) at it through
+// uniform-buffer binding 0; a program without the block is left alone. GpuScene does both; probes too.
+gl::Buffer uploadGgxEnergyTables();
+void bindGgxEnergyTables(const gl::ShaderProgram& program, const gl::Buffer& tables);
+
 class GpuScene {
 public:
     // `environmentFile`: an equirectangular image, or empty for the project's uniform colour.
@@ -42,7 +48,8 @@ public:
     // Problems that did not stop the upload (missing or undecodable textures, resampled sizes).
     const Warnings& warnings() const { return warnings_; }
     // Binds the buffers to texture units 0..12, the texture arrays to 13..15 (the 16 units GL 4.1
-    // guarantees), and sets the scene uniforms of `program`.
+    // guarantees), the GGX energy tables to uniform-buffer binding 0 (the program's block
+    // GgxEnergyTables), and sets the scene uniforms of `program`.
     void bind(const gl::ShaderProgram& program) const;
 
 private:
@@ -52,6 +59,7 @@ private:
     gl::TextureBuffer shapes_;
     gl::TextureBuffer materials_;
     gl::TextureBuffer lights_;
+    gl::Buffer ggxEnergyTables_; // shaders/bsdf/ggx_energy.glsl's uniform block, std140
     GpuMeshes meshes_;
     gl::Texture environmentMap_;
     gl::Texture environmentCdf_; // renderer/cpu_twin/env_sampling.h layout

@@ -9,87 +9,33 @@
 #endif
 #include "common/math.glsl"
 
-// E(mu, roughness) of GGX with height-correlated masking and F = 1, rows roughness = (i / 31)^2,
-// columns mu = (j / 15)^2 (column 0 at mu = 0.002): dense at low roughness and grazing angles,
-// where E changes fastest. Made by VNDF sampling with 256 x 256 strata (the averages with 48
-// values of mu); test_twin_bsdf_known recomputes entries.
-FLOAT_TABLE(GGX_ALBEDO_TABLE, 512)(
-    0.9136f, 0.9705f, 0.9982f, 0.9998f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f,
-    0.9136f, 0.9705f, 0.9982f, 0.9998f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f,
-    0.9136f, 0.9705f, 0.9982f, 0.9998f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f,
-    0.9136f, 0.9705f, 0.9982f, 0.9998f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f,
-    0.9136f, 0.9705f, 0.9982f, 0.9998f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f,
-    0.9136f, 0.9705f, 0.9982f, 0.9998f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f,
-    0.8957f, 0.9487f, 0.9965f, 0.9997f, 0.9999f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f,
-    0.8987f, 0.9038f, 0.9872f, 0.9977f, 0.9996f, 0.9999f, 0.9999f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f,
-    0.9244f, 0.8921f, 0.9647f, 0.9928f, 0.9979f, 0.9995f, 0.9998f, 0.9999f, 0.9999f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f,
-    0.9475f, 0.9076f, 0.9305f, 0.9811f, 0.9942f, 0.9978f, 0.9992f, 0.9997f, 0.9999f, 0.9999f, 0.9999f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f,
-    0.9638f, 0.9293f, 0.9016f, 0.9595f, 0.9861f, 0.9946f, 0.9976f, 0.9987f, 0.9996f, 0.9998f, 0.9999f, 0.9999f, 1.0000f, 1.0000f, 1.0000f, 1.0000f,
-    0.9746f, 0.9477f, 0.8914f, 0.9311f, 0.9710f, 0.9878f, 0.9944f, 0.9972f, 0.9983f, 0.9993f, 0.9997f, 0.9998f, 0.9999f, 1.0000f, 1.0000f, 1.0000f,
-    0.9818f, 0.9614f, 0.8976f, 0.9060f, 0.9486f, 0.9758f, 0.9882f, 0.9938f, 0.9965f, 0.9979f, 0.9986f, 0.9996f, 0.9998f, 0.9999f, 1.0000f, 1.0000f,
-    0.9866f, 0.9712f, 0.9114f, 0.8927f, 0.9236f, 0.9575f, 0.9776f, 0.9879f, 0.9931f, 0.9958f, 0.9974f, 0.9982f, 0.9988f, 0.9997f, 0.9999f, 1.0000f,
-    0.9900f, 0.9781f, 0.9263f, 0.8914f, 0.9023f, 0.9343f, 0.9611f, 0.9775f, 0.9866f, 0.9916f, 0.9946f, 0.9962f, 0.9973f, 0.9978f, 0.9983f, 0.9996f,
-    0.9923f, 0.9829f, 0.9393f, 0.8980f, 0.8901f, 0.9116f, 0.9398f, 0.9616f, 0.9755f, 0.9838f, 0.9888f, 0.9918f, 0.9937f, 0.9951f, 0.9957f, 0.9960f,
-    0.9939f, 0.9863f, 0.9495f, 0.9090f, 0.8878f, 0.8950f, 0.9181f, 0.9425f, 0.9612f, 0.9738f, 0.9818f, 0.9870f, 0.9903f, 0.9925f, 0.9938f, 0.9954f,
-    0.9949f, 0.9887f, 0.9578f, 0.9198f, 0.8911f, 0.8849f, 0.8984f, 0.9204f, 0.9416f, 0.9582f, 0.9699f, 0.9779f, 0.9832f, 0.9867f, 0.9892f, 0.9911f,
-    0.9956f, 0.9902f, 0.9637f, 0.9290f, 0.8977f, 0.8813f, 0.8836f, 0.8991f, 0.9193f, 0.9382f, 0.9533f, 0.9645f, 0.9725f, 0.9780f, 0.9820f, 0.9849f,
-    0.9960f, 0.9910f, 0.9677f, 0.9361f, 0.9044f, 0.8818f, 0.8741f, 0.8806f, 0.8962f, 0.9146f, 0.9319f, 0.9461f, 0.9571f, 0.9652f, 0.9712f, 0.9756f,
-    0.9961f, 0.9914f, 0.9699f, 0.9408f, 0.9098f, 0.8837f, 0.8684f, 0.8660f, 0.8745f, 0.8893f, 0.9062f, 0.9221f, 0.9357f, 0.9466f, 0.9551f, 0.9614f,
-    0.9961f, 0.9913f, 0.9709f, 0.9432f, 0.9129f, 0.8850f, 0.8644f, 0.8542f, 0.8548f, 0.8637f, 0.8776f, 0.8932f, 0.9083f, 0.9216f, 0.9327f, 0.9416f,
-    0.9958f, 0.9910f, 0.9707f, 0.9436f, 0.9135f, 0.8843f, 0.8600f, 0.8436f, 0.8367f, 0.8385f, 0.8472f, 0.8599f, 0.8744f, 0.8888f, 0.9019f, 0.9131f,
-    0.9954f, 0.9905f, 0.9694f, 0.9419f, 0.9113f, 0.8809f, 0.8537f, 0.8324f, 0.8188f, 0.8135f, 0.8155f, 0.8233f, 0.8348f, 0.8482f, 0.8619f, 0.8748f,
-    0.9948f, 0.9897f, 0.9673f, 0.9383f, 0.9065f, 0.8744f, 0.8445f, 0.8191f, 0.7998f, 0.7876f, 0.7825f, 0.7838f, 0.7902f, 0.8002f, 0.8123f, 0.8252f,
-    0.9941f, 0.9885f, 0.9641f, 0.9330f, 0.8990f, 0.8646f, 0.8318f, 0.8025f, 0.7781f, 0.7597f, 0.7475f, 0.7417f, 0.7414f, 0.7458f, 0.7538f, 0.7642f,
-    0.9931f, 0.9871f, 0.9601f, 0.9260f, 0.8890f, 0.8515f, 0.8153f, 0.7820f, 0.7529f, 0.7286f, 0.7099f, 0.6967f, 0.6890f, 0.6863f, 0.6879f, 0.6930f,
-    0.9923f, 0.9853f, 0.9552f, 0.9175f, 0.8767f, 0.8353f, 0.7951f, 0.7576f, 0.7236f, 0.6939f, 0.6689f, 0.6487f, 0.6335f, 0.6229f, 0.6168f, 0.6145f,
-    0.9914f, 0.9833f, 0.9496f, 0.9075f, 0.8622f, 0.8162f, 0.7714f, 0.7292f, 0.6903f, 0.6553f, 0.6244f, 0.5978f, 0.5755f, 0.5574f, 0.5432f, 0.5328f,
-    0.9903f, 0.9811f, 0.9432f, 0.8962f, 0.8456f, 0.7944f, 0.7445f, 0.6972f, 0.6533f, 0.6131f, 0.5769f, 0.5445f, 0.5160f, 0.4912f, 0.4699f, 0.4519f,
-    0.9891f, 0.9787f, 0.9360f, 0.8836f, 0.8272f, 0.7703f, 0.7149f, 0.6624f, 0.6133f, 0.5682f, 0.5271f, 0.4898f, 0.4563f, 0.4263f, 0.3995f, 0.3757f,
-    0.9877f, 0.9760f, 0.9282f, 0.8697f, 0.8071f, 0.7441f, 0.6830f, 0.6251f, 0.5712f, 0.5215f, 0.4762f, 0.4350f, 0.3978f, 0.3642f, 0.3340f, 0.3069f);
-
-// The same integral with Fresnel weight (1 - wo.h)^5, so that a lobe with Schlick Fresnel reflects
-// F0 E + (1 - F0) B (Karis 2013's split); same rows and columns.
-FLOAT_TABLE(GGX_FRESNEL_ALBEDO_TABLE, 512)(
-    0.8962f, 0.9449f, 0.9116f, 0.8148f, 0.6913f, 0.5548f, 0.4182f, 0.2928f, 0.1876f, 0.1074f, 0.0529f, 0.0211f, 0.0060f, 0.0010f, 0.0000f, 0.0000f,
-    0.8962f, 0.9449f, 0.9116f, 0.8148f, 0.6913f, 0.5548f, 0.4182f, 0.2928f, 0.1876f, 0.1074f, 0.0529f, 0.0211f, 0.0060f, 0.0010f, 0.0000f, 0.0000f,
-    0.8962f, 0.9449f, 0.9116f, 0.8148f, 0.6913f, 0.5548f, 0.4182f, 0.2928f, 0.1876f, 0.1074f, 0.0529f, 0.0211f, 0.0060f, 0.0010f, 0.0000f, 0.0000f,
-    0.8962f, 0.9449f, 0.9116f, 0.8148f, 0.6913f, 0.5548f, 0.4182f, 0.2928f, 0.1876f, 0.1074f, 0.0529f, 0.0211f, 0.0060f, 0.0010f, 0.0000f, 0.0000f,
-    0.8962f, 0.9449f, 0.9116f, 0.8148f, 0.6913f, 0.5548f, 0.4182f, 0.2928f, 0.1876f, 0.1074f, 0.0529f, 0.0211f, 0.0060f, 0.0010f, 0.0000f, 0.0000f,
-    0.8962f, 0.9449f, 0.9116f, 0.8148f, 0.6913f, 0.5548f, 0.4182f, 0.2928f, 0.1876f, 0.1074f, 0.0529f, 0.0211f, 0.0060f, 0.0010f, 0.0000f, 0.0000f,
-    0.8727f, 0.9201f, 0.9090f, 0.8143f, 0.6911f, 0.5547f, 0.4181f, 0.2928f, 0.1876f, 0.1074f, 0.0529f, 0.0211f, 0.0060f, 0.0010f, 0.0000f, 0.0000f,
-    0.8565f, 0.8632f, 0.8962f, 0.8109f, 0.6901f, 0.5543f, 0.4179f, 0.2927f, 0.1876f, 0.1074f, 0.0529f, 0.0211f, 0.0061f, 0.0010f, 0.0000f, 0.0000f,
-    0.8524f, 0.8283f, 0.8660f, 0.8025f, 0.6867f, 0.5530f, 0.4174f, 0.2925f, 0.1875f, 0.1074f, 0.0530f, 0.0211f, 0.0061f, 0.0010f, 0.0000f, 0.0000f,
-    0.8369f, 0.8084f, 0.8169f, 0.7843f, 0.6797f, 0.5497f, 0.4160f, 0.2920f, 0.1873f, 0.1074f, 0.0530f, 0.0212f, 0.0061f, 0.0010f, 0.0000f, 0.0000f,
-    0.8069f, 0.7844f, 0.7618f, 0.7510f, 0.6657f, 0.5435f, 0.4131f, 0.2907f, 0.1870f, 0.1074f, 0.0531f, 0.0213f, 0.0061f, 0.0010f, 0.0000f, 0.0000f,
-    0.7651f, 0.7494f, 0.7119f, 0.7029f, 0.6411f, 0.5321f, 0.4078f, 0.2885f, 0.1861f, 0.1073f, 0.0533f, 0.0214f, 0.0062f, 0.0010f, 0.0000f, 0.0000f,
-    0.7149f, 0.7041f, 0.6658f, 0.6472f, 0.6037f, 0.5129f, 0.3986f, 0.2844f, 0.1846f, 0.1069f, 0.0533f, 0.0217f, 0.0064f, 0.0011f, 0.0001f, 0.0000f,
-    0.6587f, 0.6512f, 0.6183f, 0.5910f, 0.5559f, 0.4841f, 0.3839f, 0.2776f, 0.1820f, 0.1062f, 0.0535f, 0.0219f, 0.0065f, 0.0012f, 0.0001f, 0.0000f,
-    0.5990f, 0.5936f, 0.5670f, 0.5363f, 0.5028f, 0.4460f, 0.3622f, 0.2670f, 0.1776f, 0.1050f, 0.0535f, 0.0222f, 0.0068f, 0.0012f, 0.0001f, 0.0000f,
-    0.5379f, 0.5337f, 0.5123f, 0.4826f, 0.4490f, 0.4019f, 0.3336f, 0.2517f, 0.1708f, 0.1027f, 0.0532f, 0.0226f, 0.0071f, 0.0014f, 0.0001f, 0.0000f,
-    0.4771f, 0.4738f, 0.4562f, 0.4295f, 0.3969f, 0.3556f, 0.2999f, 0.2316f, 0.1610f, 0.0991f, 0.0526f, 0.0229f, 0.0075f, 0.0016f, 0.0001f, 0.0000f,
-    0.4184f, 0.4156f, 0.4008f, 0.3773f, 0.3471f, 0.3101f, 0.2637f, 0.2078f, 0.1482f, 0.0937f, 0.0511f, 0.0231f, 0.0079f, 0.0018f, 0.0002f, 0.0000f,
-    0.3629f, 0.3606f, 0.3478f, 0.3273f, 0.3002f, 0.2672f, 0.2279f, 0.1820f, 0.1329f, 0.0865f, 0.0488f, 0.0229f, 0.0083f, 0.0020f, 0.0003f, 0.0000f,
-    0.3117f, 0.3097f, 0.2985f, 0.2805f, 0.2566f, 0.2276f, 0.1940f, 0.1562f, 0.1162f, 0.0777f, 0.0454f, 0.0222f, 0.0085f, 0.0023f, 0.0003f, 0.0000f,
-    0.2655f, 0.2637f, 0.2537f, 0.2380f, 0.2170f, 0.1918f, 0.1632f, 0.1319f, 0.0993f, 0.0680f, 0.0411f, 0.0210f, 0.0086f, 0.0025f, 0.0004f, 0.0000f,
-    0.2246f, 0.2229f, 0.2140f, 0.2001f, 0.1819f, 0.1601f, 0.1358f, 0.1098f, 0.0833f, 0.0581f, 0.0361f, 0.0193f, 0.0083f, 0.0026f, 0.0005f, 0.0000f,
-    0.1890f, 0.1875f, 0.1795f, 0.1672f, 0.1513f, 0.1326f, 0.1120f, 0.0904f, 0.0689f, 0.0486f, 0.0310f, 0.0172f, 0.0078f, 0.0027f, 0.0006f, 0.0000f,
-    0.1586f, 0.1572f, 0.1500f, 0.1390f, 0.1251f, 0.1091f, 0.0916f, 0.0738f, 0.0563f, 0.0400f, 0.0260f, 0.0148f, 0.0071f, 0.0026f, 0.0006f, 0.0000f,
-    0.1330f, 0.1317f, 0.1252f, 0.1153f, 0.1031f, 0.0893f, 0.0746f, 0.0598f, 0.0455f, 0.0325f, 0.0213f, 0.0125f, 0.0062f, 0.0024f, 0.0006f, 0.0000f,
-    0.1117f, 0.1105f, 0.1045f, 0.0956f, 0.0849f, 0.0730f, 0.0605f, 0.0482f, 0.0365f, 0.0261f, 0.0173f, 0.0103f, 0.0053f, 0.0022f, 0.0006f, 0.0000f,
-    0.0943f, 0.0931f, 0.0875f, 0.0794f, 0.0699f, 0.0596f, 0.0490f, 0.0387f, 0.0292f, 0.0208f, 0.0138f, 0.0083f, 0.0044f, 0.0019f, 0.0006f, 0.0000f,
-    0.0801f, 0.0790f, 0.0737f, 0.0662f, 0.0577f, 0.0487f, 0.0396f, 0.0310f, 0.0232f, 0.0165f, 0.0109f, 0.0066f, 0.0036f, 0.0016f, 0.0005f, 0.0000f,
-    0.0687f, 0.0675f, 0.0625f, 0.0555f, 0.0478f, 0.0399f, 0.0321f, 0.0248f, 0.0184f, 0.0130f, 0.0086f, 0.0052f, 0.0028f, 0.0013f, 0.0004f, 0.0000f,
-    0.0595f, 0.0584f, 0.0534f, 0.0469f, 0.0399f, 0.0328f, 0.0260f, 0.0199f, 0.0146f, 0.0102f, 0.0067f, 0.0041f, 0.0022f, 0.0010f, 0.0004f, 0.0000f,
-    0.0522f, 0.0510f, 0.0461f, 0.0399f, 0.0334f, 0.0271f, 0.0212f, 0.0160f, 0.0115f, 0.0080f, 0.0052f, 0.0032f, 0.0017f, 0.0008f, 0.0003f, 0.0000f,
-    0.0463f, 0.0451f, 0.0402f, 0.0343f, 0.0282f, 0.0224f, 0.0173f, 0.0128f, 0.0091f, 0.0062f, 0.0040f, 0.0024f, 0.0013f, 0.0006f, 0.0002f, 0.0000f);
-
-// Cosine-weighted averages over mu, 2 * integral of E(mu) mu dmu and of B, per roughness (i / 31)^2.
-FLOAT_TABLE(GGX_AVERAGE_ALBEDO_TABLE, 32)(
-    1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 1.0000f, 0.9999f, 0.9998f, 0.9996f, 0.9992f, 0.9984f, 0.9970f, 0.9943f, 0.9894f,
-    0.9847f, 0.9766f, 0.9657f, 0.9513f, 0.9324f, 0.9089f, 0.8798f, 0.8447f, 0.8035f, 0.7564f, 0.7040f, 0.6473f, 0.5878f, 0.5271f, 0.4671f, 0.4092f);
-FLOAT_TABLE(GGX_AVERAGE_FRESNEL_ALBEDO_TABLE, 32)(
-    0.0476f, 0.0476f, 0.0476f, 0.0476f, 0.0476f, 0.0476f, 0.0476f, 0.0476f, 0.0475f, 0.0473f, 0.0470f, 0.0465f, 0.0457f, 0.0445f, 0.0429f, 0.0408f,
-    0.0383f, 0.0354f, 0.0321f, 0.0287f, 0.0251f, 0.0217f, 0.0184f, 0.0154f, 0.0128f, 0.0104f, 0.0085f, 0.0068f, 0.0055f, 0.0044f, 0.0035f, 0.0028f);
+// The tables, as renderer/cpu_twin/ggx_energy_tables.h holds and describes them: E(mu, roughness) of
+// GGX with height-correlated masking and F = 1 (GGX_ALBEDO_TABLE) and the same integral with Fresnel
+// weight (1 - wo.h)^5 (GGX_FRESNEL_ALBEDO_TABLE, so that a lobe with Schlick Fresnel reflects
+// F0 E + (1 - F0) B, Karis 2013's split), 32 x 16 each: rows roughness = (i / 31)^2, columns
+// mu = (j / 15)^2 (column 0 at mu = 0.002), dense at low roughness and grazing angles, where E changes
+// fastest; and their cosine-weighted averages over mu, per roughness (32 entries each).
+// C++ reads those arrays. GLSL reads the same floats from a uniform block that GpuScene uploads once,
+// four entries per vec4 (std140), not from `const` arrays: NVIDIA's compiler took most of the path
+// tracer's first link over constant tables indexed in every inlined copy of the BSDF
+// (docs/PERFORMANCE.md, "Cold shader compile on NVIDIA").
+#ifdef __cplusplus
+float ggxAlbedoAt(int i) { return GGX_ALBEDO_TABLE[i]; }
+float ggxFresnelAlbedoAt(int i) { return GGX_FRESNEL_ALBEDO_TABLE[i]; }
+float ggxAverageAlbedoAt(int i) { return GGX_AVERAGE_ALBEDO_TABLE[i]; }
+float ggxAverageFresnelAlbedoAt(int i) { return GGX_AVERAGE_FRESNEL_ALBEDO_TABLE[i]; }
+#else
+layout(std140) uniform GgxEnergyTables {
+    vec4 uGgxAlbedo[128];
+    vec4 uGgxFresnelAlbedo[128];
+    vec4 uGgxAverageAlbedo[8];
+    vec4 uGgxAverageFresnelAlbedo[8];
+};
+float ggxAlbedoAt(int i) { return uGgxAlbedo[i >> 2][i & 3]; }
+float ggxFresnelAlbedoAt(int i) { return uGgxFresnelAlbedo[i >> 2][i & 3]; }
+float ggxAverageAlbedoAt(int i) { return uGgxAverageAlbedo[i >> 2][i & 3]; }
+float ggxAverageFresnelAlbedoAt(int i) { return uGgxAverageFresnelAlbedo[i >> 2][i & 3]; }
+#endif
 
 // Where (mu, roughness) falls in the 32 x 16 tables: the lower corner's index and the weights.
 void ggxTableCoordinates(float mu, float roughness, OUT(int) index, OUT(vec2) t) {
@@ -110,15 +56,14 @@ float ggxDirectionalAlbedo(float mu, float roughness) {
     int i;
     vec2 t;
     ggxTableCoordinates(mu, roughness, i, t);
-    return bilinear(GGX_ALBEDO_TABLE[i], GGX_ALBEDO_TABLE[i + 1], GGX_ALBEDO_TABLE[i + 16], GGX_ALBEDO_TABLE[i + 17], t);
+    return bilinear(ggxAlbedoAt(i), ggxAlbedoAt(i + 1), ggxAlbedoAt(i + 16), ggxAlbedoAt(i + 17), t);
 }
 
 float ggxFresnelAlbedo(float mu, float roughness) {
     int i;
     vec2 t;
     ggxTableCoordinates(mu, roughness, i, t);
-    return bilinear(GGX_FRESNEL_ALBEDO_TABLE[i], GGX_FRESNEL_ALBEDO_TABLE[i + 1], GGX_FRESNEL_ALBEDO_TABLE[i + 16],
-                    GGX_FRESNEL_ALBEDO_TABLE[i + 17], t);
+    return bilinear(ggxFresnelAlbedoAt(i), ggxFresnelAlbedoAt(i + 1), ggxFresnelAlbedoAt(i + 16), ggxFresnelAlbedoAt(i + 17), t);
 }
 
 // Single-scattering albedo of a GGX lobe with Schlick Fresnel from f0, seen from mu.
@@ -131,8 +76,8 @@ vec3 ggxAverageSchlickAlbedo(vec3 f0, float roughness) {
     float y = sqrt(clamp(roughness, 0.0f, 1.0f)) * 31.0f;
     int i = min(int(y), 30);
     float t = y - float(i);
-    float e = mix(GGX_AVERAGE_ALBEDO_TABLE[i], GGX_AVERAGE_ALBEDO_TABLE[i + 1], t);
-    float b = mix(GGX_AVERAGE_FRESNEL_ALBEDO_TABLE[i], GGX_AVERAGE_FRESNEL_ALBEDO_TABLE[i + 1], t);
+    float e = mix(ggxAverageAlbedoAt(i), ggxAverageAlbedoAt(i + 1), t);
+    float b = mix(ggxAverageFresnelAlbedoAt(i), ggxAverageFresnelAlbedoAt(i + 1), t);
     return f0 * e + (vec3(1.0f) - f0) * b;
 }
 
