@@ -47,6 +47,17 @@ struct BloomParameters {
     friend bool operator==(const BloomParameters&, const BloomParameters&) = default;
 };
 
+// Adaptive sampling of stills (Accumulate and Reference; docs/CLI.md, "Adaptive sampling"):
+// pixels stop taking samples, by tiles of 8x8, once the standard error of every mean in the tile,
+// summed over R, G and B, is below threshold x sqrt(R + G + B of that mean). A tile decides from
+// its own pixels alone, so a region or a shard renders the pixels of the whole image. threshold 0:
+// off (every pixel takes every sample).
+struct AdaptiveSampling {
+    float threshold = 0.0f; // 0 (off) or above 0, at most 1; Cycles' default noise threshold is 0.01
+    int minSamples = 0;     // samples before the first test; 0: automatic, 16 / threshold^0.3 as Cycles
+    friend bool operator==(const AdaptiveSampling&, const AdaptiveSampling&) = default;
+};
+
 struct SvgfParameters {
     int iterations = 5;            // a-trous passes, 1..10 (the first also filters the history)
     float alpha = 0.2f;            // the current frame's minimum weight in the temporal mean, (0, 1]
@@ -72,6 +83,7 @@ struct RenderSettings {
     TaaParameters taa;
     SvgfParameters svgf;
     BloomParameters bloom;
+    AdaptiveSampling adaptive;
     friend bool operator==(const RenderSettings&, const RenderSettings&) = default;
 };
 

@@ -22,6 +22,7 @@ ProjectFile sampleProject()
     p.settings.render.tonemapper = Tonemapper::PbrNeutral;
     p.settings.render.bloom = {.strength = 0.25f, .radius = 0.1f};
     p.settings.render.shutter = 0.5f;
+    p.settings.render.adaptive = {.threshold = 0.02f, .minSamples = 48};
     p.settings.environment = {.file = "studio.hdr", .color = {0.1f, 0.2f, 0.3f}, .intensity = 1.5f, .rotationDegrees = 33.3f};
     p.settings.timeline = {.start = 0.5, .end = 10.1, .fpsNumerator = 24000, .fpsDenominator = 1001};
     p.settings.output = {.path = "frames/shot_####.exr", .aovs = "none", .passes = "light,Vector", .codec = "prores"};
@@ -156,6 +157,8 @@ private slots:
         row("exposure 1e308", R"({"glint": 1, "render": {"exposure": 1e308}})", "bad-value: key 'render.exposure' must be a number of stops from -64 to 64");
         row("clamp -1", R"({"glint": 1, "render": {"clamp": -1}})", "bad-value: key 'render.clamp' must be 0 (off) or a positive number");
         row("shutter 2", R"({"glint": 1, "render": {"shutter": 2}})", "bad-value: key 'render.shutter' must be a fraction of a frame from 0 (off) to 1");
+        row("adaptive threshold 2", R"({"glint": 1, "render": {"adaptive": {"threshold": 2}}})", "bad-value: key 'render.adaptive.threshold' must be a number from 0 (off) to 1");
+        row("adaptive minSpp -1", R"({"glint": 1, "render": {"adaptive": {"minSpp": -1}}})", "bad-value: key 'render.adaptive.minSpp' must be an integer from 0 (automatic) to 1048576");
         row("intensity -5", R"({"glint": 1, "environment": {"intensity": -5}})", "bad-value: key 'environment.intensity' must be a number of at least 0");
         row("colour -1", R"({"glint": 1, "environment": {"color": [0, -1, 0]}})", "bad-value: key 'environment.color' must be 3 numbers of at least 0");
         row("rotation 1e39", R"({"glint": 1, "environment": {"rotation": 1e39}})", "bad-value: key 'environment.rotation' must be a finite number of degrees");

@@ -214,6 +214,13 @@ void readBloom(ObjectReader& r, BloomParameters& b)
                   "a fraction of the image height above 0, at most 1");
 }
 
+void readAdaptive(ObjectReader& r, AdaptiveSampling& a)
+{
+    r.readChecked("threshold", a.threshold, [](float v) { return v >= 0.0f && v <= 1.0f; }, "a number from 0 (off) to 1");
+    r.readChecked("minSpp", a.minSamples, [](int v) { return inRange(v, 0, kMaxProjectSpp); },
+                  "an integer from 0 (automatic) to " + std::to_string(kMaxProjectSpp));
+}
+
 void readRender(ObjectReader& r, RenderSettings& s)
 {
     r.read("configuration", s.configuration);
@@ -235,6 +242,7 @@ void readRender(ObjectReader& r, RenderSettings& s)
     r.object("taa", [&](ObjectReader& nested) { readTaa(nested, s.taa); });
     r.object("svgf", [&](ObjectReader& nested) { readSvgf(nested, s.svgf); });
     r.object("bloom", [&](ObjectReader& nested) { readBloom(nested, s.bloom); });
+    r.object("adaptive", [&](ObjectReader& nested) { readAdaptive(nested, s.adaptive); });
 }
 
 void readEnvironment(ObjectReader& r, Environment& e)
@@ -319,6 +327,15 @@ json bloomJson(const BloomParameters& b)
     return j;
 }
 
+json adaptiveJson(const AdaptiveSampling& a)
+{
+    const AdaptiveSampling d;
+    json j = json::object();
+    if (a.threshold != d.threshold) j["threshold"] = jsonFloat(a.threshold);
+    if (a.minSamples != d.minSamples) j["minSpp"] = a.minSamples;
+    return j;
+}
+
 json svgfJson(const SvgfParameters& s)
 {
     const SvgfParameters d;
@@ -399,6 +416,7 @@ std::string writeProjectFileText(const ProjectFile& project)
     if (json taa = taaJson(r.taa); !taa.empty()) root["render"]["taa"] = std::move(taa);
     if (json svgf = svgfJson(r.svgf); !svgf.empty()) root["render"]["svgf"] = std::move(svgf);
     if (json bloom = bloomJson(r.bloom); !bloom.empty()) root["render"]["bloom"] = std::move(bloom);
+    if (json adaptive = adaptiveJson(r.adaptive); !adaptive.empty()) root["render"]["adaptive"] = std::move(adaptive);
     const Environment& e = s.environment;
     root["environment"] = {{"color", {jsonFloat(e.color.x), jsonFloat(e.color.y), jsonFloat(e.color.z)}},
                            {"intensity", jsonFloat(e.intensity)}, {"rotation", jsonFloat(e.rotationDegrees)}};
