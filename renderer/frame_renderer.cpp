@@ -3,6 +3,7 @@
 #include "renderer/gl/program_cache.h"
 #include "renderer/gl/render_target.h"
 #include "renderer/passes/accumulate_pass.h"
+#include "renderer/passes/adaptive_sampling.h"
 #include "renderer/passes/mean_denoise_pass.h"
 #include "renderer/passes/motion_pass.h"
 #include "renderer/passes/reconstruction.h"
@@ -62,27 +63,31 @@ private:
     GLboolean enabled_[capabilityCount] = {};
 };
 
-// GL rows run bottom-up; images run top-down. Keeps `channels` of each RGBA texel.
+// GL rows run bottom-up; images run top-down. Keeps `channels` of each texel of `stride` (RGBA: 4).
 template <class T>
-std::vector<T> topDown(const std::vector<T>& rgba, int width, int height, int channels) {
+std::vector<T> topDown(const std::vector<T>& rgba, int width, int height, int channels, std::size_t stride = 4) {
     std::vector<T> out;
     out.reserve(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * static_cast<std::size_t>(channels));
     for (int y = height - 1; y >= 0; --y)
         for (int x = 0; x < width; ++x)
             for (int c = 0; c < channels; ++c)
-                out.push_back(rgba[(static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)) * 4 + static_cast<std::size_t>(c)]);
+                out.push_back(rgba[(static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)) * stride + static_cast<std::size_t>(c)]);
     return out;
 }
 
-// Per-pixel sample variance n/(n-1) (E[x^2] - E[x]^2), clamped at 0 against rounding.
-std::vector<float> sampleVariance(const std::vector<float>& mean, const std::vector<float>& meanSquared, int samples) {
+// Per-pixel sample variance n/(n-1) (E[x^2] - E[x]^2), clamped at 0 against rounding; n is
+// `samples`, or the pixel's entry of `counts` (adaptive sampling) where that is given.
+std::vector<float> sampleVariance(const std::vector<float>& mean, const std::vector<float>& meanSquared, int samples,
+                                  const std::vector<float>& counts) {
     std::vector<float> variance;
     variance.reserve(mean.size() / 4 * 3);
-    const double correction = samples > 1 ? static_cast<double>(samples) / (samples - 1) : 0.0;
-    for (std::size_t i = 0; i < mean.size(); i += 4)
+    for (std::size_t i = 0; i < mean.size(); i += 4) {
+        const double n = counts.empty() ? double(samples) : double(counts[i / 4]);
+        const double correction = n > 1.0 ? n / (n - 1.0) : 0.0;
         for (std::size_t c = 0; c < 3; ++c)
             variance.push_back(static_cast<float>(
                 std::max(0.0, correction * (static_cast<double>(meanSquared[i + c]) - static_cast<double>(mean[i + c]) * mean[i + c]))));
+    }
     return variance;
 }
 
@@ -141,7 +146,7 @@ bool sameImageSettings(const FrameSettings& a, const FrameSettings& b) {
     return a.configuration == b.configuration && framesSpp(a) == framesSpp(b) &&
            effectiveBounces(a) == effectiveBounces(b) && a.seed == b.seed && a.view == b.view && a.clamp == b.clamp &&
            a.independentSampler == b.independentSampler && a.aoDistance == b.aoDistance && a.areaLightStrategy == b.areaLightStrategy && a.width == b.width &&
-           a.height == b.height && a.renderPasses == b.renderPasses;
+           a.height == b.height && a.renderPasses == b.renderPasses && a.adaptive == b.adaptive;
 }
 
 } // namespace
@@ -149,8 +154,10 @@ bool sameImageSettings(const FrameSettings& a, const FrameSettings& b) {
 // Size-dependent targets, re-made on a resize.
 struct FrameTargets {
     FrameTargets(gl::ProgramCache& programs, int width, int height)
-        : sample(makeGBuffer(width, height)), frameMean(programs, width, height), stillMean(programs, width, height),
+        : adaptive(programs, width, height), sample(makeGBuffer(width, height, adaptive.stopTexture())), frameMean(programs, width, height),
+          stillMean(programs, width, height, adaptive.stopTexture()),
           display(width, height, {GL_RGBA8}), reconstruction(programs, width, height) {}
+    AdaptiveSamplingPass adaptive; // before the targets its stops are attached to (sample, stillMean)
     gl::RenderTarget sample;     // one path-traced sample
     AccumulatePass frameMean;    // this frame's samples (real-time configurations with spp > 1)
     AccumulatePass stillMean;    // every sample since the picture last changed
@@ -161,8 +168,8 @@ struct FrameTargets {
 // The render passes' targets (FrameSettings::renderPasses), made only when they are asked for: the
 // RENDER_PASSES variant's sample, the passes' running mean and the motion vectors.
 struct RenderPassTargets {
-    RenderPassTargets(gl::ProgramCache& programs, int width, int height)
-        : sample(makeRenderPassesGBuffer(width, height)), mean(programs, width, height), motion(programs, width, height) {}
+    RenderPassTargets(gl::ProgramCache& programs, int width, int height, GLuint stopTexture)
+        : sample(makeRenderPassesGBuffer(width, height, stopTexture)), mean(programs, width, height), motion(programs, width, height) {}
     gl::RenderTarget sample;
     RenderPassesMean mean;
     MotionPass motion;
@@ -236,6 +243,7 @@ struct FrameRenderer::State {
     const Scene& posed() const { return *scene.posed; }
     FrameTargets& sized() {
         if (!targets || targets->sample.width() != settings.width || targets->sample.height() != settings.height) {
+            passTargets.reset(); // their sample holds the old targets' stops
             targets = std::make_unique<FrameTargets>(programs, settings.width, settings.height);
             resetAll();
         }
@@ -263,31 +271,54 @@ struct FrameRenderer::State {
     }
     RenderPassTargets& passes() {
         if (!passTargets || passTargets->sample.width() != settings.width || passTargets->sample.height() != settings.height)
-            passTargets = std::make_unique<RenderPassTargets>(programs, settings.width, settings.height);
+            passTargets = std::make_unique<RenderPassTargets>(programs, settings.width, settings.height,
+                                                              targets->adaptive.stopTexture());
         return *passTargets;
+    }
+    bool adaptive() const { return settings.adaptive.threshold > 0.0f && traitsOf(settings.configuration).accumulate; }
+    // The stops the accumulations and the path tracer respect: 0 while no pixel has stopped, so
+    // until then every program is the one a render without adaptive sampling runs.
+    GLuint adaptiveStops() const { return adaptive() && targets->adaptive.anyStopped() ? targets->adaptive.stopTexture() : 0; }
+    bool adaptiveDone() const { return adaptive() && targets->adaptive.allStopped(); }
+    void testAdaptive() {
+        FrameTargets& t = *targets;
+        const int n = t.stillMean.sampleCount();
+        const int cap = settings.maxSamples > 0 ? settings.maxSamples : std::numeric_limits<int>::max();
+        if (adaptive() && adaptiveTestDue(n, adaptiveMinSamples(settings.adaptive, cap)))
+            t.adaptive.test(t.stillMean.mean(), t.stillMean.next(), n, settings.adaptive.threshold);
+    }
+    // Sample `index` of the still mean into `target`, but for the pixels `stops` names (0: none).
+    void traceStillSample(const PathTraceSettings& pt, std::uint32_t index, const gl::RenderTarget& target, GLuint stops) {
+        CullStoppedPixels cull(stops != 0);
+        pathTrace.render(*gpu, camera, pt, index, target);
     }
     // One whole sample into the still mean, with the render passes where they are asked for.
     void traceAccumulatedSample(const PathTraceSettings& pt) {
         FrameTargets& t = *targets;
         const auto index = static_cast<std::uint32_t>(t.stillMean.sampleCount());
+        const GLuint stops = adaptiveStops();
         if (!renderingPasses()) {
-            pathTrace.render(*gpu, camera, pt, index, t.sample);
-            t.stillMean.add(t.sample);
+            traceStillSample(pt, index, t.sample, stops);
+            t.stillMean.add(t.sample, stops != 0);
+            testAdaptive();
             return;
         }
         RenderPassTargets& p = passes();
         PathTraceSettings withPasses = pt;
         withPasses.renderPasses = true;
-        pathTrace.render(*gpu, camera, withPasses, index, p.sample);
-        t.stillMean.add(p.sample); // targets 0-6: the beauty and the G-buffer, as without passes
-        p.mean.add(p.sample, t.stillMean.sampleCount());
+        traceStillSample(withPasses, index, p.sample, stops);
+        t.stillMean.add(p.sample, stops != 0); // targets 0-6: the beauty and the G-buffer, as without passes
+        p.mean.add(p.sample, t.stillMean.sampleCount(), stops);
+        testAdaptive();
     }
     void readRenderPasses(FrameImages& out);
     // The pixels the path tracer covers: the region plus the reconstruction's reach around it.
+    // With adaptive sampling, grown to its whole tiles, whose stops depend on all their pixels.
     PixelRect tracedPixels() const {
         const ConfigurationTraits traits = traitsOf(settings.configuration);
         const int margin = reconstructionReach(traits, svgfSettingsOf(document().settings.render.svgf).iterations);
-        return grown(regionPixels(settings.region, settings.width, settings.height), margin, settings.width, settings.height);
+        const PixelRect traced = grown(regionPixels(settings.region, settings.width, settings.height), margin, settings.width, settings.height);
+        return adaptive() ? alignedToTiles(traced, settings.width, settings.height) : traced;
     }
     void renderAccumulated();
     bool wantsPreview() const;
@@ -339,6 +370,7 @@ void FrameRenderer::State::renderAccumulated() {
     FrameTargets& t = *targets;
     if (pictureChanged) {
         t.stillMean.reset();
+        t.adaptive.reset(tracedPixels());
         nextRow = 0;
         previewShown = false;
         denoisedSamples = 0;
@@ -348,10 +380,10 @@ void FrameRenderer::State::renderAccumulated() {
     if (wantsPreview()) {
         renderPreview();
     } else if (settings.rowsPerFrame > 0) {
-        if (t.stillMean.sampleCount() < limit) traceRows();
+        if (t.stillMean.sampleCount() < limit && !adaptiveDone()) traceRows();
     } else {
         const PathTraceSettings pt = pathTraceSettings();
-        for (int i = 0; i < framesSpp(settings) && t.stillMean.sampleCount() < limit; ++i) {
+        for (int i = 0; i < framesSpp(settings) && t.stillMean.sampleCount() < limit && !adaptiveDone(); ++i) {
             traceAccumulatedSample(pt);
             lastWork.rows += tracedPixels().height;
         }
@@ -390,13 +422,15 @@ void FrameRenderer::State::traceRows() {
     const GLboolean scissored = glIsEnabled(GL_SCISSOR_TEST);
     glEnable(GL_SCISSOR_TEST);
     glScissor(traced.x, nextRow, traced.width, rows);
-    pathTrace.render(*gpu, camera, pathTraceSettings(), static_cast<std::uint32_t>(t.stillMean.sampleCount()), t.sample);
+    const GLuint stops = adaptiveStops();
+    traceStillSample(pathTraceSettings(), static_cast<std::uint32_t>(t.stillMean.sampleCount()), t.sample, stops);
     glScissor(scissor[0], scissor[1], scissor[2], scissor[3]);
     if (!scissored) glDisable(GL_SCISSOR_TEST);
     nextRow += rows;
     lastWork.rows = rows;
     if (nextRow < end) return;
-    t.stillMean.add(t.sample);
+    t.stillMean.add(t.sample, stops != 0);
+    testAdaptive();
     nextRow = 0;
 }
 
@@ -718,8 +752,11 @@ FrameImages FrameRenderer::readImages() {
     out.radiance = topDown((s.settings.bloomLinear ? bloomed : shown).readRgba(0), out.width, out.height, 4);
     if (traitsOf(s.settings.configuration).accumulate) {
         readGBuffer(t.stillMean.mean(), out);
+        const int samples = t.stillMean.sampleCount();
+        out.sampleCounts = s.adaptive() ? topDown(t.adaptive.sampleCounts(samples), out.width, out.height, 1, 1)
+                                        : std::vector<float>(std::size_t(out.width) * std::size_t(out.height), float(samples));
         out.variance = sampleVariance(out.radiance, topDown(t.stillMean.mean().readRgba(radianceSquaredAttachment), out.width, out.height, 4),
-                                      t.stillMean.sampleCount());
+                                      samples, out.sampleCounts);
         if (s.renderingPasses() && s.passTargets) s.readRenderPasses(out);
     } else {
         readGBuffer(framesSpp(s.settings) > 1 ? t.frameMean.mean() : t.sample, out);
@@ -732,6 +769,16 @@ int FrameRenderer::sampleCount() const {
     const State& s = *state_;
     if (!s.targets || s.pictureChanged || !s.result) return 0;
     return s.targets->stillMean.sampleCount();
+}
+
+bool FrameRenderer::converged() const {
+    const State& s = *state_;
+    return s.targets && !s.pictureChanged && s.adaptiveDone();
+}
+
+int FrameRenderer::stoppedPixels() const {
+    const State& s = *state_;
+    return s.targets && !s.pictureChanged && s.adaptive() ? s.targets->adaptive.stoppedPixels() : 0;
 }
 
 ImageStage FrameRenderer::imageStage() const {

@@ -73,6 +73,10 @@ struct FrameSettings {
     // The light passes sum to the raw mean (what readImages() gives without denoise and
     // bloomLinear); on, diffuseAlbedo and specularAlbedo read back hold passes, not albedos.
     bool renderPasses = false;
+    // Adaptive sampling (Accumulate/Reference; renderer/passes/adaptive_sampling.h): pixels whose
+    // mean has converged stop taking samples. threshold 0: off. minSamples 0: automatic, clamped to
+    // maxSamples (the offline renderer passes its spp resolved: frameSettingsFor).
+    AdaptiveSampling adaptive;
     friend bool operator==(const FrameSettings&, const FrameSettings&) = default;
 };
 
@@ -110,6 +114,8 @@ struct FrameImages {
     std::vector<float> diffuseAlbedo;  // RGB, what the denoiser demodulates by (with specularAlbedo)
     std::vector<float> specularAlbedo; // RGBA: A = roughness
     std::vector<float> variance;  // RGB sample variance of one sample (Accumulate/Reference; else empty)
+    std::vector<float> sampleCounts; // samples in each pixel's mean (Accumulate/Reference; else empty):
+                                     // fewer where adaptive sampling stopped the pixel
     std::vector<float> motion;    // RG: previous minus current position in pixels (real-time configs)
     std::vector<std::uint8_t> tonemapped; // RGBA8, sRGB, as drawTo shows it
     std::vector<float> bvhCost;   // the optional bvh_cost AOV (renderer/bvh_cost_render.h); else empty
@@ -169,6 +175,10 @@ public:
     // Samples in the running mean behind the current frame; 0 as soon as the picture changed (scene,
     // camera, size, settings, time), before the next renderFrame() renders it.
     int sampleCount() const;
+    // Adaptive sampling stopped every pixel it traces: more frames add nothing.
+    bool converged() const;
+    // Pixels adaptive sampling has stopped in the current picture (0 without it).
+    int stoppedPixels() const;
     ImageStage imageStage() const;
     // Rows of the sample in progress already traced, of rowsToTrace() (banded Accumulate).
     int rowsTraced() const;

@@ -1,6 +1,7 @@
 #include "renderer/offline_render.h"
 
 #include "renderer/gl/headless_context.h"
+#include "renderer/passes/adaptive_sampling.h"
 #include "scene/anim/scene_at_time.h"
 #include "scene/io/project/project_file.h"
 
@@ -48,6 +49,8 @@ void validate(const RenderRequest& request) {
         r && (r->x < 0 || r->y < 0 || r->width < 1 || r->height < 1 || r->x + r->width > request.width ||
               r->y + r->height > request.height))
         throw std::runtime_error("the render region must be a non-empty part of the image");
+    if (!(request.adaptive.threshold >= 0.0f && request.adaptive.threshold <= 1.0f) || request.adaptive.minSamples < 0)
+        throw std::runtime_error("the adaptive sampling threshold must be 0 (off) to 1 and its minimum samples 0 or more");
     if (request.renderPasses && !traitsOf(request.configuration).accumulate)
         throw std::runtime_error("render passes need the accumulate or reference configuration");
 }
@@ -77,6 +80,8 @@ FrameSettings frameSettingsFor(const RenderRequest& request, int sppPerFrame) {
     s.bloom = request.bloom;
     s.bloomLinear = request.bloomLinear;
     s.renderPasses = request.renderPasses;
+    s.adaptive = request.adaptive;
+    s.adaptive.minSamples = adaptiveMinSamples(request.adaptive, request.spp);
     s.independentSampler = request.independentSampler;
     s.aoDistance = request.aoDistance;
     s.areaLightStrategy = request.areaLightStrategy;
@@ -117,17 +122,19 @@ RenderOutput OfflineRenderer::render(const Scene& scene, const RenderRequest& re
     const auto renderStart = Clock::now();
     const int count = accumulate ? request.spp : request.frames;
     const bool blurred = accumulate && request.shutterSeconds > 0.0 && sceneAnimates(scene);
-    for (int i = 0; i < count; ++i) {
+    for (int i = 0; i < count && !frames.converged(); ++i) {
         if (blurred) frames.setShutterTime(shutterInstant(request, i));
         frames.renderFrame();
         if (request.progress) {
             glFinish();
-            request.progress(i + 1, count);
+            // Every pixel converged: the samples left are not taken, and the render is done.
+            request.progress(frames.converged() ? count : i + 1, count);
         }
     }
     glFinish();
     out.timings.renderMs = millisecondsSince(renderStart);
-    out.timings.msPerSample = out.timings.renderMs / (accumulate ? request.spp : request.spp * request.frames);
+    out.timings.samplesTaken = accumulate ? frames.sampleCount() : request.spp * request.frames;
+    out.timings.msPerSample = out.timings.renderMs / std::max(1, out.timings.samplesTaken);
     static_cast<FrameImages&>(out) = frames.readImages();
     return out;
 }

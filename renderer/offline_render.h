@@ -51,13 +51,17 @@ struct RenderRequest {
     // `time` (one frame at the project's fps); 0: no motion.
     bool renderPasses = false;
     double motionSeconds = 0.0;
+    // Accumulate and Reference: pixels stop once converged (scene/core/settings.h); with every pixel
+    // stopped the render ends before `spp`. threshold 0: off.
+    AdaptiveSampling adaptive;
     std::function<void(int done, int total)> progress; // after each sample (real-time: frame); may be empty
 };
 
 struct RenderTimings {
     double setupMs = 0.0;      // scene upload and shader compilation
     double renderMs = 0.0;     // all samples, finished on the GPU
-    double msPerSample = 0.0;
+    double msPerSample = 0.0;  // per sample taken (adaptive sampling may end before spp)
+    int samplesTaken = 0;      // Accumulate/Reference: samples in the mean of the pixels that never stopped
 };
 
 // FrameImages plus where and how long. variance: unbiased sample variance of one sample's radiance

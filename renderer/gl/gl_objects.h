@@ -42,6 +42,7 @@ inline void deleteFramebuffer(GLuint n) { glDeleteFramebuffers(1, &n); }
 inline void deleteVertexArray(GLuint n) { glDeleteVertexArrays(1, &n); }
 inline void deleteProgram(GLuint n) { glDeleteProgram(n); }
 inline void deleteShader(GLuint n) { glDeleteShader(n); }
+inline void deleteQuery(GLuint n) { glDeleteQueries(1, &n); }
 } // namespace detail
 
 using Texture = GlName<detail::deleteTexture>;
@@ -50,10 +51,12 @@ using Framebuffer = GlName<detail::deleteFramebuffer>;
 using VertexArray = GlName<detail::deleteVertexArray>;
 using Program = GlName<detail::deleteProgram>;
 using Shader = GlName<detail::deleteShader>;
+using Query = GlName<detail::deleteQuery>;
 
 inline Texture makeTexture() { GLuint n = 0; glGenTextures(1, &n); return Texture(n); }
 inline Buffer makeBuffer() { GLuint n = 0; glGenBuffers(1, &n); return Buffer(n); }
 inline Framebuffer makeFramebuffer() { GLuint n = 0; glGenFramebuffers(1, &n); return Framebuffer(n); }
+inline Query makeQuery() { GLuint n = 0; glGenQueries(1, &n); return Query(n); }
 inline VertexArray makeVertexArray() { GLuint n = 0; glGenVertexArrays(1, &n); return VertexArray(n); }
 
 } // namespace glint::gl

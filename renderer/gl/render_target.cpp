@@ -27,7 +27,7 @@ std::vector<T> readPixels(GLuint fbo, int attachment, int width, int height, GLe
 
 } // namespace
 
-RenderTarget::RenderTarget(int width, int height, const std::vector<GLenum>& formats)
+RenderTarget::RenderTarget(int width, int height, const std::vector<GLenum>& formats, GLuint depthTexture)
     : width_(width), height_(height), fbo_(makeFramebuffer()) {
     if (width <= 0 || height <= 0) throw std::runtime_error("render target size must be positive");
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
@@ -42,6 +42,7 @@ RenderTarget::RenderTarget(int width, int height, const std::vector<GLenum>& for
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i), GL_TEXTURE_2D, texture.get(), 0);
         textures_.push_back(std::move(texture));
     }
+    if (depthTexture) glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depthTexture, 0);
     glBindTexture(GL_TEXTURE_2D, 0);
     const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -8,8 +8,9 @@ namespace glint::gl {
 
 class RenderTarget {
 public:
-    // One texture per entry of `formats` (GL_RGBA32F, GL_R32F, ...), attached in order.
-    RenderTarget(int width, int height, const std::vector<GLenum>& formats);
+    // One texture per entry of `formats` (GL_RGBA32F, GL_R32F, ...), attached in order, and
+    // `depthTexture` (a depth texture of the same size that the caller owns and keeps alive), if any.
+    RenderTarget(int width, int height, const std::vector<GLenum>& formats, GLuint depthTexture = 0);
     void bindForDrawing() const; // binds the FBO, all draw buffers and the viewport
     void bindTexture(int attachment, GLuint unit, GLint location) const;
     void clear() const; // every attachment to 0

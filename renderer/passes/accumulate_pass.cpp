@@ -1,18 +1,20 @@
 #include "renderer/passes/accumulate_pass.h"
 
+#include "renderer/passes/adaptive_sampling.h"
 #include "renderer/passes/path_trace_pass.h"
 
 namespace glint::renderer {
 
-AccumulatePass::AccumulatePass(gl::ProgramCache& programs, int width, int height)
-    : programs_(programs), targets_{makeAccumulationBuffer(width, height), makeAccumulationBuffer(width, height)} {}
+AccumulatePass::AccumulatePass(gl::ProgramCache& programs, int width, int height, GLuint stopTexture)
+    : programs_(programs),
+      targets_{makeAccumulationBuffer(width, height, stopTexture), makeAccumulationBuffer(width, height, stopTexture)} {}
 
-gl::RenderTarget makeAccumulationBuffer(int width, int height) {
+gl::RenderTarget makeAccumulationBuffer(int width, int height, GLuint stopTexture) {
     static_assert(radianceSquaredAttachment == gBufferAttachmentCount);
-    return gl::RenderTarget(width, height, std::vector<GLenum>(gBufferAttachmentCount + 1, GL_RGBA32F));
+    return gl::RenderTarget(width, height, std::vector<GLenum>(gBufferAttachmentCount + 1, GL_RGBA32F), stopTexture);
 }
 
-void AccumulatePass::add(const gl::RenderTarget& sample) {
+void AccumulatePass::add(const gl::RenderTarget& sample, bool cullStopped) {
     const gl::ShaderProgram& program = programs_.get({"fullscreen.vert.glsl", "passes/accumulate.frag.glsl", {},
                                                       {"outRadiance", "outAlbedo", "outNormalDepth", "outObjectId",
                                                        "outDiffuseAlbedo", "outSpecularAlbedo", "outSpecularRadiance",
@@ -32,6 +34,7 @@ void AccumulatePass::add(const gl::RenderTarget& sample) {
     }
     targets_[previous].bindTexture(radianceSquaredAttachment, 2 * gBufferAttachmentCount, program.uniform("uPreviousRadianceSquared"));
     targets_[next].bindForDrawing();
+    const CullStoppedPixels cull(cullStopped);
     triangle_.draw();
     current_ = next;
 }

@@ -11,17 +11,22 @@ namespace glint::renderer {
 
 inline constexpr int radianceSquaredAttachment = 7; // gBufferAttachmentCount
 
-gl::RenderTarget makeAccumulationBuffer(int width, int height);
+// `stopTexture`: adaptive sampling's stops (adaptive_sampling.h), attached as the depth buffer; 0: none.
+gl::RenderTarget makeAccumulationBuffer(int width, int height, GLuint stopTexture = 0);
 
 class AccumulatePass {
 public:
-    AccumulatePass(gl::ProgramCache& programs, int width, int height);
-    void add(const gl::RenderTarget& sample);
+    // `stopTexture`: as makeAccumulationBuffer's, for add(sample, true).
+    AccumulatePass(gl::ProgramCache& programs, int width, int height, GLuint stopTexture = 0);
+    // cullStopped: the pixels adaptive sampling stopped keep their mean and cost nothing (their
+    // mean is in both targets: AdaptiveSamplingPass::test copies it into next() as they stop).
+    void add(const gl::RenderTarget& sample, bool cullStopped = false);
     void reset() { count_ = 0; }
     // Zeroes both targets, so pixels a scissor keeps out hold no earlier render (render regions).
     void clear() { targets_[0].clear(); targets_[1].clear(); }
     int sampleCount() const { return count_; }
     const gl::RenderTarget& mean() const { return targets_[current_]; }
+    const gl::RenderTarget& next() const { return targets_[1 - current_]; } // what the next add() writes
 
 private:
     gl::ProgramCache& programs_;

@@ -4,7 +4,7 @@ namespace glint::renderer {
 
 void runStage(gl::ProgramCache& programs, const gl::FullscreenTriangle& triangle, const Stage& stage,
               const gl::RenderTarget& output) {
-    const gl::ShaderProgram& program = programs.get({"fullscreen.vert.glsl", stage.fragmentFile, {}, stage.outputs});
+    const gl::ShaderProgram& program = programs.get({"fullscreen.vert.glsl", stage.fragmentFile, stage.defines, stage.outputs});
     program.use();
     GLuint unit = 0;
     for (const StageInput& input : stage.inputs)

@@ -22,6 +22,7 @@ struct Stage {
     std::vector<std::string> outputs;         // fragment outputs, bound to attachments in order
     std::vector<StageInput> inputs;           // bound to texture units 0, 1, ... in order
     std::function<void(const gl::ShaderProgram&)> uniforms; // may be empty
+    gl::Defines defines = {};                 // the fragment shader's variant
 };
 
 void runStage(gl::ProgramCache& programs, const gl::FullscreenTriangle& triangle, const Stage& stage,

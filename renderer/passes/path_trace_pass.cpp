@@ -26,12 +26,12 @@ void setIntegratorUniforms(const gl::ShaderProgram& program, const PathTraceSett
 
 } // namespace
 
-gl::RenderTarget makeGBuffer(int width, int height) {
-    return gl::RenderTarget(width, height, std::vector<GLenum>(gBufferAttachmentCount, GL_RGBA32F));
+gl::RenderTarget makeGBuffer(int width, int height, GLuint stopTexture) {
+    return gl::RenderTarget(width, height, std::vector<GLenum>(gBufferAttachmentCount, GL_RGBA32F), stopTexture);
 }
 
-gl::RenderTarget makeRenderPassesGBuffer(int width, int height) {
-    return gl::RenderTarget(width, height, std::vector<GLenum>(renderPassesAttachmentCount, GL_RGBA32F));
+gl::RenderTarget makeRenderPassesGBuffer(int width, int height, GLuint stopTexture) {
+    return gl::RenderTarget(width, height, std::vector<GLenum>(renderPassesAttachmentCount, GL_RGBA32F), stopTexture);
 }
 
 void PathTracePass::render(const GpuScene& scene, const CameraSetup& camera, const PathTraceSettings& settings,

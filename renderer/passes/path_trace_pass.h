@@ -59,9 +59,10 @@ enum GBufferAttachment {
 // Emit's r, g, b), and one more, GlossInd.
 inline constexpr int glossyIndirectAttachment = 7;
 inline constexpr int renderPassesAttachmentCount = 8;
-gl::RenderTarget makeRenderPassesGBuffer(int width, int height);
+// `stopTexture`: adaptive sampling's stops (adaptive_sampling.h), attached as the depth buffer; 0: none.
+gl::RenderTarget makeRenderPassesGBuffer(int width, int height, GLuint stopTexture = 0);
 
-gl::RenderTarget makeGBuffer(int width, int height);
+gl::RenderTarget makeGBuffer(int width, int height, GLuint stopTexture = 0);
 
 class PathTracePass {
 public:

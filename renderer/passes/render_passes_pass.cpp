@@ -1,5 +1,6 @@
 #include "renderer/passes/render_passes_pass.h"
 
+#include "renderer/passes/adaptive_sampling.h"
 #include "renderer/passes/fullscreen_stage.h"
 #include "renderer/passes/path_trace_pass.h"
 
@@ -16,7 +17,7 @@ gl::RenderTarget makeMean(int width, int height) {
 RenderPassesMean::RenderPassesMean(gl::ProgramCache& programs, int width, int height)
     : programs_(programs), targets_{makeMean(width, height), makeMean(width, height)} {}
 
-void RenderPassesMean::add(const gl::RenderTarget& sample, int count) {
+void RenderPassesMean::add(const gl::RenderTarget& sample, int count, GLuint stopTexture) {
     static_assert(objectIdAttachment + renderPassesMeanTargets == renderPassesAttachmentCount);
     const gl::RenderTarget& previous = targets_[current_];
     const int next = 1 - current_;
@@ -32,7 +33,11 @@ void RenderPassesMean::add(const gl::RenderTarget& sample, int count) {
                  {"uSample2", sample, specularAlbedoAttachment},
                  {"uSample3", sample, specularRadianceAttachment},
                  {"uSample4", sample, glossyIndirectAttachment}},
-                [count](const gl::ShaderProgram& p) { glUniform1f(p.uniform("uSampleCount"), static_cast<float>(count)); }};
+                [count, stopTexture](const gl::ShaderProgram& p) {
+                    glUniform1f(p.uniform("uSampleCount"), static_cast<float>(count));
+                    if (stopTexture) bindStopTexture(stopTexture, 10, p); // after the ten inputs' units
+                }};
+    if (stopTexture) stage.defines["ADAPTIVE_STOPS"] = "";
     runStage(programs_, triangle_, stage, targets_[next]);
     current_ = next;
 }

@@ -16,8 +16,9 @@ inline constexpr int renderPassesMeanTargets = 5;
 class RenderPassesMean {
 public:
     RenderPassesMean(gl::ProgramCache& programs, int width, int height);
-    // `sample`: a makeRenderPassesGBuffer target; `count`: the beauty's sample count, this one included.
-    void add(const gl::RenderTarget& sample, int count);
+    // `sample`: a makeRenderPassesGBuffer target; `count`: the beauty's sample count, this one
+    // included; `stopTexture`: as AccumulatePass::add's.
+    void add(const gl::RenderTarget& sample, int count, GLuint stopTexture = 0);
     const gl::RenderTarget& mean() const { return targets_[current_]; }
 
 private:
