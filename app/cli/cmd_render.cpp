@@ -103,22 +103,30 @@ bool applyProjectOutput(RenderOptions& o, const Scene& scene) {
     return true;
 }
 
-// Render passes come from the running mean: with a real-time configuration they are a usage error,
-// named with where the passes were asked for. (8-bit formats ignore them, as they ignore --aovs.)
-bool passesFitConfiguration(const RenderOptions& o, const Scene& scene) {
-    if (!renderer::parsePassList(o.passes).any() || renderer::imageFormatFor(o.out) != renderer::ImageFormat::Exr) return true;
+// Render passes and the samples AOV come from the running mean: with a real-time configuration
+// they are a usage error, named with where they were asked for. (8-bit formats ignore them, as
+// they ignore --aovs.)
+bool meanOutputsFitConfiguration(const RenderOptions& o, const Scene& scene) {
+    if (renderer::imageFormatFor(o.out) != renderer::ImageFormat::Exr) return true;
+    const bool passes = renderer::parsePassList(o.passes).any();
+    if (!passes && !renderer::parseAovList(o.aovs).samples) return true;
     const std::string name = o.common.config.value_or(scene.settings.render.configuration);
     const auto configuration = renderer::parseConfiguration(name);
     if (!configuration || traitsOf(*configuration).accumulate) return true; // an unknown one is reported by the planner
-    printError(std::string(o.passesGiven ? "--passes" : projectPathFor(o.scene).string() + ": key 'output.passes'") +
-               ": render passes need the accumulate or reference configuration, not '" + name + "'");
+    const std::string project = projectPathFor(o.scene).string();
+    if (passes)
+        printError(std::string(o.passesGiven ? "--passes" : project + ": key 'output.passes'") +
+                   ": render passes need the accumulate or reference configuration, not '" + name + "'");
+    else
+        printError(std::string(o.aovsGiven ? "--aovs" : project + ": key 'output.aovs'") +
+                   ": the samples AOV needs the accumulate or reference configuration, not '" + name + "'");
     return false;
 }
 
 int runRender(RenderOptions o) {
     LoadResult loaded = openSceneFile(o.scene);
     if (!applyProjectOutput(o, loaded.scene)) return kUsage;
-    if (!passesFitConfiguration(o, loaded.scene)) return kUsage;
+    if (!meanOutputsFitConfiguration(o, loaded.scene)) return kUsage;
     completeForRender(loaded, o.scene, o.common.camera.value_or(""), o.common.env.has_value(), outputSize(o.common, loaded.scene));
     if (!regionFits(o, loaded.scene)) return kUsage;
     if (reportWarnings(loaded.warnings, o.common.strict)) return kFailure;

@@ -63,6 +63,14 @@ void addCommonRenderOptions(CLI::App& cmd, CommonRenderOptions& o) {
     cmd.add_option("--shutter", o.shutter, "Motion blur: the shutter's open time in frames, 0 (off) to 1, centred on the "
                                            "frame; Accumulate and Reference (default: the project's, 0)")
         ->check(finiteIn(0.0, 1.0));
+    cmd.add_option("--adaptive-threshold", o.adaptiveThreshold,
+                   "Adaptive sampling: a pixel stops once its noise is below this, 0 (off) to 1; Cycles' default is "
+                   "0.01; Accumulate and Reference (default: the project's, 0)")
+        ->check(finiteIn(0.0, 1.0));
+    cmd.add_option("--adaptive-min-spp", o.adaptiveMinSpp,
+                   "Adaptive sampling: samples every pixel takes before its first test, 0 = automatic "
+                   "(16 / threshold^0.3) (default: the project's, 0)")
+        ->check(CLI::Range(0, 1 << 20));
     cmd.add_flag("--bloom-exr", o.bloomLinear, "Bloom the EXR's radiance too (default: off, EXR stays unbloomed)");
     cmd.add_flag("--require-gpu", o.requireGpu, "Fail instead of falling back to software rendering (default: off)");
     cmd.add_flag("--strict", o.strict, "Treat warnings as failures (default: off)");

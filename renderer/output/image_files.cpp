@@ -50,6 +50,7 @@ void appendPixel(Planes& p, const RenderOutput& img, const ExrLayers& layers, st
     if (layers.objectId) append(img.objectId, 1);
     if (layers.variance) append(img.variance, 3);
     if (layers.bvhCost) append(img.bvhCost, 1);
+    if (layers.samples) append(img.sampleCounts, 1);
     for (int k = 0; k < lightPassCount; ++k)
         if (layers.passes.light[std::size_t(k)]) append(img.lightPasses[std::size_t(k)], 3);
     if (layers.passes.vector) append(img.vectors, 2);
@@ -65,6 +66,7 @@ Planes exrPlanes(const RenderOutput& img, const ExrLayers& layers) {
     if (layers.objectId) p.names.push_back("id");
     if (layers.variance) p.names.insert(p.names.end(), {"variance.R", "variance.G", "variance.B"});
     if (layers.bvhCost) p.names.push_back("bvh_cost");
+    if (layers.samples) p.names.push_back("samples");
     for (int k = 0; k < lightPassCount; ++k)
         if (layers.passes.light[std::size_t(k)]) {
             const std::string layer = lightPassName(LightPass(k));
@@ -74,6 +76,8 @@ Planes exrPlanes(const RenderOutput& img, const ExrLayers& layers) {
     const std::size_t count = std::size_t(img.width) * std::size_t(img.height);
     if (layers.bvhCost && img.bvhCost.size() != count)
         throw std::invalid_argument("the bvh_cost AOV is available for stills and per-frame renders only");
+    if (layers.samples && img.sampleCounts.size() != count)
+        throw std::invalid_argument("the samples AOV is available for the accumulate and reference configurations only");
     if (layers.passes.any() && (img.vectors.size() != count * 2 || img.lightPasses[0].size() != count * 3))
         throw std::invalid_argument("render passes are available for the accumulate and reference configurations only");
     const ImageWindow window = dataWindowOf(img);
@@ -224,7 +228,8 @@ ExrLayers parseAovList(const std::string& list) {
         else if (item == "id") none.objectId = true;
         else if (item == "variance") none.variance = true;
         else if (item == "bvh_cost") none.bvhCost = true;
-        else throw std::invalid_argument("unknown AOV '" + item + "' (use all, none or a list of albedo, normal, depth, id, variance, bvh_cost)");
+        else if (item == "samples") none.samples = true;
+        else throw std::invalid_argument("unknown AOV '" + item + "' (use all, none or a list of albedo, normal, depth, id, variance, bvh_cost, samples)");
     });
     return none;
 }

@@ -45,11 +45,12 @@ struct ExrLayers {
     bool objectId = true;
     bool variance = false; // optional: only when listed
     bool bvhCost = false;  // optional debug AOV `bvh_cost` (one float channel): only when listed
+    bool samples = false;  // optional AOV `samples`: each pixel's sample count (adaptive sampling), when listed
     RenderPasses passes;   // --passes: none unless asked for
 };
 
 // Parses --aovs: "all" (every layer but the optional variance), "none" or a comma list of albedo,
-// normal, depth, id, variance, bvh_cost.
+// normal, depth, id, variance, bvh_cost, samples.
 ExrLayers parseAovList(const std::string& list);
 
 using ImageMetadata = std::map<std::string, std::string>; // written as string attributes "glint:<key>"

@@ -2,6 +2,7 @@
 
 #include "renderer/configuration.h"
 #include "renderer/gpu_scene/camera_setup.h"
+#include "renderer/passes/adaptive_sampling.h"
 #include "scene/core/tonemapper_names.h"
 
 #include <charconv>
@@ -53,6 +54,13 @@ void addReconstruction(ImageMetadata& metadata, const RenderSettings& project, C
     }
 }
 
+// "0.01" for 0.01f, where formatNumber(double) would spell out the float's binary value.
+std::string shortestFloat(float value) {
+    char buf[32];
+    auto [end, ec] = std::to_chars(buf, buf + sizeof buf, value);
+    return ec == std::errc() ? std::string(buf, end) : std::string("nan");
+}
+
 } // namespace
 
 void planRenderPasses(RenderPlan& plan, const RenderPasses& passes) {
@@ -101,6 +109,8 @@ RenderPlan planRender(const Scene& scene, const std::filesystem::path& sceneFile
                                     : 1.0 / 24.0;
     r.shutterSeconds = double(o.shutter.value_or(project.shutter)) * frameSeconds;
     r.motionSeconds = frameSeconds;
+    r.adaptive.threshold = o.adaptiveThreshold.value_or(project.adaptive.threshold);
+    r.adaptive.minSamples = o.adaptiveMinSpp.value_or(project.adaptive.minSamples);
 
     const Tonemapper tonemapper = r.tonemapper.value_or(project.tonemapper);
     // The camera's own exposure is part of what the PNG shows and what `glint encode` applies to EXRs.
@@ -122,6 +132,10 @@ RenderPlan planRender(const Scene& scene, const std::filesystem::path& sceneFile
         if (r.bloomLinear) plan.metadata["bloomLinear"] = "1";
     }
     if (r.shutterSeconds > 0.0) plan.metadata["shutterSeconds"] = formatNumber(r.shutterSeconds); // as bloom: only when on
+    if (r.adaptive.threshold > 0.0f && traitsOf(r.configuration).accumulate) { // as bloom; the minimum as resolved
+        plan.metadata["adaptiveThreshold"] = shortestFloat(r.adaptive.threshold);
+        plan.metadata["adaptiveMinSpp"] = std::to_string(adaptiveMinSamples(r.adaptive, r.spp));
+    }
     addReconstruction(plan.metadata, project, r.configuration);
     return plan;
 }
