@@ -445,6 +445,10 @@
         <source>Change motion blur</source>
         <translation>Bewegungsunschärfe ändern</translation>
     </message>
+    <message>
+        <source>Change adaptive sampling</source>
+        <translation>Adaptives Sampling ändern</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Configurations</name>
@@ -2261,6 +2265,14 @@
         <source>Rendering</source>
         <translation>Rendern</translation>
     </message>
+    <message>
+        <source>Noise threshold (adaptive sampling, 0 = off)</source>
+        <translation>Rauschschwelle (adaptives Sampling, 0 = aus)</translation>
+    </message>
+    <message>
+        <source>Adaptive minimum samples (0 = automatic)</source>
+        <translation>Adaptive Mindest-Samples (0 = automatisch)</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::RecoveryBar</name>
@@ -2670,6 +2682,10 @@ R %3  G %4  B %5 (linear)</translation>
     <message>
         <source>Move and rotate along the selected node's own axes (off: the world's)</source>
         <translation>Entlang der eigenen Achsen des ausgewählten Knotens verschieben und drehen (aus: der Welt)</translation>
+    </message>
+    <message>
+        <source>up to %1 spp, converged (noise threshold)</source>
+        <translation>bis %1 spp, konvergiert (Rauschschwelle)</translation>
     </message>
 </context>
 </TS>

@@ -445,6 +445,10 @@
         <source>Change motion blur</source>
         <translation>Cambiar desenfoque de movimiento</translation>
     </message>
+    <message>
+        <source>Change adaptive sampling</source>
+        <translation>Cambiar muestreo adaptativo</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Configurations</name>
@@ -2261,6 +2265,14 @@
         <source>Rendering</source>
         <translation>Render</translation>
     </message>
+    <message>
+        <source>Noise threshold (adaptive sampling, 0 = off)</source>
+        <translation>Umbral de ruido (muestreo adaptativo, 0 = desactivado)</translation>
+    </message>
+    <message>
+        <source>Adaptive minimum samples (0 = automatic)</source>
+        <translation>Muestras mínimas adaptativas (0 = automático)</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::RecoveryBar</name>
@@ -2670,6 +2682,10 @@ R %3  G %4  B %5 (lineal)</translation>
     <message>
         <source>Move and rotate along the selected node's own axes (off: the world's)</source>
         <translation>Mover y girar según los ejes propios del nodo seleccionado (apagado: los del mundo)</translation>
+    </message>
+    <message>
+        <source>up to %1 spp, converged (noise threshold)</source>
+        <translation>hasta %1 spp, convergida (umbral de ruido)</translation>
     </message>
 </context>
 </TS>

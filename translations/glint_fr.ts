@@ -445,6 +445,10 @@
         <source>Change motion blur</source>
         <translation>Modifier le flou de mouvement</translation>
     </message>
+    <message>
+        <source>Change adaptive sampling</source>
+        <translation>Modifier l'échantillonnage adaptatif</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Configurations</name>
@@ -583,7 +587,7 @@
     </message>
     <message>
         <source>EXR only, Accumulate and Reference: none, all, light, or a list of DiffDir, DiffInd, GlossDir, GlossInd, Emit, Env, Vector</source>
-        <translation>EXR uniquement, Accumulate et Reference : none, all, light ou une liste parmi DiffDir, DiffInd, GlossDir, GlossInd, Emit, Env, Vector</translation>
+        <translation>EXR seulement, Accumulate et Reference : none, all, light ou une liste de DiffDir, DiffInd, GlossDir, GlossInd, Emit, Env, Vector</translation>
     </message>
     <message>
         <source>none</source>
@@ -2261,6 +2265,14 @@
         <source>Rendering</source>
         <translation>Rendu</translation>
     </message>
+    <message>
+        <source>Noise threshold (adaptive sampling, 0 = off)</source>
+        <translation>Seuil de bruit (échantillonnage adaptatif, 0 = désactivé)</translation>
+    </message>
+    <message>
+        <source>Adaptive minimum samples (0 = automatic)</source>
+        <translation>Échantillons minimaux adaptatifs (0 = automatique)</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::RecoveryBar</name>
@@ -2670,6 +2682,10 @@ R %3  V %4  B %5 (linéaire)</translation>
     <message>
         <source>Move and rotate along the selected node's own axes (off: the world's)</source>
         <translation>Déplacer et tourner selon les axes propres du nœud sélectionné (désactivé : ceux du monde)</translation>
+    </message>
+    <message>
+        <source>up to %1 spp, converged (noise threshold)</source>
+        <translation>jusqu'à %1 spp, convergée (seuil de bruit)</translation>
     </message>
 </context>
 </TS>

@@ -445,6 +445,10 @@
         <source>Change motion blur</source>
         <translation>Modifica sfocatura di movimento</translation>
     </message>
+    <message>
+        <source>Change adaptive sampling</source>
+        <translation>Cambia campionamento adattivo</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Configurations</name>
@@ -583,7 +587,7 @@
     </message>
     <message>
         <source>EXR only, Accumulate and Reference: none, all, light, or a list of DiffDir, DiffInd, GlossDir, GlossInd, Emit, Env, Vector</source>
-        <translation>Solo EXR, Accumulate e Reference: none, all, light oppure un elenco tra DiffDir, DiffInd, GlossDir, GlossInd, Emit, Env, Vector</translation>
+        <translation>Solo EXR, Accumulate e Reference: none, all, light o un elenco di DiffDir, DiffInd, GlossDir, GlossInd, Emit, Env, Vector</translation>
     </message>
     <message>
         <source>none</source>
@@ -2261,6 +2265,14 @@
         <source>Rendering</source>
         <translation>Rendering</translation>
     </message>
+    <message>
+        <source>Noise threshold (adaptive sampling, 0 = off)</source>
+        <translation>Soglia di rumore (campionamento adattivo, 0 = disattivato)</translation>
+    </message>
+    <message>
+        <source>Adaptive minimum samples (0 = automatic)</source>
+        <translation>Campioni minimi adattivi (0 = automatico)</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::RecoveryBar</name>
@@ -2670,6 +2682,10 @@ R %3  G %4  B %5 (lineare)</translation>
     <message>
         <source>Move and rotate along the selected node's own axes (off: the world's)</source>
         <translation>Sposta e ruota lungo gli assi del nodo selezionato (spento: quelli del mondo)</translation>
+    </message>
+    <message>
+        <source>up to %1 spp, converged (noise threshold)</source>
+        <translation>fino a %1 spp, convergita (soglia di rumore)</translation>
     </message>
 </context>
 </TS>

@@ -112,6 +112,7 @@ std::string describeSettingsEdit(const ProjectSettings& b, const ProjectSettings
         {rb.taa != ra.taa, QT_TRANSLATE_NOOP("glint::editor::CommandLabels", "Change TAA settings")},
         {rb.svgf != ra.svgf, QT_TRANSLATE_NOOP("glint::editor::CommandLabels", "Change SVGF settings")},
         {rb.bloom != ra.bloom, QT_TRANSLATE_NOOP("glint::editor::CommandLabels", "Change bloom")},
+        {rb.adaptive != ra.adaptive, QT_TRANSLATE_NOOP("glint::editor::CommandLabels", "Change adaptive sampling")},
         {b.environment.file != a.environment.file, QT_TRANSLATE_NOOP("glint::editor::CommandLabels", "Change environment image")},
         {b.environment.color != a.environment.color, QT_TRANSLATE_NOOP("glint::editor::CommandLabels", "Change environment colour")},
         {b.environment.intensity != a.environment.intensity, QT_TRANSLATE_NOOP("glint::editor::CommandLabels", "Change environment intensity")},

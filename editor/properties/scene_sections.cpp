@@ -167,6 +167,14 @@ PropertyForm* makeRenderForm(Document& document, const Report& report, QWidget* 
         PropertyForm::tr("Radiance clamp (0 = off)"), 0.0, 100.0, 2, [&scene] { return double(scene.settings.render.clamp); },
         [edit](double v, std::uint64_t i) { edit([&](ProjectSettings& s) { s.render.clamp = float(v); }, i); });
     form->addFloat(
+        PropertyForm::tr("Noise threshold (adaptive sampling, 0 = off)"), 0.0, 1.0, 4,
+        [&scene] { return double(scene.settings.render.adaptive.threshold); },
+        [edit](double v, std::uint64_t i) { edit([&](ProjectSettings& s) { s.render.adaptive.threshold = float(v); }, i); });
+    form->addInt(
+        PropertyForm::tr("Adaptive minimum samples (0 = automatic)"), 0, 1 << 20,
+        [&scene] { return scene.settings.render.adaptive.minSamples; },
+        [edit](int v) { edit([&](ProjectSettings& s) { s.render.adaptive.minSamples = v; }, 0); });
+    form->addFloat(
         PropertyForm::tr("Motion blur shutter (frames, 0 = off)"), 0.0, 1.0, 2, [&scene] { return double(scene.settings.render.shutter); },
         [edit](double v, std::uint64_t i) { edit([&](ProjectSettings& s) { s.render.shutter = float(v); }, i); });
     form->addFloat(

@@ -233,7 +233,7 @@ bool RenderHost::workRemains() const {
 bool RenderHost::wantsSamples() const {
     if (renderer_->imageStage() != renderer::ImageStage::Complete) return true; // not current, or not whole
     if (lastMoving_) return true; // real-time frames keep refining their history until the view settles
-    if (paused_) return false;
+    if (paused_ || renderer_->converged()) return false; // converged: adaptive sampling stopped every pixel
     return sampleCap_ <= 0 || renderer_->sampleCount() < sampleCap_;
 }
 
@@ -285,6 +285,7 @@ void RenderHost::configure(const ViewRequest& request) {
     s.seed = project.seed;
     s.exposure = project.exposure;
     s.clamp = project.clamp;
+    s.adaptive = project.adaptive; // Accumulate only: the renderer leaves the moving view alone
     s.bloom = {project.bloom.strength, project.bloom.radius};
     s.view = request.mode == ViewMode::AmbientOcclusion ? renderer::DebugView::AmbientOcclusion
              : request.mode == ViewMode::BvhCost        ? renderer::DebugView::BvhCost
@@ -347,6 +348,8 @@ void RenderHost::noteStage(const ViewRequest& request) {
         stats_.stage = ViewStage::Refining;
         stats_.refinePercent = 100 * renderer_->rowsTraced() / std::max(1, renderer_->rowsToTrace());
         if (renderer_->previewShown()) stats_.divisor = renderer_->settings().previewDivisor;
+    } else if (renderer_->converged()) {
+        stats_.stage = ViewStage::NoiseConverged;
     } else if (sampleCap_ > 0 && stats_.samples >= sampleCap_) {
         stats_.stage = ViewStage::Converged;
     } else {

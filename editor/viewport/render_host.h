@@ -49,8 +49,9 @@ struct PreparedDocument;
 
 // What the image on screen is, for the status bar: coarse (the moving view or the still preview),
 // refining (full-resolution samples traced in bands, the coarse image still shown), accumulating,
-// or done (the sample cap reached, or paused with a current image).
-enum class ViewStage { Preparing, Coarse, Refining, Accumulating, Converged, Paused };
+// or done (the sample cap reached, adaptive sampling stopped every pixel, or paused with a current
+// image).
+enum class ViewStage { Preparing, Coarse, Refining, Accumulating, Converged, NoiseConverged, Paused };
 
 // Figures of the last paint, for the status bar and the tests.
 struct ViewportStats {

@@ -264,6 +264,7 @@ QString Viewport::statusText() const {
         stage = s.sampleCap > 0 ? tr("%1 / %2 spp").arg(s.samples).arg(s.sampleCap) : tr("%1 spp").arg(s.samples);
         break;
     case ViewStage::Converged: stage = tr("%1 spp, converged (viewport sample cap)").arg(s.samples); break;
+    case ViewStage::NoiseConverged: stage = tr("up to %1 spp, converged (noise threshold)").arg(s.samples); break;
     case ViewStage::Paused: stage = tr("%1 spp, paused").arg(s.samples); break;
     }
     return tr("%1  |  %2 ms/frame").arg(stage).arg(s.frameMs, 0, 'f', 1);

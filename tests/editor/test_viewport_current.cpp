@@ -220,6 +220,36 @@ private slots:
         expectCurrent("show it again");
     }
 
+    // With adaptive sampling on, the view stops once every pixel has converged, well before its
+    // sample cap, says so, and an edit starts it again.
+    void adaptiveSamplingStopsTheViewBeforeTheCap() {
+        ProjectSettings settings = document_->scene().settings;
+        settings.render.adaptive = {.threshold = 0.5f, .minSamples = 2};
+        document_->push(std::make_unique<SetProjectSettings>(settings));
+        constexpr int kLargeCap = 100000;
+        QString status;
+        show(160, 120, 30.0, [&] {
+            viewport_->setSampleCap(kLargeCap);
+            connect(viewport_, &Viewport::statusMessage, this, [&status](const QString& text) { status = text; });
+        });
+        RenderView& v = view();
+        const auto stopped = [&] { return v.stats().stage == ViewStage::NoiseConverged; };
+        QVERIFY2(waitFor(stopped, 60000), qPrintable(QStringLiteral("never converged (stage %1, %2 spp)")
+                                                         .arg(int(v.stats().stage)).arg(v.stats().samples)));
+        const int samples = v.stats().samples;
+        QVERIFY(samples >= 2 && samples < kLargeCap);
+        QVERIFY(waitFor([&] { return status.contains(QStringLiteral("converged (noise threshold)")); }));
+        const QImage before = v.grabFramebuffer();
+        const MaterialId sphereMaterial = document_->scene().at(shapes_.sphere).get<Shape>()->material;
+        Material blue = document_->scene().materials.at(sphereMaterial);
+        blue.baseColorFactor = glm::vec4(0.1f, 0.2f, 0.8f, 1.0f);
+        document_->push(std::make_unique<SetMaterial>(sphereMaterial, blue));
+        const long long start = v.stats().paints;
+        QVERIFY2(waitFor([&] { return v.stats().paints > start && stopped(); }, 60000), "the edit did not converge again");
+        QVERIFY(v.stats().samples < kLargeCap);
+        QVERIFY2(difference(v.grabFramebuffer(), before, 2).pixelsOver > 100, "the converged view did not show the edit");
+    }
+
     void gizmoMoveAndUndoAfterTheCap() {
         show();
         capped();
