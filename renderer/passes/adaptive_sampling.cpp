@@ -112,6 +112,7 @@ void AdaptiveSamplingPass::markConvergedTiles(const gl::RenderTarget& mean, int 
     glUniform1f(program.uniform("uSampleCount"), static_cast<float>(samples));
     glUniform1f(program.uniform("uThreshold"), threshold);
     glUniform2i(program.uniform("uImageSize"), width_, height_);
+    bindStopTexture(stops_.get(), 2, program);
     const GLboolean scissored = glIsEnabled(GL_SCISSOR_TEST);
     glDisable(GL_SCISSOR_TEST);
     glDisable(GL_DEPTH_TEST);

@@ -4,6 +4,7 @@
 // costs its whole group, and its neighbours may as well take those samples.
 #include "adaptive_converged.glsl"
 
+uniform sampler2D uStopDepth; // stopped tiles keep their mean, so they stay converged: not tested again
 uniform sampler2D uMeanRadiance;
 uniform sampler2D uMeanRadianceSquared;
 uniform float uSampleCount;
@@ -14,6 +15,10 @@ out vec4 outTile;
 
 void main() {
     ivec2 origin = ivec2(gl_FragCoord.xy) * 8;
+    if (texelFetch(uStopDepth, origin, 0).r < 1.0) {
+        outTile = vec4(1.0);
+        return;
+    }
     ivec2 end = min(origin + ivec2(8), uImageSize);
     for (int y = origin.y; y < end.y; ++y)
         for (int x = origin.x; x < end.x; ++x) {

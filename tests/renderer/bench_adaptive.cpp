@@ -206,17 +206,20 @@ void drawChart(const Options& o, const std::vector<Point>& uniform, const std::v
     char name[] = "bench_adaptive";
     char* argv[] = {name, nullptr};
     QApplication app(argc, argv);
-    const auto curve = [](const std::string& label, const std::vector<Point>& points) {
+    const auto curve = [](const std::string& label, const std::vector<Point>& points, double Point::*error) {
         bench::ChartCurve c{label, {}};
-        for (const Point& p : points) c.points.push_back({p.ms, p.relMse});
+        for (const Point& p : points) c.points.push_back({p.ms, p.*error});
         std::sort(c.points.begin(), c.points.end(), [](const auto& a, const auto& b) { return a.ms < b.ms; });
         return c;
     };
     const std::string svg = o.chart.substr(0, o.chart.rfind('.')) + ".svg";
-    bench::writeSpeedAccuracyChart({curve("uniform (16 to 1024 spp)", uniform),
-                                    curve("adaptive (thresholds, cap " + std::to_string(o.cap) + " spp)", adaptive)},
+    bench::writeSpeedAccuracyChart({curve("uniform: relMSE", uniform, &Point::relMse),
+                                    curve("adaptive: relMSE", adaptive, &Point::relMse),
+                                    curve("uniform: worst 8x8 tile", uniform, &Point::worstTile),
+                                    curve("adaptive: worst 8x8 tile", adaptive, &Point::worstTile)},
                                    o.scene + ", " + std::to_string(o.size) + "x" + std::to_string(o.size) + ", " +
-                                       std::to_string(o.bounces) + " bounces: relMSE against render time",
+                                       std::to_string(o.bounces) + " bounces, adaptive capped at " + std::to_string(o.cap) +
+                                       " spp: relMSE against render time",
                                    o.chart, svg);
 }
 
