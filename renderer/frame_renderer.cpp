@@ -776,9 +776,12 @@ bool FrameRenderer::converged() const {
     return s.targets && !s.pictureChanged && s.adaptiveDone();
 }
 
-int FrameRenderer::stoppedPixels() const {
+std::optional<double> FrameRenderer::convergedShare() const {
     const State& s = *state_;
-    return s.targets && !s.pictureChanged && s.adaptive() ? s.targets->adaptive.stoppedPixels() : 0;
+    if (!s.adaptive()) return std::nullopt;
+    if (!s.targets || s.pictureChanged) return 0.0;
+    const PixelRect traced = s.tracedPixels();
+    return double(s.targets->adaptive.stoppedPixels()) / double(std::max(1, traced.width * traced.height));
 }
 
 ImageStage FrameRenderer::imageStage() const {

@@ -177,8 +177,9 @@ public:
     int sampleCount() const;
     // Adaptive sampling stopped every pixel it traces: more frames add nothing.
     bool converged() const;
-    // Pixels adaptive sampling has stopped in the current picture (0 without it).
-    int stoppedPixels() const;
+    // The share of the traced pixels adaptive sampling has stopped in the current picture, 0 to 1;
+    // unset without adaptive sampling.
+    std::optional<double> convergedShare() const;
     ImageStage imageStage() const;
     // Rows of the sample in progress already traced, of rowsToTrace() (banded Accumulate).
     int rowsTraced() const;

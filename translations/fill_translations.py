@@ -471,6 +471,7 @@ T = {
 "Change adaptive sampling": ("Cambia campionamento adattivo", "Adaptives Sampling ändern", "Modifier l'échantillonnage adaptatif", "Cambiar muestreo adaptativo"),
 "Noise threshold (adaptive sampling, 0 = off)": ("Soglia di rumore (campionamento adattivo, 0 = disattivato)", "Rauschschwelle (adaptives Sampling, 0 = aus)", "Seuil de bruit (échantillonnage adaptatif, 0 = désactivé)", "Umbral de ruido (muestreo adaptativo, 0 = desactivado)"),
 "Adaptive minimum samples (0 = automatic)": ("Campioni minimi adattivi (0 = automatico)", "Adaptive Mindest-Samples (0 = automatisch)", "Échantillons minimaux adaptatifs (0 = automatique)", "Muestras mínimas adaptativas (0 = automático)"),
+"%1, %2% converged": ("%1, %2% convergito", "%1, %2% konvergiert", "%1, %2% convergé", "%1, %2% convergido"),
 "up to %1 spp, converged (noise threshold)": ("fino a %1 spp, convergita (soglia di rumore)", "bis %1 spp, konvergiert (Rauschschwelle)", "jusqu'à %1 spp, convergée (seuil de bruit)", "hasta %1 spp, convergida (umbral de ruido)"),
 "AgX": ("AgX", "AgX", "AgX", "AgX"),
 "Reinhard (extended)": ("Reinhard (esteso)", "Reinhard (erweitert)", "Reinhard (étendu)", "Reinhard (extendido)"),

@@ -2687,5 +2687,9 @@ R %3  G %4  B %5 (linear)</translation>
         <source>up to %1 spp, converged (noise threshold)</source>
         <translation>bis %1 spp, konvergiert (Rauschschwelle)</translation>
     </message>
+    <message>
+        <source>%1, %2% converged</source>
+        <translation>%1, %2% konvergiert</translation>
+    </message>
 </context>
 </TS>

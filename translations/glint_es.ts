@@ -2687,5 +2687,9 @@ R %3  G %4  B %5 (lineal)</translation>
         <source>up to %1 spp, converged (noise threshold)</source>
         <translation>hasta %1 spp, convergida (umbral de ruido)</translation>
     </message>
+    <message>
+        <source>%1, %2% converged</source>
+        <translation>%1, %2% convergido</translation>
+    </message>
 </context>
 </TS>

@@ -2687,5 +2687,9 @@ R %3  V %4  B %5 (linéaire)</translation>
         <source>up to %1 spp, converged (noise threshold)</source>
         <translation>jusqu'à %1 spp, convergée (seuil de bruit)</translation>
     </message>
+    <message>
+        <source>%1, %2% converged</source>
+        <translation>%1, %2% convergé</translation>
+    </message>
 </context>
 </TS>

@@ -2687,5 +2687,9 @@ R %3  G %4  B %5 (lineare)</translation>
         <source>up to %1 spp, converged (noise threshold)</source>
         <translation>fino a %1 spp, convergita (soglia di rumore)</translation>
     </message>
+    <message>
+        <source>%1, %2% converged</source>
+        <translation>%1, %2% convergito</translation>
+    </message>
 </context>
 </TS>

@@ -339,6 +339,8 @@ void RenderHost::noteStage(const ViewRequest& request) {
     const renderer::ImageStage image = renderer_->imageStage();
     stats_.samples = renderer_->sampleCount();
     stats_.refinePercent = 0;
+    const std::optional<double> converged = lastMoving_ ? std::nullopt : renderer_->convergedShare();
+    stats_.convergedPercent = converged ? int(*converged * 100.0) : -1; // floored: 100 only when every pixel stopped
     if (lastMoving_) {
         stats_.stage = ViewStage::Coarse;
     } else if (image == renderer::ImageStage::Preview || image == renderer::ImageStage::None) {

@@ -262,6 +262,7 @@ QString Viewport::statusText() const {
     case ViewStage::Refining: stage = tr("refining to full resolution: %1%").arg(s.refinePercent); break;
     case ViewStage::Accumulating:
         stage = s.sampleCap > 0 ? tr("%1 / %2 spp").arg(s.samples).arg(s.sampleCap) : tr("%1 spp").arg(s.samples);
+        if (s.convergedPercent >= 0) stage = tr("%1, %2% converged").arg(stage).arg(s.convergedPercent);
         break;
     case ViewStage::Converged: stage = tr("%1 spp, converged (viewport sample cap)").arg(s.samples); break;
     case ViewStage::NoiseConverged: stage = tr("up to %1 spp, converged (noise threshold)").arg(s.samples); break;

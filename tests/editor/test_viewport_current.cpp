@@ -238,6 +238,7 @@ private slots:
                                                          .arg(int(v.stats().stage)).arg(v.stats().samples)));
         const int samples = v.stats().samples;
         QVERIFY(samples >= 2 && samples < kLargeCap);
+        QCOMPARE(v.stats().convergedPercent, 100);
         QVERIFY(waitFor([&] { return status.contains(QStringLiteral("converged (noise threshold)")); }));
         const QImage before = v.grabFramebuffer();
         const MaterialId sphereMaterial = document_->scene().at(shapes_.sphere).get<Shape>()->material;
