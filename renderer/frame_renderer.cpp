@@ -276,9 +276,9 @@ struct FrameRenderer::State {
         return *passTargets;
     }
     bool adaptive() const { return settings.adaptive.threshold > 0.0f && traitsOf(settings.configuration).accumulate; }
-    // The stops the accumulations and the path tracer respect: 0 while no pixel has stopped, so
-    // until then every program is the one a render without adaptive sampling runs.
-    GLuint adaptiveStops() const { return adaptive() && targets->adaptive.anyStopped() ? targets->adaptive.stopTexture() : 0; }
+    // Whether the path tracer and the accumulations skip stopped pixels: not while none has stopped,
+    // so until then every draw is the one a render without adaptive sampling makes.
+    bool cullStopped() const { return adaptive() && targets->adaptive.anyStopped(); }
     bool adaptiveDone() const { return adaptive() && targets->adaptive.allStopped(); }
     void testAdaptive() {
         FrameTargets& t = *targets;
@@ -287,28 +287,28 @@ struct FrameRenderer::State {
         if (adaptive() && adaptiveTestDue(n, adaptiveMinSamples(settings.adaptive, cap)))
             t.adaptive.test(t.stillMean.mean(), t.stillMean.next(), n, settings.adaptive.threshold);
     }
-    // Sample `index` of the still mean into `target`, but for the pixels `stops` names (0: none).
-    void traceStillSample(const PathTraceSettings& pt, std::uint32_t index, const gl::RenderTarget& target, GLuint stops) {
-        CullStoppedPixels cull(stops != 0);
+    // Sample `index` of the still mean into `target`, but for stopped pixels where `culled`.
+    void traceStillSample(const PathTraceSettings& pt, std::uint32_t index, const gl::RenderTarget& target, bool culled) {
+        const CullStoppedPixels cull(culled);
         pathTrace.render(*gpu, camera, pt, index, target);
     }
     // One whole sample into the still mean, with the render passes where they are asked for.
     void traceAccumulatedSample(const PathTraceSettings& pt) {
         FrameTargets& t = *targets;
         const auto index = static_cast<std::uint32_t>(t.stillMean.sampleCount());
-        const GLuint stops = adaptiveStops();
+        const bool culled = cullStopped();
         if (!renderingPasses()) {
-            traceStillSample(pt, index, t.sample, stops);
-            t.stillMean.add(t.sample, stops != 0);
+            traceStillSample(pt, index, t.sample, culled);
+            t.stillMean.add(t.sample, culled);
             testAdaptive();
             return;
         }
         RenderPassTargets& p = passes();
         PathTraceSettings withPasses = pt;
         withPasses.renderPasses = true;
-        traceStillSample(withPasses, index, p.sample, stops);
-        t.stillMean.add(p.sample, stops != 0); // targets 0-6: the beauty and the G-buffer, as without passes
-        p.mean.add(p.sample, t.stillMean.sampleCount(), stops);
+        traceStillSample(withPasses, index, p.sample, culled);
+        t.stillMean.add(p.sample, culled); // targets 0-6: the beauty and the G-buffer, as without passes
+        p.mean.add(p.sample, t.stillMean.sampleCount(), culled ? t.adaptive.stopTexture() : 0);
         testAdaptive();
     }
     void readRenderPasses(FrameImages& out);
@@ -422,14 +422,14 @@ void FrameRenderer::State::traceRows() {
     const GLboolean scissored = glIsEnabled(GL_SCISSOR_TEST);
     glEnable(GL_SCISSOR_TEST);
     glScissor(traced.x, nextRow, traced.width, rows);
-    const GLuint stops = adaptiveStops();
-    traceStillSample(pathTraceSettings(), static_cast<std::uint32_t>(t.stillMean.sampleCount()), t.sample, stops);
+    const bool culled = cullStopped();
+    traceStillSample(pathTraceSettings(), static_cast<std::uint32_t>(t.stillMean.sampleCount()), t.sample, culled);
     glScissor(scissor[0], scissor[1], scissor[2], scissor[3]);
     if (!scissored) glDisable(GL_SCISSOR_TEST);
     nextRow += rows;
     lastWork.rows = rows;
     if (nextRow < end) return;
-    t.stillMean.add(t.sample, stops != 0);
+    t.stillMean.add(t.sample, culled);
     testAdaptive();
     nextRow = 0;
 }

@@ -54,8 +54,9 @@ void addReconstruction(ImageMetadata& metadata, const RenderSettings& project, C
     }
 }
 
-// "0.01" for 0.01f, where formatNumber(double) would spell out the float's binary value.
-std::string shortestFloat(float value) {
+// The shortest text that reads back as `value`, locale-independent: "0.01" for 0.01f, where
+// formatNumber(double(0.01f)) would spell out the float's binary value.
+template <class T> std::string shortest(T value) {
     char buf[32];
     auto [end, ec] = std::to_chars(buf, buf + sizeof buf, value);
     return ec == std::errc() ? std::string(buf, end) : std::string("nan");
@@ -77,11 +78,7 @@ void sealSettings(ImageMetadata& metadata) {
     metadata["settingsHash"] = hashHex(canonical);
 }
 
-std::string formatNumber(double value) {
-    char buf[32];
-    auto [end, ec] = std::to_chars(buf, buf + sizeof buf, value);
-    return ec == std::errc() ? std::string(buf, end) : std::string("nan");
-}
+std::string formatNumber(double value) { return shortest(value); }
 
 RenderPlan planRender(const Scene& scene, const std::filesystem::path& sceneFile, const RenderOverrides& o) {
     const RenderSettings& project = scene.settings.render;
@@ -133,7 +130,7 @@ RenderPlan planRender(const Scene& scene, const std::filesystem::path& sceneFile
     }
     if (r.shutterSeconds > 0.0) plan.metadata["shutterSeconds"] = formatNumber(r.shutterSeconds); // as bloom: only when on
     if (r.adaptive.threshold > 0.0f && traitsOf(r.configuration).accumulate) { // as bloom; the minimum as resolved
-        plan.metadata["adaptiveThreshold"] = shortestFloat(r.adaptive.threshold);
+        plan.metadata["adaptiveThreshold"] = shortest(r.adaptive.threshold);
         plan.metadata["adaptiveMinSpp"] = std::to_string(adaptiveMinSamples(r.adaptive, r.spp));
     }
     addReconstruction(plan.metadata, project, r.configuration);
