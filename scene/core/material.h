@@ -65,6 +65,11 @@ struct Material {
     TextureRef thicknessTexture;
     float attenuationDistance = std::numeric_limits<float>::infinity();
     glm::vec3 attenuationColor{1.0f};
+    // GLINT_materials_volume_scatter: of the attenuation above (the extinction), the share
+    // scattered per channel (the single-scattering albedo; 0: absorption only, as
+    // KHR_materials_volume alone), scattered with a Henyey-Greenstein lobe of anisotropy g.
+    glm::vec3 scatterColor{0.0f};
+    float scatterAnisotropy = 0.0f;
 
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;

@@ -24,6 +24,22 @@ struct Environment {
     friend bool operator==(const Environment&, const Environment&) = default;
 };
 
+// Fog filling the scene (docs/MEDIA.md): a participating medium that scatters light, so suns, spots
+// and area lights draw shafts through gaps. Its extinction is `density` per metre at `baseHeight`
+// and falls as exp(-heightFalloff x (y - baseHeight)) with world height y (0: homogeneous). Of the
+// light it extinguishes, `color` per channel is scattered (the single-scattering albedo) and the
+// rest absorbed. A homogeneous fog fills all space, so the environment reaches the scene only
+// through a height falloff. density 0: no fog, and the renderer compiles no medium code.
+struct Fog {
+    float density = 0.0f;        // 1/m, >= 0
+    glm::vec3 color{1.0f};       // single-scattering albedo, each channel in [0, 1]
+    float anisotropy = 0.0f;     // Henyey-Greenstein g in (-1, 1): > 0 scatters forward
+    float heightFalloff = 0.0f;  // 1/m, >= 0
+    float baseHeight = 0.0f;     // metres, world Y
+    bool enabled() const { return density > 0.0f; }
+    friend bool operator==(const Fog&, const Fog&) = default;
+};
+
 // Real-time reconstruction of the configurations with history (baseline, realistic, full, heavy;
 // docs/DENOISING.md). Part of the project because it changes the pixels: the editor and the command
 // line render a project with the same values. Written only where they differ from these defaults.
@@ -106,6 +122,7 @@ struct OutputSettings {
 struct ProjectSettings {
     RenderSettings render;
     Environment environment;
+    Fog fog;
     NodeId activeCamera{};
     Timeline timeline;
     OutputSettings output;

@@ -27,6 +27,7 @@ ProjectFile sampleProject()
     p.settings.timeline = {.start = 0.5, .end = 10.1, .fpsNumerator = 24000, .fpsDenominator = 1001};
     p.settings.output = {.path = "frames/shot_####.exr", .aovs = "none", .passes = "light,Vector", .codec = "prores"};
     p.settings.lightUnits = LightUnits::Raw;
+    p.settings.fog = {.density = 0.05f, .color = {0.9f, 0.8f, 0.7f}, .anisotropy = -0.3f, .heightFalloff = 0.25f, .baseHeight = -1.5f};
     return p;
 }
 
@@ -101,6 +102,32 @@ private slots:
         QVERIFY(writeProjectFileText(ProjectFile{}).find("passes") == std::string::npos);
     }
 
+    // A fog is written whole and reads back to the same bytes; without one there is no "fog" key,
+    // so projects saved before fog existed keep their bytes.
+    void fogRoundTripsAndIsLeftOutWhenDefault()
+    {
+        ProjectFile foggy;
+        foggy.settings.fog = {.density = 0.1f, .color = {1.0f, 0.5f, 0.25f}, .anisotropy = 0.99f, .heightFalloff = 0.3f, .baseHeight = 2.0f};
+        const std::string text = writeProjectFileText(foggy);
+        QVERIFY(text.find(R"("fog": {)") != std::string::npos);
+        QVERIFY(text.find(R"("heightFalloff": 0.3)") != std::string::npos);
+        Warnings warnings;
+        const ProjectFile parsed = parseProjectFile(text, "p.glint.json", warnings);
+        QVERIFY(warnings.empty());
+        QVERIFY(parsed.settings.fog == foggy.settings.fog);
+        QCOMPARE(writeProjectFileText(parsed), text);
+
+        QVERIFY(writeProjectFileText(ProjectFile{}).find("fog") == std::string::npos);
+        // Any value off its default counts, even with no density yet (an edit in progress is kept).
+        ProjectFile colourOnly;
+        colourOnly.settings.fog.color = {0.5f, 0.5f, 0.5f};
+        QVERIFY(json::parse(writeProjectFileText(colourOnly)).contains("fog"));
+        // Keys left out take the defaults.
+        const ProjectFile partial = parseProjectFile(R"({"glint": 1, "fog": {"density": 0.5}})", "p.glint.json", warnings);
+        QVERIFY(partial.settings.fog == (Fog{.density = 0.5f}));
+        QVERIFY(warnings.empty());
+    }
+
     void defaultsFromAMinimalFile()
     {
         Warnings warnings;
@@ -162,6 +189,17 @@ private slots:
         row("intensity -5", R"({"glint": 1, "environment": {"intensity": -5}})", "bad-value: key 'environment.intensity' must be a number of at least 0");
         row("colour -1", R"({"glint": 1, "environment": {"color": [0, -1, 0]}})", "bad-value: key 'environment.color' must be 3 numbers of at least 0");
         row("rotation 1e39", R"({"glint": 1, "environment": {"rotation": 1e39}})", "bad-value: key 'environment.rotation' must be a finite number of degrees");
+        row("fog density -0.1", R"({"glint": 1, "fog": {"density": -0.1}})", "bad-value: key 'fog.density' must be a number of at least 0 (per metre)");
+        row("fog density 1e39", R"({"glint": 1, "fog": {"density": 1e39}})", "bad-value: key 'fog.density' must be a number of at least 0 (per metre)");
+        row("fog colour 1.5", R"({"glint": 1, "fog": {"color": [1, 1.5, 1]}})", "bad-value: key 'fog.color' must be 3 numbers from 0 to 1");
+        row("fog colour -0.1", R"({"glint": 1, "fog": {"color": [-0.1, 0, 0]}})", "bad-value: key 'fog.color' must be 3 numbers from 0 to 1");
+        row("fog colour 2 numbers", R"({"glint": 1, "fog": {"color": [1, 1]}})", "wrong-type: key 'fog.color' must be an array of 3 numbers");
+        row("fog anisotropy 1", R"({"glint": 1, "fog": {"anisotropy": 1}})", "bad-value: key 'fog.anisotropy' must be a number from -0.99 to 0.99");
+        row("fog anisotropy -0.995", R"({"glint": 1, "fog": {"anisotropy": -0.995}})", "bad-value: key 'fog.anisotropy' must be a number from -0.99 to 0.99");
+        row("fog falloff -1", R"({"glint": 1, "fog": {"heightFalloff": -1}})", "bad-value: key 'fog.heightFalloff' must be a number of at least 0 (per metre)");
+        row("fog base height 1e39", R"({"glint": 1, "fog": {"baseHeight": 1e39}})", "bad-value: key 'fog.baseHeight' must be a finite number of metres");
+        row("fog base height text", R"({"glint": 1, "fog": {"baseHeight": "ground"}})", "wrong-type: key 'fog.baseHeight' must be a number");
+        row("fog not an object", R"({"glint": 1, "fog": 0.1})", "wrong-type: key 'fog' must be an object");
     }
 
     void valuesOutOfRangeNameTheKey()
@@ -187,6 +225,11 @@ private slots:
         QCOMPARE(p.settings.render.spp, 1048576);
         QCOMPARE(p.settings.render.exposure, -64.0f);
         QCOMPARE(p.settings.environment.rotationDegrees, -720.0f);
+        QVERIFY(warnings.empty());
+        const ProjectFile fog = parseProjectFile(
+            R"({"glint": 1, "fog": {"density": 0, "color": [0, 1, 0], "anisotropy": -0.99, "heightFalloff": 0}})", "p.glint.json", warnings);
+        QCOMPARE(fog.settings.fog.anisotropy, -0.99f);
+        QVERIFY(fog.settings.fog.color == glm::vec3(0.0f, 1.0f, 0.0f));
         QVERIFY(warnings.empty());
     }
 

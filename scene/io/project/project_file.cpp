@@ -254,6 +254,24 @@ void readEnvironment(ObjectReader& r, Environment& e)
     r.readChecked("rotation", e.rotationDegrees, finiteFloat, "a finite number of degrees");
 }
 
+// The ranges the renderer's medium is defined on (docs/MEDIA.md): a negative density or falloff
+// would add light; |g| = 1 makes the Henyey-Greenstein lobe a delta its sampling cannot take.
+bool unitColor(const glm::vec3& c)
+{
+    const auto unit = [](float v) { return v >= 0.0f && v <= 1.0f; };
+    return unit(c.x) && unit(c.y) && unit(c.z);
+}
+
+void readFog(ObjectReader& r, Fog& f)
+{
+    r.readChecked("density", f.density, nonNegativeFinite, "a number of at least 0 (per metre)");
+    r.readChecked("color", f.color, unitColor, "3 numbers from 0 to 1");
+    r.readChecked("anisotropy", f.anisotropy, [](float v) { return v >= -kMaxFogAnisotropy && v <= kMaxFogAnisotropy; },
+                  "a number from -0.99 to 0.99");
+    r.readChecked("heightFalloff", f.heightFalloff, nonNegativeFinite, "a number of at least 0 (per metre)");
+    r.readChecked("baseHeight", f.baseHeight, finiteFloat, "a finite number of metres");
+}
+
 void readTimeline(ObjectReader& r, Timeline& t)
 {
     r.read("start", t.start);
@@ -287,6 +305,7 @@ void readProject(ObjectReader& r, ProjectFile& project)
     r.readEnum("lightUnits", s.lightUnits, kLightUnitNames);
     r.object("render", [&](ObjectReader& nested) { readRender(nested, s.render); });
     r.object("environment", [&](ObjectReader& nested) { readEnvironment(nested, s.environment); });
+    r.object("fog", [&](ObjectReader& nested) { readFog(nested, s.fog); });
     r.object("timeline", [&](ObjectReader& nested) { readTimeline(nested, s.timeline); });
     r.object("output", [&](ObjectReader& nested) { readOutput(nested, s.output); });
 }
@@ -348,6 +367,17 @@ json svgfJson(const SvgfParameters& s)
     if (s.sigmaDepth != d.sigmaDepth) j["sigmaDepth"] = jsonFloat(s.sigmaDepth);
     if (s.fireflyRatio != d.fireflyRatio) j["fireflyRatio"] = jsonFloat(s.fireflyRatio);
     return j;
+}
+
+// Written only for a fog, so projects without one keep their bytes; then all five values, so the
+// file says what the fog is without the reader's defaults.
+json fogJson(const Fog& f)
+{
+    return {{"density", jsonFloat(f.density)},
+            {"color", {jsonFloat(f.color.x), jsonFloat(f.color.y), jsonFloat(f.color.z)}},
+            {"anisotropy", jsonFloat(f.anisotropy)},
+            {"heightFalloff", jsonFloat(f.heightFalloff)},
+            {"baseHeight", jsonFloat(f.baseHeight)}};
 }
 
 } // namespace
@@ -421,6 +451,7 @@ std::string writeProjectFileText(const ProjectFile& project)
     root["environment"] = {{"color", {jsonFloat(e.color.x), jsonFloat(e.color.y), jsonFloat(e.color.z)}},
                            {"intensity", jsonFloat(e.intensity)}, {"rotation", jsonFloat(e.rotationDegrees)}};
     if (!e.file.empty()) root["environment"]["file"] = e.file;
+    if (s.fog != Fog{}) root["fog"] = fogJson(s.fog);
     const Timeline& t = s.timeline;
     root["timeline"] = {{"start", t.start}, {"end", t.end}, {"fps", {t.fpsNumerator, t.fpsDenominator}}};
     root["output"] = {{"path", s.output.path}, {"aovs", s.output.aovs}, {"codec", s.output.codec}};

@@ -15,6 +15,9 @@ inline constexpr int kMaxProjectImageSize = 16384;
 inline constexpr int kMaxProjectSpp = 1048576;
 inline constexpr int kMaxProjectBounces = 1024;
 inline constexpr float kMaxProjectExposureEv = 64.0f;
+// |anisotropy| of the fog: the Henyey-Greenstein lobe turns into a delta at 1, which the renderer's
+// sampling cannot take (the glTF scatter extension keeps the same bound).
+inline constexpr float kMaxFogAnisotropy = 0.99f;
 
 struct ProjectFile {
     std::string sceneFile; // the glTF it belongs to, relative to the project file's folder
