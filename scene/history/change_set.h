@@ -18,7 +18,7 @@ enum class Change : std::uint32_t {
     Structure = 1u << 5,   // nodes added, removed or moved in the hierarchy
     Settings = 1u << 6,    // render settings that change the image (spp, bounces, seed, units, ...)
     Display = 1u << 7,     // exposure and tonemapper: applied after accumulation, so no reset
-    Environment = 1u << 8,
+    Environment = 1u << 8, // the environment or the fog: the renderer uploads both with the scene
     Animation = 1u << 9,   // camera-path keys and modes
     Name = 1u << 10,
     Visibility = 1u << 11,

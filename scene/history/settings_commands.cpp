@@ -15,7 +15,9 @@ ChangeSet settingsChange(const ProjectSettings& before, const ProjectSettings& a
     if (before.render.exposure != after.render.exposure || before.render.tonemapper != after.render.tonemapper ||
         before.render.bloom != after.render.bloom)
         changes.add(Change::Display);
-    if (before.environment != after.environment) changes.add(Change::Environment);
+    // Fog is part of what the renderer uploads with the environment (its medium and shader
+    // variant): a fog edit re-uploads the scene as an environment edit does.
+    if (before.environment != after.environment || before.fog != after.fog) changes.add(Change::Environment);
     if (before.activeCamera != after.activeCamera) {
         changes.add(Change::Camera);
         for (NodeId camera : {before.activeCamera, after.activeCamera})

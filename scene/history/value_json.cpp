@@ -43,6 +43,8 @@ void to_json(nlohmann::json& j, const Material& m) {
          {"thicknessTexture", m.thicknessTexture},
          {"attenuationDistance", distanceJson(m.attenuationDistance)},
          {"attenuationColor", m.attenuationColor},
+         {"scatterColor", m.scatterColor},
+         {"scatterAnisotropy", m.scatterAnisotropy},
          {"alphaMode", m.alphaMode},
          {"alphaCutoff", m.alphaCutoff},
          {"doubleSided", m.doubleSided},
@@ -72,6 +74,10 @@ void from_json(const nlohmann::json& j, Material& m) {
     j.at("thicknessTexture").get_to(m.thicknessTexture);
     m.attenuationDistance = distanceFromJson(j.at("attenuationDistance"));
     j.at("attenuationColor").get_to(m.attenuationColor);
+    // Optional: command logs written before GLINT_materials_volume_scatter still replay.
+    const Material defaults;
+    readJsonFieldOr(j, "scatterColor", m.scatterColor, defaults.scatterColor);
+    readJsonFieldOr(j, "scatterAnisotropy", m.scatterAnisotropy, defaults.scatterAnisotropy);
     j.at("alphaMode").get_to(m.alphaMode);
     j.at("alphaCutoff").get_to(m.alphaCutoff);
     j.at("doubleSided").get_to(m.doubleSided);

@@ -162,8 +162,10 @@ GLINT_JSON_TYPE_WITH_DEFAULT(RenderSettings, configuration, width, height, spp, 
                                                 exposure, tonemapper, clamp, taa, svgf, bloom)
 GLINT_JSON_TYPE(Timeline, start, end, fpsNumerator, fpsDenominator)
 GLINT_JSON_TYPE_WITH_DEFAULT(OutputSettings, path, aovs, passes, codec)
-GLINT_JSON_TYPE(ProjectSettings, render, environment, activeCamera, timeline, output,
-                                   lightUnits, unknown)
+GLINT_JSON_TYPE(Fog, density, color, anisotropy, heightFalloff, baseHeight)
+// With defaults: command logs written before fog existed still replay.
+GLINT_JSON_TYPE_WITH_DEFAULT(ProjectSettings, render, environment, fog, activeCamera, timeline, output,
+                                                lightUnits, unknown)
 
 // Hand-written: attenuationDistance defaults to infinity, which JSON numbers cannot hold.
 void to_json(nlohmann::json& j, const Material& material);

@@ -51,6 +51,8 @@ void addAssetCommands(std::vector<CommandPtr>& out, const Scene& start, const Sa
     Material red = start.materials.at(ids.red);
     red.roughnessFactor = 0.25f;
     red.attenuationDistance = 3.0f;
+    red.scatterColor = {0.9f, 0.5f, 0.25f};
+    red.scatterAnisotropy = -0.4f;
     out.push_back(std::make_unique<SetAsset<Material>>(ids.red, red));
     out.push_back(std::make_unique<AddAsset<Mesh>>(start.meshes.at(ids.triangleMesh), kNewMesh));
     out.push_back(std::make_unique<SetAsset<Mesh>>(ids.triangleMesh, editedMesh(start.meshes.at(ids.triangleMesh))));
@@ -104,6 +106,7 @@ void addDocumentCommands(std::vector<CommandPtr>& out, const Scene& start, const
     settings.render.spp = 128;
     settings.render.exposure = 1.0f;
     settings.activeCamera = ids.topCamera;
+    settings.fog = {.density = 0.05f, .color = {0.8f, 0.9f, 1.0f}, .anisotropy = 0.6f, .heightFalloff = 0.5f, .baseHeight = -2.0f};
     out.push_back(std::make_unique<SetProjectSettings>(settings));
     out.push_back(std::make_unique<RemoveNode>(ids.world));
     std::vector<CommandPtr> grouped;

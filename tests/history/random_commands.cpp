@@ -47,7 +47,7 @@ std::vector<NodeId> camerasOf(const Scene& scene) {
 }
 
 Component randomComponent(RandomSource& random, const Scene& scene) {
-    switch (random.below(5)) {
+    switch (random.below(6)) {
     case 0: return std::monostate{};
     case 1: {
         const MeshId mesh = maybeOneOf(random, scene.meshes, 0);
@@ -142,6 +142,10 @@ Material randomMaterial(RandomSource& random, const Scene& scene, Material mater
     material.metallicFactor = random.chance(50) ? 0.0f : 1.0f;
     material.transmissionFactor = random.chance(20) ? 1.0f : 0.0f;
     if (random.chance(20)) material.baseColorTexture.texture = maybeOneOf(random, scene.textures, 40);
+    if (random.chance(20)) {
+        material.scatterColor = randomVec(random, 0, 1);
+        material.scatterAnisotropy = random.between(-0.9f, 0.9f);
+    }
     return material;
 }
 
@@ -274,6 +278,10 @@ CommandPtr settingsCommand(RandomSource& random, const Scene& scene) {
     case 1: settings.render.tonemapper = static_cast<Tonemapper>(random.below(3)); break;
     case 2: settings.render.spp = 1 + static_cast<int>(random.below(256)); break;
     case 3: settings.environment.intensity = random.between(0, 4); break;
+    case 4:
+        settings.fog.density = random.chance(25) ? 0.0f : random.between(0.0f, 0.5f);
+        settings.fog.anisotropy = random.between(-0.9f, 0.9f);
+        break;
     default: {
         std::vector<NodeId> cameras = camerasOf(scene);
         cameras.push_back(NodeId{});

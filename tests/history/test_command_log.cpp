@@ -6,6 +6,7 @@
 #include "scene/history/command_json.h"
 #include "scene/history/history.h"
 #include "scene/history/set_node_field.h"
+#include "scene/history/settings_commands.h"
 
 #include <QtTest>
 
@@ -157,6 +158,34 @@ private slots:
     void aMissingFieldIsAnError() {
         QVERIFY_THROWS_EXCEPTION(nlohmann::json::exception,
                                  commandFromJson({{"type", "rename_node"}, {"interaction", 0}, {"node", 3}}));
+    }
+
+    // Fields added after logs were first written: their JSON carries them, and a log without them
+    // (written before fog and volume scattering existed) still replays, with the defaults.
+    void fogAndScatteringRoundTripAndMayBeMissing() {
+        SampleIds ids;
+        Scene scene = sampleScene(&ids);
+        ProjectSettings settings = scene.settings;
+        settings.fog = {.density = 0.25f, .color = {0.5f, 0.75f, 1.0f}, .anisotropy = -0.5f, .heightFalloff = 0.1f, .baseHeight = 3.0f};
+        nlohmann::json settingsJson = commandToJson(SetProjectSettings(settings));
+        QVERIFY(settingsJson.dump().find("heightFalloff") != std::string::npos);
+        commandFromJson(nlohmann::json::parse(settingsJson.dump()))->apply(scene);
+        QVERIFY(scene.settings.fog == settings.fog);
+        settingsJson["settings"].erase("fog");
+        commandFromJson(settingsJson)->apply(scene);
+        QVERIFY(scene.settings.fog == Fog{});
+
+        Material red = scene.materials.at(ids.red);
+        red.scatterColor = {0.25f, 0.5f, 1.0f};
+        red.scatterAnisotropy = 0.75f;
+        nlohmann::json materialJson = commandToJson(SetAsset<Material>(ids.red, red));
+        commandFromJson(nlohmann::json::parse(materialJson.dump()))->apply(scene);
+        QVERIFY(scene.materials.at(ids.red) == red);
+        materialJson["value"].erase("scatterColor");
+        materialJson["value"].erase("scatterAnisotropy");
+        commandFromJson(materialJson)->apply(scene);
+        QVERIFY(scene.materials.at(ids.red).scatterColor == glm::vec3(0.0f));
+        QCOMPARE(scene.materials.at(ids.red).scatterAnisotropy, 0.0f);
     }
 
     void infiniteAttenuationDistanceSurvives() {

@@ -235,6 +235,14 @@ private slots:
         ProjectSettings environment = scene.settings;
         environment.environment.intensity = 0.5f;
         QCOMPARE(SetProjectSettings(environment).apply(scene).flags, static_cast<std::uint32_t>(Change::Environment));
+
+        // Fog re-uploads the scene as the environment does, one way and back.
+        ProjectSettings fog = scene.settings;
+        fog.fog.density = 0.2f;
+        SetProjectSettings fogEdit(fog);
+        QCOMPARE(fogEdit.apply(scene).flags, static_cast<std::uint32_t>(Change::Environment));
+        QCOMPARE(fogEdit.revert(scene).flags, static_cast<std::uint32_t>(Change::Environment));
+        QCOMPARE(scene.settings.fog.density, 0.0f);
     }
 
     void changeSetsMergeFlagsAndIds() {
