@@ -157,9 +157,11 @@ GLINT_JSON_TYPE_WITH_DEFAULT(TaaParameters, blend, clip, clipGamma, perceptualBl
 GLINT_JSON_TYPE_WITH_DEFAULT(SvgfParameters, iterations, alpha, momentsAlpha, sigmaLuminance,
                                                 sigmaNormal, sigmaDepth, fireflyRatio)
 GLINT_JSON_TYPE_WITH_DEFAULT(BloomParameters, strength, radius)
-// With defaults: command logs written before the reconstruction parameters existed still replay.
+GLINT_JSON_TYPE_WITH_DEFAULT(AdaptiveSampling, threshold, minSamples)
+// With defaults: command logs written before the reconstruction parameters, motion blur and
+// adaptive sampling existed still replay.
 GLINT_JSON_TYPE_WITH_DEFAULT(RenderSettings, configuration, width, height, spp, bounces, seed,
-                                                exposure, tonemapper, clamp, taa, svgf, bloom)
+                                                exposure, tonemapper, clamp, shutter, taa, svgf, bloom, adaptive)
 GLINT_JSON_TYPE(Timeline, start, end, fpsNumerator, fpsDenominator)
 GLINT_JSON_TYPE_WITH_DEFAULT(OutputSettings, path, aovs, passes, codec)
 GLINT_JSON_TYPE(Fog, density, color, anisotropy, heightFalloff, baseHeight)

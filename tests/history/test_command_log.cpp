@@ -188,6 +188,25 @@ private slots:
         QCOMPARE(scene.materials.at(ids.red).scatterAnisotropy, 0.0f);
     }
 
+    // Every render setting survives a log (shutter and adaptive sampling were once left out, so
+    // replaying a log dropped them); a log without them replays with the defaults.
+    void everyRenderSettingSurvivesTheLog() {
+        ProjectSettings settings;
+        settings.render.shutter = 0.5f;
+        settings.render.adaptive = {.threshold = 0.02f, .minSamples = 48};
+        settings.render.bloom.strength = 0.25f;
+        const nlohmann::json written = commandToJson(SetProjectSettings(settings));
+        Scene scene;
+        commandFromJson(nlohmann::json::parse(written.dump()))->apply(scene);
+        QVERIFY(scene.settings.render == settings.render);
+        nlohmann::json old = written;
+        old["settings"]["render"].erase("shutter");
+        old["settings"]["render"].erase("adaptive");
+        commandFromJson(old)->apply(scene);
+        QCOMPARE(scene.settings.render.shutter, 0.0f);
+        QVERIFY(scene.settings.render.adaptive == AdaptiveSampling{});
+    }
+
     void infiniteAttenuationDistanceSurvives() {
         SampleIds ids;
         Scene scene = sampleScene(&ids);
