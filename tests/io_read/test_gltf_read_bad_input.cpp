@@ -366,6 +366,32 @@ private slots:
         QCOMPARE(QString::fromStdString(messages[1]), QStringLiteral("materials[0].pbrMetallicRoughness.roughnessFactor is -5, outside 0..1: clamped to 0"));
     }
 
+    // GLINT_materials_volume_scatter: a scattered share above 1 would add light and |g| = 1 is a
+    // delta lobe, so both are clamped like glTF's own factors, each one named.
+    void volumeScatterOutOfRangeIsClamped()
+    {
+        Json doc = triangle().finish();
+        doc["materials"] = Json::parse(R"([{"extensions": {"GLINT_materials_volume_scatter": {"scatterColor": [1.5, -0.5, 0.5], "scatterAnisotropy": 1}}}])");
+        doc["meshes"][0]["primitives"][0]["material"] = 0;
+        const LoadResult r = loadJson(doc);
+        const Material& m = r.scene.materials.begin()->second;
+        QCOMPARE(m.scatterColor, glm::vec3(1.0f, 0.0f, 0.5f));
+        QCOMPARE(m.scatterAnisotropy, 0.99f);
+        std::vector<std::string> messages;
+        for (const Warning& w : r.warnings)
+            if (w.code == "invalid-value" && w.file == "test.gltf") messages.push_back(w.message);
+        QCOMPARE(messages.size(), std::size_t(3));
+        const QString at = QStringLiteral("materials[0].extensions.GLINT_materials_volume_scatter.");
+        QCOMPARE(QString::fromStdString(messages[0]), at + QStringLiteral("scatterColor[0] is 1.5, outside 0..1: clamped to 1"));
+        QCOMPARE(QString::fromStdString(messages[1]), at + QStringLiteral("scatterColor[1] is -0.5, outside 0..1: clamped to 0"));
+        QCOMPARE(QString::fromStdString(messages[2]), at + QStringLiteral("scatterAnisotropy is 1, outside -0.99..0.99: clamped to 0.99"));
+
+        doc["materials"][0]["extensions"]["GLINT_materials_volume_scatter"] = {{"scatterAnisotropy", -2}};
+        QCOMPARE(loadJson(doc).scene.materials.begin()->second.scatterAnisotropy, -0.99f);
+        doc["materials"][0]["extensions"]["GLINT_materials_volume_scatter"] = {{"scatterColor", {1, 1}}};
+        GLINT_EXPECT_ERROR(loadJson(doc), "wrong-type", "scatterColor");
+    }
+
     void indicesMustBeUnsignedIntegers()
     {
         Json doc = triangle().finish();

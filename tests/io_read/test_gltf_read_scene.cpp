@@ -307,6 +307,38 @@ private slots:
         QVERIFY(r.scene.unsupported.empty());
     }
 
+    // Glint's own volume scattering: read into the material, not kept as unknown, not named as
+    // dropped; its own nested extensions and extras are named (the object is rebuilt on save).
+    void volumeScatterIsRead()
+    {
+        Json doc = triangle().finish();
+        doc["materials"] = Json::parse(R"([{"extensions": {
+            "KHR_materials_volume": {"thicknessFactor": 0.2, "attenuationDistance": 0.5, "attenuationColor": [0.8, 0.9, 1]},
+            "GLINT_materials_volume_scatter": {"scatterColor": [0.9, 0.5, 0.25], "scatterAnisotropy": -0.6}}},
+          {"extensions": {"GLINT_materials_volume_scatter": {"scatterAnisotropy": 0.3, "extras": {"x": 1}}}},
+          {"extensions": {"GLINT_materials_volume_scatter": {}}}])");
+        const LoadResult r = loadJson(doc);
+        QCOMPARE(r.scene.materials.size(), std::size_t(3));
+        auto it = r.scene.materials.begin();
+        const Material& full = (it++)->second;
+        QCOMPARE(full.scatterColor, glm::vec3(0.9f, 0.5f, 0.25f));
+        QCOMPARE(full.scatterAnisotropy, -0.6f);
+        QCOMPARE(full.attenuationDistance, 0.5f);
+        QVERIFY(full.unknown.is_null() || full.unknown.empty());
+        const Material& partial = (it++)->second;
+        QCOMPARE(partial.scatterColor, glm::vec3(0.0f)); // the default where a key is left out
+        QCOMPARE(partial.scatterAnisotropy, 0.3f);
+        const Material& empty = it->second;
+        QVERIFY(empty == Material{});
+        std::vector<std::string> dropped;
+        for (const Warning& w : r.scene.unsupported)
+            if (w.code == "extension-dropped") dropped.push_back(w.message);
+        QCOMPARE(dropped.size(), std::size_t(1));
+        QCOMPARE(QString::fromStdString(dropped[0]),
+                 QStringLiteral("materials[1].extensions.GLINT_materials_volume_scatter has extras, which Glint does not keep"));
+        QVERIFY(!hasWarning(r.warnings, "invalid-value"));
+    }
+
     void unknownContentIsKeptVerbatim()
     {
         Json doc = triangle().finish();

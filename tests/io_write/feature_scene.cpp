@@ -66,6 +66,8 @@ Material everyExtension(const TextureIds& t)
     m.thicknessTexture = {.texture = t.blue};
     m.attenuationDistance = 2.0f;
     m.attenuationColor = {0.9f, 0.95f, 1.0f};
+    m.scatterColor = {0.8f, 0.7f, 0.6f};
+    m.scatterAnisotropy = 0.4f;
     m.alphaMode = AlphaMode::Mask;
     m.alphaCutoff = 0.3f;
     m.unknown = {{"extensions", {{"EXT_glint_test_unknown", {{"kept", true}, {"value", 1.5}}}}}, {"extras", {{"note", "verbatim"}}}};
@@ -161,6 +163,7 @@ void addSettings(Scene& scene, NodeId camera)
     s.environment.file = "studio.hdr";
     s.environment.intensity = 0.7f;
     s.environment.rotationDegrees = 90.0f;
+    s.fog = {.density = 0.02f, .color = {0.9f, 0.9f, 1.0f}, .anisotropy = 0.5f, .heightFalloff = 0.1f, .baseHeight = -1.0f};
     s.output.path = "frames/shot_####.exr";
     s.lightUnits = LightUnits::Raw;
 }

@@ -87,7 +87,7 @@ private slots:
         QCOMPARE(j["extras"]["sceneNote"].get<double>(), 0.1);
         const std::vector<std::string> used = j["extensionsUsed"];
         const std::vector<std::string> expected{"EXT_glint_test_node", "EXT_glint_test_unknown", "GLINT_baked_camera_path",
-                                                "GLINT_camera", "GLINT_camera_path", "GLINT_light", "GLINT_node",
+                                                "GLINT_camera", "GLINT_camera_path", "GLINT_light", "GLINT_materials_volume_scatter", "GLINT_node",
                                                 "GLINT_shape", "GLINT_shape_fallback", "KHR_lights_punctual",
                                                 "KHR_materials_emissive_strength", "KHR_materials_ior",
                                                 "KHR_materials_specular", "KHR_materials_transmission",
@@ -185,6 +185,8 @@ private slots:
         QCOMPARE(ext["KHR_materials_ior"]["ior"].get<double>(), 1.33);
         QCOMPARE(ext["KHR_materials_volume"]["thicknessFactor"].get<double>(), 0.1);
         QCOMPARE(ext["KHR_materials_volume"]["attenuationDistance"].get<double>(), 2.0);
+        QVERIFY(ext["GLINT_materials_volume_scatter"]["scatterColor"] == json({0.8, 0.7, 0.6}));
+        QCOMPARE(ext["GLINT_materials_volume_scatter"]["scatterAnisotropy"].get<double>(), 0.4);
         QVERIFY(ext["EXT_glint_test_unknown"] == json({{"kept", true}, {"value", 1.5}}));
         QCOMPARE(m["extras"]["note"].get<std::string>(), std::string("verbatim"));
         QCOMPARE(m["alphaMode"].get<std::string>(), std::string("MASK"));
@@ -193,6 +195,39 @@ private slots:
         QVERIFY(!plain.contains("extensions")); // defaults write no extension
         QCOMPARE(plain["alphaMode"].get<std::string>(), std::string("BLEND"));
         QCOMPARE(plain["doubleSided"].get<bool>(), true);
+    }
+
+    // GLINT_materials_volume_scatter is written only where a value differs from its default, each
+    // value alone, and reads back to the same material.
+    void volumeScatterIsWrittenWhenSetAndReadsBack()
+    {
+        Scene scene;
+        Material colourOnly;
+        colourOnly.scatterColor = {0.5f, 0.25f, 1.0f};
+        Material anisotropyOnly;
+        anisotropyOnly.scatterAnisotropy = -0.99f;
+        scene.materials.add(colourOnly);
+        scene.materials.add(anisotropyOnly);
+        scene.materials.add(Material{});
+        const std::vector<std::uint8_t> glb = writeGlb(scene);
+        const json j = test::glbJson(glb);
+        const json& first = j["materials"][0]["extensions"]["GLINT_materials_volume_scatter"];
+        QVERIFY(first == json({{"scatterColor", {0.5, 0.25, 1}}}));
+        const json& second = j["materials"][1]["extensions"]["GLINT_materials_volume_scatter"];
+        QVERIFY(second == json({{"scatterAnisotropy", -0.99}}));
+        QVERIFY(!j["materials"][2].contains("extensions"));
+        const std::vector<std::string> used = j["extensionsUsed"];
+        QVERIFY(std::find(used.begin(), used.end(), "GLINT_materials_volume_scatter") != used.end());
+        QVERIFY(!j.contains("extensionsRequired"));
+
+        QTemporaryDir dir;
+        const std::filesystem::path file = dirPath(dir) / "scatter.glb";
+        saveScene(scene, file);
+        const LoadResult loaded = loadScene(file);
+        // (The scene has no nodes: "no-scene" is expected, nothing about the materials.)
+        QVERIFY(!hasWarning(loaded.warnings, "invalid-value"));
+        QVERIFY(!hasWarning(loaded.warnings, "extension-dropped"));
+        QVERIFY(loaded.scene.materials == scene.materials);
     }
 
     void buffersAreAlignedAndPositionsBounded()

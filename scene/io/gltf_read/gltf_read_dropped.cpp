@@ -94,7 +94,7 @@ void checkMaterials(DroppedMembers& d)
         const auto ext = m.find("extensions");
         if (ext == m.end() || !ext->is_object()) continue;
         for (const char* name : {"KHR_materials_emissive_strength", "KHR_materials_specular", "KHR_materials_transmission",
-                                 "KHR_materials_ior", "KHR_materials_volume"})
+                                 "KHR_materials_ior", "KHR_materials_volume", "GLINT_materials_volume_scatter"})
             d.checkMember(*ext, name, where + ".extensions");
     }
 }

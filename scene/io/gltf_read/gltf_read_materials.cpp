@@ -1,5 +1,5 @@
-// glTF metallic-roughness materials plus the KHR_materials_* extensions Glint renders and
-// KHR_texture_transform on every texture reference.
+// glTF metallic-roughness materials plus the KHR_materials_* extensions Glint renders, its own
+// GLINT_materials_volume_scatter, and KHR_texture_transform on every texture reference.
 #include "gltf_read_json.h"
 #include "gltf_reader.h"
 
@@ -9,6 +9,9 @@
 namespace glint {
 
 namespace {
+
+// The bound of GLINT_materials_volume_scatter's Henyey-Greenstein g, as the project's fog's.
+constexpr float kMaxScatterAnisotropy = 0.99f;
 
 TextureTransform readTextureTransform(const JsonReader& json, const Json& ext, const std::string& where)
 {
@@ -87,6 +90,12 @@ void readExtensions(const GltfReadContext& ctx, const Json& source, const std::s
         if (json.member(*e, "attenuationDistance")) m.attenuationDistance = json.number(*e, "attenuationDistance", 0.0f, w);
         m.attenuationColor = json.vec3(*e, "attenuationColor", m.attenuationColor, w);
     }
+    // Glint's own: the share of KHR_materials_volume's attenuation that scatters (docs/FILE_FORMAT.md).
+    if (const Json* e = json.extension(source, "GLINT_materials_volume_scatter", where)) {
+        const std::string w = at + "GLINT_materials_volume_scatter";
+        m.scatterColor = json.vec3(*e, "scatterColor", m.scatterColor, w);
+        m.scatterAnisotropy = json.number(*e, "scatterAnisotropy", m.scatterAnisotropy, w);
+    }
 }
 
 // glTF bounds these factors; renderers disagree on what a value beyond them means (a roughness of
@@ -118,6 +127,11 @@ void clampFactors(GltfReadContext& ctx, Material& m, const std::string& where)
     clampFactor(ctx, m.specularFactor, 0.0f, 1.0f, ext + "KHR_materials_specular.specularFactor");
     clampFactor(ctx, m.transmissionFactor, 0.0f, 1.0f, ext + "KHR_materials_transmission.transmissionFactor");
     clampFactor(ctx, m.thicknessFactor, 0.0f, kUnbounded, ext + "KHR_materials_volume.thicknessFactor");
+    // A scattered share above 1 would add light; |g| = 1 is a delta lobe the sampling cannot take.
+    const std::string scatter = ext + "GLINT_materials_volume_scatter.";
+    for (int i = 0; i < 3; ++i)
+        clampFactor(ctx, m.scatterColor[i], 0.0f, 1.0f, scatter + "scatterColor[" + std::to_string(i) + "]");
+    clampFactor(ctx, m.scatterAnisotropy, -kMaxScatterAnisotropy, kMaxScatterAnisotropy, scatter + "scatterAnisotropy");
 }
 
 Material readMaterial(GltfReadContext& ctx, std::size_t index)
@@ -138,7 +152,7 @@ Material readMaterial(GltfReadContext& ctx, std::size_t index)
     readExtensions(ctx, source, where, m);
     clampFactors(ctx, m, where);
     m.unknown = unknownMembers(source, {"KHR_materials_emissive_strength", "KHR_materials_specular", "KHR_materials_transmission",
-                                        "KHR_materials_ior", "KHR_materials_volume"});
+                                        "KHR_materials_ior", "KHR_materials_volume", "GLINT_materials_volume_scatter"});
     return m;
 }
 

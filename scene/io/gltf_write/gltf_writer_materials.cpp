@@ -86,6 +86,16 @@ void writeTransmissionAndVolume(GltfWriteContext& ctx, nlohmann::json& out, cons
     if (!volume.empty()) out["extensions"]["KHR_materials_volume"] = std::move(volume);
 }
 
+// Glint's own extension; extensionsUsed lists it (it is collected from what is written), never
+// extensionsRequired: other tools render the volume as absorption only.
+void writeVolumeScatter(nlohmann::json& out, const Material& m)
+{
+    nlohmann::json scatter = nlohmann::json::object();
+    if (m.scatterColor != glm::vec3(0.0f)) scatter["scatterColor"] = vecJson(m.scatterColor);
+    if (m.scatterAnisotropy != 0.0f) scatter["scatterAnisotropy"] = jsonFloat(m.scatterAnisotropy);
+    if (!scatter.empty()) out["extensions"]["GLINT_materials_volume_scatter"] = std::move(scatter);
+}
+
 void writeAlpha(nlohmann::json& out, const Material& m)
 {
     if (m.alphaMode == AlphaMode::Mask) out["alphaMode"] = "MASK";
@@ -104,6 +114,7 @@ nlohmann::json materialJson(GltfWriteContext& ctx, const Material& m)
     writeEmission(ctx, out, m);
     writeSpecular(ctx, out, m);
     writeTransmissionAndVolume(ctx, out, m);
+    writeVolumeScatter(out, m);
     writeAlpha(out, m);
     mergeUnknown(out, m.unknown);
     return out;
