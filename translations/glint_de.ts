@@ -449,6 +449,10 @@
         <source>Change adaptive sampling</source>
         <translation>Adaptives Sampling ändern</translation>
     </message>
+    <message>
+        <source>Change fog</source>
+        <translation>Nebel ändern</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Configurations</name>
@@ -2272,6 +2276,34 @@
     <message>
         <source>Adaptive minimum samples (0 = automatic)</source>
         <translation>Adaptive Mindest-Samples (0 = automatisch)</translation>
+    </message>
+    <message>
+        <source>Scatter anisotropy</source>
+        <translation>Streuanisotropie</translation>
+    </message>
+    <message>
+        <source>Scatter colour</source>
+        <translation>Streufarbe</translation>
+    </message>
+    <message>
+        <source>Fog</source>
+        <translation>Nebel</translation>
+    </message>
+    <message>
+        <source>Density (1/m)</source>
+        <translation>Dichte (1/m)</translation>
+    </message>
+    <message>
+        <source>Anisotropy</source>
+        <translation>Anisotropie</translation>
+    </message>
+    <message>
+        <source>Height falloff (1/m)</source>
+        <translation>Höhenabfall (1/m)</translation>
+    </message>
+    <message>
+        <source>Base height (m)</source>
+        <translation>Basishöhe (m)</translation>
     </message>
 </context>
 <context>

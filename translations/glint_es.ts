@@ -449,6 +449,10 @@
         <source>Change adaptive sampling</source>
         <translation>Cambiar muestreo adaptativo</translation>
     </message>
+    <message>
+        <source>Change fog</source>
+        <translation>Cambiar niebla</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Configurations</name>
@@ -2272,6 +2276,34 @@
     <message>
         <source>Adaptive minimum samples (0 = automatic)</source>
         <translation>Muestras mínimas adaptativas (0 = automático)</translation>
+    </message>
+    <message>
+        <source>Scatter anisotropy</source>
+        <translation>Anisotropía de dispersión</translation>
+    </message>
+    <message>
+        <source>Scatter colour</source>
+        <translation>Color de dispersión</translation>
+    </message>
+    <message>
+        <source>Fog</source>
+        <translation>Niebla</translation>
+    </message>
+    <message>
+        <source>Density (1/m)</source>
+        <translation>Densidad (1/m)</translation>
+    </message>
+    <message>
+        <source>Anisotropy</source>
+        <translation>Anisotropía</translation>
+    </message>
+    <message>
+        <source>Height falloff (1/m)</source>
+        <translation>Atenuación con la altura (1/m)</translation>
+    </message>
+    <message>
+        <source>Base height (m)</source>
+        <translation>Altura base (m)</translation>
     </message>
 </context>
 <context>

@@ -449,6 +449,10 @@
         <source>Change adaptive sampling</source>
         <translation>Modifier l'échantillonnage adaptatif</translation>
     </message>
+    <message>
+        <source>Change fog</source>
+        <translation>Modifier le brouillard</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Configurations</name>
@@ -2272,6 +2276,34 @@
     <message>
         <source>Adaptive minimum samples (0 = automatic)</source>
         <translation>Échantillons minimaux adaptatifs (0 = automatique)</translation>
+    </message>
+    <message>
+        <source>Scatter anisotropy</source>
+        <translation>Anisotropie de diffusion</translation>
+    </message>
+    <message>
+        <source>Scatter colour</source>
+        <translation>Couleur de diffusion</translation>
+    </message>
+    <message>
+        <source>Fog</source>
+        <translation>Brouillard</translation>
+    </message>
+    <message>
+        <source>Density (1/m)</source>
+        <translation>Densité (1/m)</translation>
+    </message>
+    <message>
+        <source>Anisotropy</source>
+        <translation>Anisotropie</translation>
+    </message>
+    <message>
+        <source>Height falloff (1/m)</source>
+        <translation>Décroissance avec la hauteur (1/m)</translation>
+    </message>
+    <message>
+        <source>Base height (m)</source>
+        <translation>Hauteur de base (m)</translation>
     </message>
 </context>
 <context>

@@ -449,6 +449,10 @@
         <source>Change adaptive sampling</source>
         <translation>Cambia campionamento adattivo</translation>
     </message>
+    <message>
+        <source>Change fog</source>
+        <translation>Cambia nebbia</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Configurations</name>
@@ -2272,6 +2276,34 @@
     <message>
         <source>Adaptive minimum samples (0 = automatic)</source>
         <translation>Campioni minimi adattivi (0 = automatico)</translation>
+    </message>
+    <message>
+        <source>Scatter anisotropy</source>
+        <translation>Anisotropia di diffusione</translation>
+    </message>
+    <message>
+        <source>Scatter colour</source>
+        <translation>Colore di diffusione</translation>
+    </message>
+    <message>
+        <source>Fog</source>
+        <translation>Nebbia</translation>
+    </message>
+    <message>
+        <source>Density (1/m)</source>
+        <translation>Densità (1/m)</translation>
+    </message>
+    <message>
+        <source>Anisotropy</source>
+        <translation>Anisotropia</translation>
+    </message>
+    <message>
+        <source>Height falloff (1/m)</source>
+        <translation>Attenuazione con l'altezza (1/m)</translation>
+    </message>
+    <message>
+        <source>Base height (m)</source>
+        <translation>Altezza di base (m)</translation>
     </message>
 </context>
 <context>

@@ -117,6 +117,7 @@ std::string describeSettingsEdit(const ProjectSettings& b, const ProjectSettings
         {b.environment.color != a.environment.color, QT_TRANSLATE_NOOP("glint::editor::CommandLabels", "Change environment colour")},
         {b.environment.intensity != a.environment.intensity, QT_TRANSLATE_NOOP("glint::editor::CommandLabels", "Change environment intensity")},
         {b.environment.rotationDegrees != a.environment.rotationDegrees, QT_TRANSLATE_NOOP("glint::editor::CommandLabels", "Rotate environment")},
+        {b.fog != a.fog, QT_TRANSLATE_NOOP("glint::editor::CommandLabels", "Change fog")},
         {b.activeCamera != a.activeCamera, QT_TRANSLATE_NOOP("glint::editor::CommandLabels", "Change active camera")},
         {b.timeline.start != a.timeline.start || b.timeline.end != a.timeline.end, QT_TRANSLATE_NOOP("glint::editor::CommandLabels", "Change timeline range")},
         {b.timeline.fpsNumerator != a.timeline.fpsNumerator || b.timeline.fpsDenominator != a.timeline.fpsDenominator,
@@ -178,7 +179,8 @@ std::string describeMaterialEdit(const Material& b, const Material& a) {
          QT_TRANSLATE_NOOP("glint::editor::CommandLabels", "Change specular")},
         {b.transmissionFactor != a.transmissionFactor, QT_TRANSLATE_NOOP("glint::editor::CommandLabels", "Change transmission")},
         {b.ior != a.ior, QT_TRANSLATE_NOOP("glint::editor::CommandLabels", "Change index of refraction")},
-        {b.thicknessFactor != a.thicknessFactor || b.attenuationDistance != a.attenuationDistance || b.attenuationColor != a.attenuationColor,
+        {b.thicknessFactor != a.thicknessFactor || b.attenuationDistance != a.attenuationDistance || b.attenuationColor != a.attenuationColor ||
+             b.scatterColor != a.scatterColor || b.scatterAnisotropy != a.scatterAnisotropy,
          QT_TRANSLATE_NOOP("glint::editor::CommandLabels", "Change volume")},
         {b.alphaMode != a.alphaMode || b.alphaCutoff != a.alphaCutoff, QT_TRANSLATE_NOOP("glint::editor::CommandLabels", "Change alpha mode")},
         {b.doubleSided != a.doubleSided, QT_TRANSLATE_NOOP("glint::editor::CommandLabels", "Change double sided")},

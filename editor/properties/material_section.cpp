@@ -43,6 +43,19 @@ void addFloat(PropertyForm* form, const MaterialBinding& m, const QString& label
         [m, member](double v, std::uint64_t i) { m.edit([&](Material& mat) { mat.*member = float(v); }, i); });
 }
 
+// GLINT_materials_volume_scatter's g, held to the range the glTF reader accepts (typing may go
+// past the slider's), so a saved material reads back without a clamp.
+constexpr double kMaxScatterAnisotropy = 0.99;
+
+void addScatterAnisotropy(PropertyForm* form, const MaterialBinding& m) {
+    form->addFloat(
+        PropertyForm::tr("Scatter anisotropy"), -kMaxScatterAnisotropy, kMaxScatterAnisotropy, 2,
+        [m] { return m.get() ? double(m.get()->scatterAnisotropy) : 0.0; },
+        [m](double v, std::uint64_t i) {
+            m.edit([&](Material& mat) { mat.scatterAnisotropy = float(std::clamp(v, -kMaxScatterAnisotropy, kMaxScatterAnisotropy)); }, i);
+        });
+}
+
 template <class Vec>
 void addColor(PropertyForm* form, const MaterialBinding& m, const QString& label, Vec Material::*member) {
     form->addColor(
@@ -261,6 +274,8 @@ PropertyForm* makeMaterialForm(Document& document, MaterialId material, const Re
     addTextureSlot(form, m, slotOf(&Material::thicknessTexture));
     addFloat(form, m, PropertyForm::tr("Attenuation distance (m)"), 0.01, 100.0, &Material::attenuationDistance);
     addColor<glm::vec3>(form, m, PropertyForm::tr("Attenuation colour"), &Material::attenuationColor);
+    addColor<glm::vec3>(form, m, PropertyForm::tr("Scatter colour"), &Material::scatterColor);
+    addScatterAnisotropy(form, m);
     form->addChoice(
         PropertyForm::tr("Alpha mode"), {PropertyForm::tr("Opaque"), PropertyForm::tr("Mask"), PropertyForm::tr("Blend")},
         [m] { return m.get() ? static_cast<int>(m.get()->alphaMode) : 0; },

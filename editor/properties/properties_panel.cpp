@@ -80,6 +80,7 @@ void PropertiesPanel::rebuild() {
         add(makeReconstructionForm(document_, report, content_));
         add(makeProjectForm(document_, report, content_));
         add(makeEnvironmentForm(document_, report, content_));
+        add(makeFogForm(document_, report, content_));
     } else if (!shown_.node) {
         auto* hint = new QLabel(tr("Select a node in the outliner or the viewport to edit it."), content_);
         hint->setWordWrap(true);

@@ -1,10 +1,11 @@
-// Environment and render settings: the project file's sections, edited as one settings command.
+// Environment, fog and render settings: the project file's sections, edited as one settings command.
 #include "sections.h"
 
 #include "configuration_names.h"
 #include "property_edits.h"
 
 #include "editor/outliner/node_names.h"
+#include "scene/io/project/project_file.h"
 
 #include <QComboBox>
 #include <QDir>
@@ -128,6 +129,31 @@ PropertyForm* makeEnvironmentForm(Document& document, const Report& report, QWid
         [edit](double v, std::uint64_t i) {
             edit([&](ProjectSettings& s) { s.environment.rotationDegrees = float(v); }, i);
         });
+    return form;
+}
+
+PropertyForm* makeFogForm(Document& document, const Report& report, QWidget* parent) {
+    // The project's fog (docs/MEDIA.md). Typing may go past a slider's range, so each value is
+    // held to what the project file accepts: a saved scene always opens again.
+    auto* form = new PropertyForm(document, PropertyForm::tr("Fog"), parent);
+    const Edit edit = settingsEditor(document, report);
+    const Fog& fog = document.scene().settings.fog;
+    form->addFloat(
+        PropertyForm::tr("Density (1/m)"), 0.0, 1.0, 4, [&fog] { return double(fog.density); },
+        [edit](double v, std::uint64_t i) { edit([&](ProjectSettings& s) { s.fog.density = float(std::max(v, 0.0)); }, i); });
+    form->addColor(
+        PropertyForm::tr("Colour"), [&fog] { return toQColor(fog.color.x, fog.color.y, fog.color.z); },
+        [edit](const QColor& c) { edit([&](ProjectSettings& s) { s.fog.color = toLinear(c); }, 0); });
+    const double g = kMaxFogAnisotropy;
+    form->addFloat(
+        PropertyForm::tr("Anisotropy"), -g, g, 2, [&fog] { return double(fog.anisotropy); },
+        [edit, g](double v, std::uint64_t i) { edit([&](ProjectSettings& s) { s.fog.anisotropy = float(std::clamp(v, -g, g)); }, i); });
+    form->addFloat(
+        PropertyForm::tr("Height falloff (1/m)"), 0.0, 2.0, 3, [&fog] { return double(fog.heightFalloff); },
+        [edit](double v, std::uint64_t i) { edit([&](ProjectSettings& s) { s.fog.heightFalloff = float(std::max(v, 0.0)); }, i); });
+    form->addFloat(
+        PropertyForm::tr("Base height (m)"), -10.0, 10.0, 2, [&fog] { return double(fog.baseHeight); },
+        [edit](double v, std::uint64_t i) { edit([&](ProjectSettings& s) { s.fog.baseHeight = float(v); }, i); });
     return form;
 }
 

@@ -46,6 +46,7 @@ MaterialId nodeMaterial(const Scene& scene, NodeId node, std::size_t primitive);
 // Bit i set: texture slot i (material_operations.h textureSlots()) holds a texture.
 std::uint32_t texturedSlots(const Scene& scene, MaterialId material);
 PropertyForm* makeEnvironmentForm(Document& document, const Report& report, QWidget* parent);
+PropertyForm* makeFogForm(Document& document, const Report& report, QWidget* parent);
 PropertyForm* makeRenderForm(Document& document, const Report& report, QWidget* parent);
 PropertyForm* makeProjectForm(Document& document, const Report& report, QWidget* parent);
 PropertyForm* makeReconstructionForm(Document& document, const Report& report, QWidget* parent);

@@ -14,6 +14,7 @@
 
 #include <QAbstractItemModelTester>
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QLabel>
 #include <QToolButton>
 #include <QImage>
@@ -293,6 +294,28 @@ private slots:
         document.undo();
         QCOMPARE(document.scene().samplers.at(sampler).wrapS, Wrap::Repeat);
         QCOMPARE(document.scene().materials.at(s.blue).baseColorTexture.transform.offset.x, 0.0f);
+    }
+
+    // GLINT_materials_volume_scatter's fields beside the attenuation: one undo step each, named
+    // "Change volume", anisotropy typed past its range held to it.
+    void scatterFieldsEditTheVolume() {
+        Document document;
+        Sample s = sample();
+        document.newScene(s.scene);
+        PropertiesPanel panel(document, false);
+        document.setSelection({s.ball});
+        QTRY_VERIFY(glint::editor::test::fieldNamed<QWidget>(panel, "Scatter colour") != nullptr);
+        auto* anisotropy = glint::editor::test::fieldNamed<QDoubleSpinBox>(panel, "Scatter anisotropy");
+        QVERIFY(anisotropy);
+        anisotropy->setValue(0.5);
+        QCOMPARE(document.scene().materials.at(s.grey).scatterAnisotropy, 0.5f);
+        QCOMPARE(document.history().label(document.history().index() - 1), std::string("Change volume"));
+        anisotropy->setValue(-3.0);
+        QCOMPARE(document.scene().materials.at(s.grey).scatterAnisotropy, -0.99f);
+        document.undo();
+        document.undo();
+        QCOMPARE(document.scene().materials.at(s.grey).scatterAnisotropy, 0.0f);
+        QVERIFY(document.scene().materials.at(s.grey) == s.scene.materials.at(s.grey));
     }
 
     void missingAndBrokenFilesAreNamed() {

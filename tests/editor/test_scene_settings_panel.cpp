@@ -1,8 +1,9 @@
 // The scene settings panel (offscreen, no GL): in the real-time reconstruction section a slider
 // drag is one undo step, undo restores the default exactly, and the values reach the saved project
-// file; the active camera and the frame rate are chosen there too.
+// file; the active camera and the frame rate are chosen there too, and the fog is edited and undone.
 #include "editor_fixtures.h"
 
+#include "editor/history_view/command_labels.h"
 #include "editor/properties/properties_panel.h"
 #include "editor/properties/property_form.h"
 
@@ -10,6 +11,7 @@
 #include <QDoubleSpinBox>
 #include <QLineEdit>
 #include <QFile>
+#include <QGroupBox>
 #include <QSlider>
 #include <QSpinBox>
 #include <QTemporaryDir>
@@ -117,6 +119,59 @@ private slots:
         document.undo();
         QVERIFY(!document.isModified());
         QCOMPARE(camera->currentIndex(), 0);
+    }
+
+    // The Fog section: after Environment, each field one undo step named "Change fog", typed
+    // values held to what the project file accepts, and the fog saved with the project.
+    void fogIsEditedUndoneAndSaved() {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        Document document;
+        QCOMPARE(document.open(cornellBox()), QString());
+        PropertiesPanel panel(document, true);
+        const QList<QGroupBox*> sections = panel.findChildren<QGroupBox*>(); // in the panel's order
+        const auto position = [&](const QString& title) {
+            for (qsizetype i = 0; i < sections.size(); ++i)
+                if (sections[i]->title() == title) return i;
+            return qsizetype(-1);
+        };
+        QVERIFY(position("Environment") >= 0);
+        QCOMPARE(position("Fog"), position("Environment") + 1);
+
+        auto* density = fieldNamed<QDoubleSpinBox>(panel, "Density (1/m)");
+        QVERIFY(density);
+        QCOMPARE(density->value(), 0.0);
+        density->setValue(0.05);
+        QCOMPARE(document.scene().settings.fog.density, 0.05f);
+        QCOMPARE(document.history().count(), std::size_t{1});
+        const auto lastLabel = [&] { return commandLabel(document.history().label(document.history().index() - 1)); };
+        QCOMPARE(lastLabel(), QString("Change fog"));
+        QVERIFY(document.isModified());
+        document.undo();
+        QCOMPARE(document.scene().settings.fog.density, 0.0f);
+        QCOMPARE(density->value(), 0.0); // the field follows the undo
+        QCOMPARE(commandLabel(document.history().label(document.history().index())), QString("Change fog")); // the redo step
+        QVERIFY(!document.isModified());
+        QVERIFY(document.scene().settings.fog == Fog{});
+
+        // Typed past the range: held to it (a negative density is no edit at all).
+        auto* anisotropy = fieldNamed<QDoubleSpinBox>(panel, "Anisotropy");
+        QVERIFY(anisotropy);
+        anisotropy->setValue(1.5);
+        QCOMPARE(document.scene().settings.fog.anisotropy, 0.99f);
+        density->setValue(-1.0);
+        QCOMPARE(document.scene().settings.fog.density, 0.0f);
+        fieldNamed<QDoubleSpinBox>(panel, "Height falloff (1/m)")->setValue(0.5);
+        fieldNamed<QDoubleSpinBox>(panel, "Base height (m)")->setValue(-2.0);
+        density->setValue(0.1);
+        const Fog edited = document.scene().settings.fog;
+        QCOMPARE(edited.heightFalloff, 0.5f);
+        QCOMPARE(edited.baseHeight, -2.0f);
+
+        QCOMPARE(document.saveAs(dir.filePath("box.gltf")), QString());
+        Document reopened;
+        QCOMPARE(reopened.open(dir.filePath("box.gltf")), QString());
+        QVERIFY(reopened.scene().settings.fog == edited);
     }
 };
 
