@@ -43,6 +43,8 @@ namespace {
 #include "sampling/environment_sampling.glsl"
 #include "sampling/sphere_light.glsl"
 #include "sampling/shape_emitter.glsl"
+#include "sampling/phase.glsl"
+#include "sampling/fog_density.glsl"
 #include "bsdf/bsdf.glsl"
 } // namespace
 #pragma GCC diagnostic pop
