@@ -39,6 +39,13 @@ void bindTexture2D(const gl::Texture& texture, GLuint unit, GLint location) {
     glUniform1i(location, static_cast<GLint>(unit));
 }
 
+// media.glsl's fog uniforms; density 0 leaves the variant's paths in vacuum.
+void bindFog(const gl::ShaderProgram& program, const Fog& fog) {
+    glUniform4f(program.uniform("uFog"), fog.density, fog.heightFalloff, fog.baseHeight, 0.0f);
+    glUniform3fv(program.uniform("uFogAlbedo"), 1, glm::value_ptr(glm::clamp(fog.color, 0.0f, 1.0f)));
+    glUniform1f(program.uniform("uFogAnisotropy"), glm::clamp(fog.anisotropy, -0.99f, 0.99f));
+}
+
 } // namespace
 
 gl::Buffer uploadGgxEnergyTables() {
@@ -70,6 +77,7 @@ GpuScene::GpuScene(PreparedScene prepared)
     : features_(prepared.features),
       packed_(std::move(prepared.packed)),
       environment_(prepared.environment),
+      fog_(prepared.fog),
       shapes_(vec4Buffer("the shape buffer", packed_.shapes)),
       materials_(vec4Buffer("the material buffer", packed_.materials)),
       lights_(vec4Buffer("the light buffer", packed_.lights)),
@@ -121,8 +129,9 @@ bool GpuScene::updateMaterials(const Scene& scene) {
     features.alpha = features.singleSided = false;
     addMeshMaterialFeatures(scene, features);
     features.extensionTextures = extensionTexturesUsed(scene, materials, textureSlots_);
+    features.media = usesMedia(scene);
     if (features.alpha != features_.alpha || features.singleSided != features_.singleSided ||
-        features.extensionTextures != features_.extensionTextures)
+        features.extensionTextures != features_.extensionTextures || features.media != features_.media)
         return false; // another variant
     PackedScene repacked = packScene(scene, &textureSlots_);
     if (repacked.materialIndex != packed_.materialIndex || repacked.shapes != packed_.shapes) return false;
@@ -142,6 +151,7 @@ void GpuScene::bind(const gl::ShaderProgram& program) const {
     if (features_.emissiveShapes) glUniform1f(program.uniform("uShapeEmitterPower"), packed_.shapeEmitterPower);
     meshes_.bind(program, firstMeshUnit);
     if (features_.textures) textureArrays_.bind(program, firstTextureUnit);
+    if (features_.media) bindFog(program, fog_);
     const glm::vec3 colour = environment_.color * environment_.intensity;
     glUniform3fv(program.uniform("uEnvironmentColor"), 1, glm::value_ptr(colour));
     if (features_.environmentMap) {

@@ -56,6 +56,7 @@ private:
     SceneFeatures features_;
     PackedScene packed_;
     Environment environment_;
+    Fog fog_;
     gl::TextureBuffer shapes_;
     gl::TextureBuffer materials_;
     gl::TextureBuffer lights_;

@@ -72,12 +72,23 @@ void packLight(PackedScene& out, const Light& light, const glm::mat4& worldFromL
     out.sphereLamps = out.sphereLamps || radius > 0.0f;
 }
 
+glm::vec4 scatteringTexel(const Material& m) {
+    if (!scatters(m)) return glm::vec4(0.0f);
+    return glm::vec4(glm::clamp(m.scatterColor, 0.0f, 1.0f), glm::clamp(m.scatterAnisotropy, -0.99f, 0.99f));
+}
+
 } // namespace
+
+bool scatters(const Material& m) {
+    return std::isfinite(m.attenuationDistance) && m.attenuationDistance > 0.0f && m.attenuationColor != glm::vec3(1.0f) &&
+           glm::any(glm::greaterThan(m.scatterColor, glm::vec3(0.0f)));
+}
 
 // Texels: base colour; emission, roughness; metallic, specular, transmission, IOR; specular colour,
 // thickness (0: thin-walled); attenuation colour, attenuation distance (0: no absorption); alpha mode
 // (0 opaque, 1 mask, 2 blend), alpha cutoff, double-sided, 0 (an area light's material: 1, front
-// face only); then the texture references (texture_refs.h), the emissive one's last w holding the
+// face only); the volume's scattering albedo, Henyey-Greenstein g (all 0 where the volume only
+// absorbs: media.glsl); then the texture references (texture_refs.h), the emissive one's last w holding the
 // luminance light sampling assumes for an emissive-textured mesh triangle (sampledEmission).
 std::vector<glm::vec4> packMaterial(const Material& m, const Scene* scene, const TextureSet* textures) {
     const bool absorbs = std::isfinite(m.attenuationDistance) && m.attenuationDistance > 0.0f;
@@ -87,7 +98,8 @@ std::vector<glm::vec4> packMaterial(const Material& m, const Scene* scene, const
              glm::clamp(m.transmissionFactor, 0.0f, 1.0f), std::max(m.ior, 1.0f)},
             glm::vec4(m.specularColorFactor, std::max(m.thicknessFactor, 0.0f)),
             glm::vec4(m.attenuationColor, absorbs ? m.attenuationDistance : 0.0f),
-            {static_cast<float>(m.alphaMode), m.alphaCutoff, m.doubleSided ? 1.0f : 0.0f, 0.0f}};
+            {static_cast<float>(m.alphaMode), m.alphaCutoff, m.doubleSided ? 1.0f : 0.0f, 0.0f},
+            scatteringTexel(m)};
     appendMaterialTextureRefs(texels, scene, m, textures);
     if (scene && hasEmissiveTexture(*scene, m))
         texels[materialBaseTexels + textureRefTexels * emissiveRef + 2].w = emissionLuminance(sampledEmission(*scene, m, textures));

@@ -15,8 +15,8 @@ namespace glint::renderer {
 // Shape texels: kind, material, id, height; localFromWorld (3 rows); radius, size; emitter (power,
 // cumulative power, 0, |det worldFromLocal|); worldFromLocal (3 rows). Layout: shaders/pathtrace/shapes.glsl.
 inline constexpr int shapeTexels = 9;
-inline constexpr int materialBaseTexels = 6; // factors, then alpha mode and sidedness
-inline constexpr int materialTexels = 30;    // base texels + 8 texture references of 3 texels (texture_refs.h)
+inline constexpr int materialBaseTexels = 7; // factors, alpha mode and sidedness, then volume scattering
+inline constexpr int materialTexels = 31;    // base texels + 8 texture references of 3 texels (texture_refs.h)
 inline constexpr int lightTexels = 4;
 
 struct PackedScene {
@@ -41,6 +41,10 @@ struct PackedScene {
 PackedScene packScene(const Scene& scene, const TextureSet* textures = nullptr);
 
 // One material record; texture references are empty unless `scene` and `textures` are given.
+// Whether the material's volume scatters light (GLINT_materials_volume_scatter on an attenuating
+// KHR_materials_volume): scenes with one compile the medium code (HAS_MEDIA).
+bool scatters(const Material& m);
+
 std::vector<glm::vec4> packMaterial(const Material& material, const Scene* scene = nullptr, const TextureSet* textures = nullptr);
 
 } // namespace glint::renderer

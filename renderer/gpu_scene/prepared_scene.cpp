@@ -70,6 +70,7 @@ std::map<std::string, std::string> SceneFeatures::defines() const {
     if (meshes && alpha) defines["HAS_ALPHA"] = "";
     if (meshes && singleSided) defines["HAS_SINGLE_SIDED"] = "";
     if (emissiveShapes) defines["HAS_EMISSIVE_SHAPES"] = "";
+    if (media) defines["HAS_MEDIA"] = "";
     return defines;
 }
 
@@ -79,6 +80,13 @@ void addMeshMaterialFeatures(const Scene& scene, SceneFeatures& features) {
         if (m.alphaMode != AlphaMode::Opaque) features.alpha = true;
         if (!m.doubleSided && m.emissiveFactor * m.emissiveStrength == glm::vec3(0.0f)) features.singleSided = true;
     }
+}
+
+bool usesMedia(const Scene& scene) {
+    if (scene.settings.fog.enabled()) return true;
+    for (const auto& [id, material] : scene.materials)
+        if (scatters(material)) return true;
+    return false;
 }
 
 // TextureSet words its warnings for people (texture_set.cpp); the code is read back from them so
@@ -116,6 +124,8 @@ PreparedScene prepareScene(const Scene& scene, const std::filesystem::path& envi
     out.features.textureArrays = static_cast<int>(out.textures.buckets.size());
     out.features.extensionTextures = extensionTexturesUsed(scene, materials, out.textures);
     out.environment = scene.settings.environment;
+    out.fog = scene.settings.fog;
+    out.features.media = usesMedia(scene);
     out.environmentFile = environmentFile;
     if (!environmentFile.empty()) {
         report(control, PreparationStage::Environment, 0, 1);

@@ -34,11 +34,14 @@ struct SceneFeatures {
     bool alpha = false;       // a mesh material with alpha mode MASK or BLEND
     bool singleSided = false; // a non-emissive single-sided mesh material: camera rays cull its back faces
     bool emissiveShapes = false; // an emissive shape or an area light: light-sampled (HAS_EMISSIVE_SHAPES)
+    bool media = false;       // fog, or a material whose volume scatters (HAS_MEDIA)
     std::map<std::string, std::string> defines() const; // gl::Defines: NAME -> value
 };
 
 // Adds the alpha and sidedness features of the visible meshes' materials.
 void addMeshMaterialFeatures(const Scene& scene, SceneFeatures& features);
+// Whether the scene has fog or a material whose volume scatters.
+bool usesMedia(const Scene& scene);
 
 struct PreparedEnvironment {
     EnvironmentImage image;
@@ -52,6 +55,7 @@ struct PreparedScene {
     TextureSet textures;
     std::set<std::pair<ImageId, bool>> texturesUsed;
     Environment environment;
+    Fog fog;
     std::optional<PreparedEnvironment> environmentMap;
     std::filesystem::path environmentFile;
     // Problems that did not stop the preparation, naming the texture (code texture-missing,

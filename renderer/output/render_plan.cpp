@@ -133,6 +133,10 @@ RenderPlan planRender(const Scene& scene, const std::filesystem::path& sceneFile
         plan.metadata["adaptiveThreshold"] = shortest(r.adaptive.threshold);
         plan.metadata["adaptiveMinSpp"] = std::to_string(adaptiveMinSamples(r.adaptive, r.spp));
     }
+    if (const Fog& fog = scene.settings.fog; fog.enabled()) // as bloom: only when on
+        plan.metadata["fog"] = "density=" + shortest(fog.density) + " color=" + shortest(fog.color.x) + "," +
+                               shortest(fog.color.y) + "," + shortest(fog.color.z) + " anisotropy=" + shortest(fog.anisotropy) +
+                               " heightFalloff=" + shortest(fog.heightFalloff) + " baseHeight=" + shortest(fog.baseHeight);
     addReconstruction(plan.metadata, project, r.configuration);
     return plan;
 }

@@ -32,7 +32,55 @@ struct Vertex {
     vec3 wo;         // towards where the ray came from, local
     SurfaceMaterial material;
     RayCone cone;    // the arriving ray's cone, its width taken at this vertex
+    bool inMedium;   // a scattering point in a medium (mediumVertex): the phase function replaces the BSDF
+    vec3 albedo;     // ... the medium's single-scattering albedo there
+    float g;         // ... and its Henyey-Greenstein anisotropy
 };
+
+// A scattering point at distance t along `ray` in medium m. Its frame's normal is the direction
+// of travel and wo is -Z, so a direction's local z is the cosine of its scattering angle; it has no
+// surface, so shadow rays and the next ray start at the point itself (spawnRay with a zero normal).
+Vertex mediumVertex(Ray ray, float t, Medium m, RayCone cone) {
+    Vertex v;
+    v.position = ray.origin + t * ray.direction;
+    v.faceNormal = vec3(0.0);
+    v.frame = frameFromNormal(ray.direction);
+    v.wo = vec3(0.0, 0.0, -1.0);
+    v.material = defaultSurfaceMaterial();
+    v.cone = RayCone(coneWidthAt(cone, t), cone.spread);
+    v.inMedium = true;
+    v.albedo = m.albedo;
+    v.g = m.g;
+    return v;
+}
+
+// What scatters light from world `direction` towards wo: the BSDF (f cos) at a surface, albedo x
+// phase in a medium; `pdf`: the density the vertex samples that direction with.
+vec3 scatterEval(Vertex v, vec3 direction, OUT(float) pdf) {
+#ifdef HAS_MEDIA
+    if (v.inMedium) {
+        pdf = henyeyGreenstein(localFromWorld(v.frame, direction).z, v.g);
+        return v.albedo * pdf;
+    }
+#endif
+    return bsdfEval(v.material, v.wo, localFromWorld(v.frame, direction), pdf);
+}
+
+// The next direction from a vertex (local frame): BSDF sampling at a surface; in a medium, the
+// phase function sampled exactly, weight = albedo (a diffuse-like lobe: MIS and denoising treat it so).
+bool scatterSample(Vertex v, vec3 u, OUT(BsdfSample) bs) {
+#ifdef HAS_MEDIA
+    if (v.inMedium) {
+        float cosTheta = sampleHenyeyGreensteinCos(v.g, u.x);
+        float sinTheta = safeSqrt(1.0 - cosTheta * cosTheta);
+        float phi = TWO_PI * u.y;
+        bs = BsdfSample(vec3(sinTheta * cos(phi), sinTheta * sin(phi), cosTheta), v.albedo,
+                        henyeyGreenstein(cosTheta, v.g), LOBE_DIFFUSE, 1.0);
+        return true;
+    }
+#endif
+    return bsdfSample(v.material, v.wo, u, bs);
+}
 
 // Random bits for the triangle filter's stochastic transparency, from dimensions no sampling
 // routine draws (so alpha-free scenes keep their random streams).
@@ -72,7 +120,7 @@ bool shadowRay(Vertex v, ShadowCandidate c, OUT(Ray) ray, OUT(float) distance) {
 ShadowCandidate punctualCandidate(Vertex v, int light, INOUT(Rng) rng) {
     LightSample ls = sampleLight(light, v.position, rand2(rng));
     float pdf;
-    vec3 f = bsdfEval(v.material, v.wo, localFromWorld(v.frame, ls.direction), pdf);
+    vec3 f = scatterEval(v, ls.direction, pdf);
     float misWeight = ls.pdf > 0.0 ? powerHeuristic(ls.pdf, pdf) : 1.0; // sun disks: BSDF rays see them too
     return ShadowCandidate(ls.direction, ls.distance, f * ls.irradiance * misWeight, ls.target);
 }
@@ -97,7 +145,7 @@ ShadowCandidate areaCandidate(Vertex v, INOUT(Rng) rng) {
     if (!sampleEmissiveTriangle(v.position, u, ls)) return noCandidate();
 #endif
     float bsdfPdf;
-    vec3 f = bsdfEval(v.material, v.wo, localFromWorld(v.frame, ls.direction), bsdfPdf);
+    vec3 f = scatterEval(v, ls.direction, bsdfPdf);
 #if AREA_LIGHT_STRATEGY == 1
     float weight = 1.0;
 #else
@@ -114,7 +162,7 @@ ShadowCandidate environmentCandidate(Vertex v, INOUT(Rng) rng) {
     vec3 direction = sampleEnvironment(u, lightPdf);
     if (lightPdf <= 0.0) return noCandidate();
     float bsdfPdf;
-    vec3 f = bsdfEval(v.material, v.wo, localFromWorld(v.frame, direction), bsdfPdf);
+    vec3 f = scatterEval(v, direction, bsdfPdf);
     return ShadowCandidate(direction, RAY_MAX, f * environmentRadiance(direction) * (powerHeuristic(lightPdf, bsdfPdf) / lightPdf), vec4(0.0));
 }
 
@@ -122,7 +170,9 @@ ShadowCandidate environmentCandidate(Vertex v, INOUT(Rng) rng) {
 // All shadow rays go through one call site: GLSL inlines every call, and each traversal copy costs
 // compile time (seconds on llvmpipe for the BVH variant).
 // `diffuse`: the part of the sum the diffuse lobe carried, where `split` (the first hit) asks for it.
-vec3 directLight(Vertex v, bool split, INOUT(Rng) rng, OUT(vec3) diffuse) {
+// Shadow rays cross the medium on their side of the surface: `arrived` on the side of wo (and
+// everywhere around a medium vertex), `across` on the other.
+vec3 directLight(Vertex v, Medium arrived, Medium across, bool split, INOUT(Rng) rng, OUT(vec3) diffuse) {
     vec3 sum = vec3(0.0);
     diffuse = vec3(0.0);
     for (int i = 0; i < uLightCount + 2; ++i) {
@@ -133,8 +183,10 @@ vec3 directLight(Vertex v, bool split, INOUT(Rng) rng, OUT(vec3) diffuse) {
         Ray ray;
         float distance;
         if (!shadowRay(v, c, ray, distance) || occluded(ray, distance)) continue;
-        sum += c.contribution;
-        if (split) diffuse += diffusePart(v.material, v.wo, localFromWorld(v.frame, c.direction), c.contribution);
+        bool sameSide = v.inMedium || (localFromWorld(v.frame, c.direction).z > 0.0) == (v.wo.z > 0.0);
+        vec3 contribution = c.contribution * mediumTransmittance(sameSide ? arrived : across, ray, distance);
+        sum += contribution;
+        if (split) diffuse += v.inMedium ? contribution : diffusePart(v.material, v.wo, localFromWorld(v.frame, c.direction), contribution);
     }
     return sum;
 }
@@ -172,13 +224,19 @@ float environmentMisWeight(vec3 direction, float bsdfPdf) {
 }
 
 // `lobes`: the radiance split by the first hit's lobe that carried it (lobe_radiance.glsl).
+// Each vertex is a surface hit or, in the HAS_MEDIA variant, a point where the ray scattered in a
+// medium before reaching the surface (media.glsl); both go through the one next-event estimation
+// and the one scatter-sampling call below.
 PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng, OUT(LobeRadiance) lobes) {
     PathResult result = PathResult(vec3(0.0), vec3(0.0), vec3(0.0), -1.0, 0.0, vec4(0.0, 1.0, 0.0, 0.0));
     lobes = noLobeRadiance();
     bool specularPath = false; // the first bounce left by a specular lobe (reflection or transmission)
     bool reflectedPath = false; // ... and stayed on the side it came from
     vec3 throughput = vec3(1.0);
-    vec3 attenuation = vec3(0.0); // Beer-Lambert sigma of the medium the ray travels in
+    Medium medium = sceneMedium(); // the medium the ray travels in
+#ifdef HAS_MEDIA
+    SpectralPath spectral = startSpectralPath();
+#endif
     float lastBsdfPdf = 0.0;       // of the sampled direction; 0 for camera rays and delta lobes
     vec3 lastPosition = ray.origin; // the vertex the ray left (MIS evaluates light sampling there)
     int maxBounces = min(uMaxBounces, HARD_PATH_LIMIT - 1);
@@ -188,54 +246,79 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng, OUT(LobeRadiance) l
         Hit hit = traceClosest(ray);
         float lampT, lampId;
         vec3 lamp = sphereLampEmission(ray, hit.t, lastBsdfPdf, lampT, lampId); // a sphere lamp in front ends the path
-        if (depth == 1 && reflectedPath) lobes.reflectionDistance = min(min(hit.t, lampT), REFLECTION_AT_INFINITY);
-        if (lampT < hit.t) {
-            addRadiance(result.radiance, lobes, throughput * lamp, specularPath);
-            PASS_FOUND(depth, throughput * lamp, specularPath, false);
-            if (depth == 0) {
-                result.albedo = lamp;
-                result.depth = lampT * dot(ray.direction, viewAxis);
-                result.objectId = lampId;
-            }
-            break;
-        }
-        if (hit.material < 0) {
-            vec3 environment = environmentRadiance(ray.direction);
-            vec3 found = throughput * (environment * environmentMisWeight(ray.direction, lastBsdfPdf) +
-                                       sunDiskRadiance(ray.direction, lastBsdfPdf));
-            addRadiance(result.radiance, lobes, found, specularPath);
-            PASS_FOUND(depth, found, specularPath, true);
-            if (depth == 0) result.albedo = environment;
-            break;
-        }
-        throughput *= exp(-attenuation * hit.t);
+        bool scattered = false;
+        float segment = hit.t; // to this vertex
+#ifdef HAS_MEDIA
+        MediumEvent event = sampleMediumEvent(medium, ray, min(hit.t, lampT), rng, spectral);
+        throughput *= event.weight;
+        scattered = event.scattered;
+        if (scattered) segment = event.t;
+#endif
+        if (depth == 1 && reflectedPath) lobes.reflectionDistance = min(min(segment, lampT), REFLECTION_AT_INFINITY);
         Vertex v;
-        v.position = ray.origin + hit.t * ray.direction;
-        v.faceNormal = hit.geometricNormal;
-        v.cone = RayCone(coneWidthAt(cone, hit.t), cone.spread);
-        SurfaceShading shading = shadeSurface(hit, ray.direction, v.cone.width);
-        v.frame = frameFromNormal(shading.normal);
-        v.wo = localFromWorld(v.frame, -ray.direction);
-        v.material = shading.material;
-        if (depth == 0) {
-            result.albedo = v.material.baseColor;
-            result.normal = v.wo.z >= 0.0 ? shading.normal : -shading.normal;
-            result.depth = hit.t * dot(ray.direction, viewAxis);
-            result.objectId = hit.objectId;
-            result.lobes = vec4(v.material.metallic, v.material.roughness, v.material.transmission, v.material.specularFactor);
+        Medium across = medium; // the medium on the far side of the vertex's surface
+        float curvature = 0.0;
+        if (scattered) {
+            v = mediumVertex(ray, segment, medium, cone);
+            if (depth == 0) {
+                result.albedo = medium.albedo;
+                result.normal = -ray.direction;
+                result.depth = segment * dot(ray.direction, viewAxis);
+            }
+        } else {
+            if (lampT < hit.t) {
+                addRadiance(result.radiance, lobes, throughput * lamp, specularPath);
+                PASS_FOUND(depth, throughput * lamp, specularPath, false);
+                if (depth == 0) {
+                    result.albedo = lamp;
+                    result.depth = lampT * dot(ray.direction, viewAxis);
+                    result.objectId = lampId;
+                }
+                break;
+            }
+            if (hit.material < 0) {
+                vec3 environment = environmentRadiance(ray.direction);
+                vec3 found = throughput * (environment * environmentMisWeight(ray.direction, lastBsdfPdf) +
+                                           sunDiskRadiance(ray.direction, lastBsdfPdf));
+                addRadiance(result.radiance, lobes, found, specularPath);
+                PASS_FOUND(depth, found, specularPath, true);
+                if (depth == 0) result.albedo = environment;
+                break;
+            }
+#ifndef HAS_MEDIA
+            throughput *= exp(-medium.sigmaT * hit.t);
+#endif
+            v.position = ray.origin + hit.t * ray.direction;
+            v.faceNormal = hit.geometricNormal;
+            v.cone = RayCone(coneWidthAt(cone, hit.t), cone.spread);
+            SurfaceShading shading = shadeSurface(hit, ray.direction, v.cone.width);
+            v.frame = frameFromNormal(shading.normal);
+            v.wo = localFromWorld(v.frame, -ray.direction);
+            v.material = shading.material;
+            v.inMedium = false;
+            curvature = shading.curvature;
+            // A closed volume's boundary: entering, its interior; leaving, the scene's medium.
+            if (!v.material.thinWalled) across = v.wo.z > 0.0 ? interiorMedium(hit.material, v.material) : sceneMedium();
+            if (depth == 0) {
+                result.albedo = v.material.baseColor;
+                result.normal = v.wo.z >= 0.0 ? shading.normal : -shading.normal;
+                result.depth = hit.t * dot(ray.direction, viewAxis);
+                result.objectId = hit.objectId;
+                result.lobes = vec4(v.material.metallic, v.material.roughness, v.material.transmission, v.material.specularFactor);
+            }
+            vec3 emitted = throughput * shading.emission * emissionMisWeight(hit, shading.sampledEmission, ray, lastPosition, lastBsdfPdf);
+            addRadiance(result.radiance, lobes, emitted, specularPath);
+            PASS_FOUND(depth, emitted, specularPath, false);
         }
-        vec3 emitted = throughput * shading.emission * emissionMisWeight(hit, shading.sampledEmission, ray, lastPosition, lastBsdfPdf);
-        addRadiance(result.radiance, lobes, emitted, specularPath);
-        PASS_FOUND(depth, emitted, specularPath, false);
         if (depth > maxBounces) break;
 
         vec3 diffuseDirect;
-        vec3 direct = throughput * directLight(v, depth == 0, rng, diffuseDirect);
+        vec3 direct = throughput * directLight(v, medium, across, depth == 0, rng, diffuseDirect);
         if (depth == 0) addSplitRadiance(result.radiance, lobes, direct, throughput * diffuseDirect);
         else addRadiance(result.radiance, lobes, direct, specularPath);
         PASS_LIGHT_SAMPLED(depth, direct, throughput * diffuseDirect, specularPath);
 #ifdef AMBIENT_TERM
-        if (depth == 0) {
+        if (depth == 0 && !scattered) {
             vec3 ambient = ambientTerm(v, rng);
             addRadiance(result.radiance, lobes, ambient, false); // diffuse: it is albedo x light
             PASS_LIGHT_SAMPLED(1, ambient, ambient, false);      // it stands for indirect diffuse light
@@ -243,7 +326,7 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng, OUT(LobeRadiance) l
 #endif
 
         BsdfSample bs;
-        if (!bsdfSample(v.material, v.wo, rand3(rng), bs) || maxComponent(bs.weight) <= 0.0) break;
+        if (!scatterSample(v, rand3(rng), bs) || maxComponent(bs.weight) <= 0.0) break;
         // Russian roulette on this bounce's weight (its albedo), not on the whole throughput: a
         // surviving path keeps its throughput, which keeps the estimator's tail short.
         if (depth >= ROULETTE_START) {
@@ -255,11 +338,11 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng, OUT(LobeRadiance) l
         if (depth == 0) specularPath = (bs.lobe & LOBE_DIFFUSE) == 0u;
         if (depth == 0) reflectedPath = specularPath && (bs.wi.z > 0.0) == (v.wo.z > 0.0);
         lastBsdfPdf = (bs.lobe & LOBE_SPECULAR) != 0u ? 0.0 : bs.pdf;
-        bool crosses = (bs.wi.z > 0.0) != (v.wo.z > 0.0);
-        if (crosses && !v.material.thinWalled) attenuation = v.wo.z > 0.0 ? attenuationCoefficient(v.material) : vec3(0.0);
+        bool crosses = !scattered && (bs.wi.z > 0.0) != (v.wo.z > 0.0);
+        if (crosses) medium = across;
         vec3 wi = worldFromLocal(v.frame, bs.wi);
         float lobeRoughness = (bs.lobe & LOBE_SPECULAR) != 0u ? 0.0 : ((bs.lobe & LOBE_DIFFUSE) != 0u ? 1.0 : v.material.roughness);
-        cone = bounceCone(cone, hit.t, shading.curvature, lobeRoughness);
+        cone = bounceCone(cone, segment, curvature, lobeRoughness);
         ray = spawnRay(v.position, v.faceNormal, wi);
         lastPosition = v.position;
     }

@@ -19,6 +19,7 @@
 #include "sampling/shape_emitter.glsl"
 #include "shape_lights.glsl"
 #endif
+#include "media.glsl"
 #include "camera.glsl"
 #include "render_passes.glsl"
 #include "lobe_radiance.glsl"

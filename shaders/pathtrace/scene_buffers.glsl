@@ -6,7 +6,7 @@ uniform samplerBuffer uLights;    // LIGHT_TEXELS per light
 uniform int uLightCount;
 
 const int SHAPE_TEXELS = 9; // packed_scene.h shapeTexels
-const int MATERIAL_TEXELS = 30; // packed_scene.h materialTexels: 6 factor texels + 8 texture references (textures/texture_refs.glsl)
+const int MATERIAL_TEXELS = 31; // packed_scene.h materialTexels: 7 factor texels + 8 texture references (textures/texture_refs.glsl)
 const int LIGHT_TEXELS = 4;
 
 vec4 shapeTexel(int shape, int texel) { return texelFetch(uShapes, shape * SHAPE_TEXELS + texel); }

@@ -1,7 +1,7 @@
 // A material's texture references (renderer/gpu_scene/texture_refs.h): where the image lives, its
 // sampler's wrap and filter modes, the UV set and the KHR_texture_transform matrix. They follow the
 // material's MATERIAL_BASE_TEXELS factor texels, TEXTURE_REF_TEXELS each.
-const int MATERIAL_BASE_TEXELS = 6;
+const int MATERIAL_BASE_TEXELS = 7;
 const int TEXTURE_REF_TEXELS = 3;
 const int TEXREF_BASE_COLOR = 0;
 const int TEXREF_METALLIC_ROUGHNESS = 1;

@@ -1,0 +1,99 @@
+// The medium a path travels in (docs/MEDIA.md): vacuum, an absorbing volume (KHR_materials_volume
+// alone), the scene's fog, or a scattering volume (GLINT_materials_volume_scatter). Only the
+// HAS_MEDIA variant (fog on, or a scattering material) samples scattering; the others keep the
+// closed-form Beer-Lambert absorption along each segment and draw no random numbers for it.
+#ifdef HAS_MEDIA
+#include "sampling/fog_density.glsl"
+#include "sampling/phase.glsl"
+uniform vec4 uFog;           // density (1/m; 0: no fog), height falloff (1/m), base height (m), 0
+uniform vec3 uFogAlbedo;     // single-scattering albedo
+uniform float uFogAnisotropy; // Henyey-Greenstein g
+#endif
+
+const int MEDIUM_ABSORBING = 0;  // sigmaT only (0: vacuum)
+const int MEDIUM_FOG = 1;        // the scene's fog: grey extinction from uFog, falling with height
+const int MEDIUM_SCATTERING = 2; // homogeneous, per-channel extinction, scattering `albedo` of it
+
+struct Medium {
+    int kind;
+    vec3 sigmaT;  // extinction per metre (absorbing and scattering kinds)
+    vec3 albedo;  // share of the extinction scattered (fog and scattering kinds)
+    float g;      // Henyey-Greenstein anisotropy
+};
+
+// Where camera rays start, and where a path returns when it leaves a closed volume.
+Medium sceneMedium() {
+#ifdef HAS_MEDIA
+    if (uFog.x > 0.0) return Medium(MEDIUM_FOG, vec3(0.0), uFogAlbedo, uFogAnisotropy);
+#endif
+    return Medium(MEDIUM_ABSORBING, vec3(0.0), vec3(0.0), 0.0);
+}
+
+// Inside a closed, non-thin-walled mesh or shape of `material`: the extinction is
+// KHR_materials_volume's attenuation, of which material texel 6 scatters rgb with anisotropy w.
+Medium interiorMedium(int material, SurfaceMaterial m) {
+    vec3 sigmaT = attenuationCoefficient(m);
+#ifdef HAS_MEDIA
+    vec4 scatter = materialTexel(material, 6);
+    if (maxComponent(scatter.rgb) > 0.0 && maxComponent(sigmaT) > 0.0) return Medium(MEDIUM_SCATTERING, sigmaT, scatter.rgb, scatter.w);
+#endif
+    return Medium(MEDIUM_ABSORBING, sigmaT, vec3(0.0), 0.0);
+}
+
+// The share of light that crosses distance t of the medium along `ray` unscattered.
+vec3 mediumTransmittance(Medium m, Ray ray, float t) {
+#ifdef HAS_MEDIA
+    if (m.kind == MEDIUM_FOG) return vec3(exp(-fogOpticalDepth(uFog, ray.origin, ray.direction, t)));
+#endif
+    return exp(-m.sigmaT * t);
+}
+
+#ifdef HAS_MEDIA
+// Whether a ray scatters in the medium before `tEnd` (the next surface, or RAY_MAX), and the weight
+// of that outcome (the albedo is the scattering vertex's own weight, scatterSample). Free flights are
+// sampled in proportion to transmittance x extinction, in closed form.
+// - The fog's extinction is grey: the sampling is exact and the weight 1.
+// - A volume's extinction differs per channel: the path samples every such distance with one
+//   channel's extinction, its hero, chosen uniformly at its first volume event, and is weighted by
+//   the balance heuristic over the three channels as whole-path strategies (pbrt-v4's spectral MIS):
+//   weight = f / mean over channels of the path's pdf. `spectral` carries the path's per-channel pdfs
+//   (up to a common factor) from event to event, so a channel that barely scatters never divides by
+//   a small probability, however many events the path has.
+struct MediumEvent {
+    bool scattered;
+    float t;
+    vec3 weight;
+};
+
+struct SpectralPath {
+    float hero;    // the channel distances are sampled with; -1 until the first volume event
+    vec3 pdfs;     // the path's pdf under each channel's sampling, scaled to a maximum of 1
+};
+
+SpectralPath startSpectralPath() { return SpectralPath(-1.0, vec3(1.0)); }
+
+MediumEvent sampleMediumEvent(Medium m, Ray ray, float tEnd, INOUT(Rng) rng, INOUT(SpectralPath) path) {
+    if (m.kind == MEDIUM_ABSORBING) return MediumEvent(false, tEnd, exp(-m.sigmaT * tEnd));
+    float u = rand1(rng);
+    if (m.kind == MEDIUM_FOG) {
+        float t = fogDistanceAtDepth(uFog, ray.origin, ray.direction, -log(1.0 - u), RAY_MAX);
+        return MediumEvent(t < tEnd, t, vec3(1.0));
+    }
+    if (path.hero < 0.0) { // the first volume event draws the hero from the same number
+        path.hero = min(floor(3.0 * u), 2.0);
+        u = 3.0 * u - path.hero;
+    }
+    float sigma = path.hero == 0.0 ? m.sigmaT.r : (path.hero == 1.0 ? m.sigmaT.g : m.sigmaT.b);
+    float t = sigma > 0.0 ? -log(1.0 - u) / sigma : RAY_MAX;
+    bool scattered = t < tEnd;
+    // Per channel, this outcome's pdf under that channel's sampling, which is also its transport
+    // (extinction x transmittance for a scatter, transmittance for a pass).
+    vec3 pdf = scattered ? m.sigmaT * exp(-m.sigmaT * t) : exp(-m.sigmaT * tEnd);
+    float before = dot(path.pdfs, vec3(1.0 / 3.0));
+    path.pdfs *= pdf;
+    float after = dot(path.pdfs, vec3(1.0 / 3.0));
+    vec3 weight = after > 0.0 ? pdf * (before / after) : vec3(0.0);
+    if (after > 0.0) path.pdfs /= maxComponent(path.pdfs);
+    return MediumEvent(scattered, scattered ? t : tEnd, weight);
+}
+#endif
