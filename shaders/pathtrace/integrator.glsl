@@ -128,22 +128,25 @@ ShadowCandidate punctualCandidate(Vertex v, int light, INOUT(Rng) rng) {
 // One area emitter (an emissive triangle, or an emissive shape or area light where the scene has
 // them) chosen in proportion to its power, weighted against BSDF sampling by the power heuristic.
 // The shadow ray ends just off the emitter (shadowRay), so that it does not find the emitter itself.
+bool sampleAreaEmitter(vec3 p, vec3 u, OUT(AreaLightSample) ls) {
+#ifdef HAS_EMISSIVE_SHAPES
+    float triangles = emissiveTrianglePower();
+    float total = triangles + uShapeEmitterPower;
+    float x = u.x * total;
+    return x < triangles ? sampleEmissiveTriangle(p, vec3(x / triangles, u.y, u.z), ls)
+                         : sampleShapeLight(p, x - triangles, vec2(u.y, u.z), total, ls);
+#else
+    return sampleEmissiveTriangle(p, u, ls);
+#endif
+}
+
 ShadowCandidate areaCandidate(Vertex v, INOUT(Rng) rng) {
     vec3 u = rand3(rng);
 #if AREA_LIGHT_STRATEGY == 2
     return noCandidate();
 #endif
     AreaLightSample ls;
-#ifdef HAS_EMISSIVE_SHAPES
-    float triangles = emissiveTrianglePower();
-    float total = triangles + uShapeEmitterPower;
-    float x = u.x * total;
-    bool found = x < triangles ? sampleEmissiveTriangle(v.position, vec3(x / triangles, u.y, u.z), ls)
-                               : sampleShapeLight(v.position, x - triangles, vec2(u.y, u.z), total, ls);
-    if (!found) return noCandidate();
-#else
-    if (!sampleEmissiveTriangle(v.position, u, ls)) return noCandidate();
-#endif
+    if (!sampleAreaEmitter(v.position, u, ls)) return noCandidate();
     float bsdfPdf;
     vec3 f = scatterEval(v, ls.direction, bsdfPdf);
 #if AREA_LIGHT_STRATEGY == 1
@@ -223,6 +226,26 @@ float environmentMisWeight(vec3 direction, float bsdfPdf) {
     return powerHeuristic(bsdfPdf, environmentPdf(direction));
 }
 
+#ifdef HAS_MEDIA
+// A light for fog scattering to concentrate around (fogScatterDistance): a point or spot light, or a
+// point on an area emitter, chosen uniformly among them; false for a sun, or where the area sample
+// fails (the free flight alone then decides: each choice is unbiased on its own).
+bool fogLightCenter(vec3 from, INOUT(Rng) rng, OUT(vec3) center) {
+    float pick = rand1(rng) * float(uLightCount + (areaEmitterPower() > 0.0 ? 1 : 0));
+    vec3 u = rand3(rng);
+    int light = int(pick);
+    center = vec3(0.0);
+    if (light < uLightCount) {
+        center = lightTexel(light, 2).xyz;
+        return int(lightTexel(light, 0).x) != LIGHT_SUN;
+    }
+    AreaLightSample ls;
+    if (!sampleAreaEmitter(from, u, ls)) return false;
+    center = ls.target;
+    return true;
+}
+#endif
+
 // `lobes`: the radiance split by the first hit's lobe that carried it (lobe_radiance.glsl).
 // Each vertex is a surface hit or, in the HAS_MEDIA variant, a point where the ray scattered in a
 // medium before reaching the surface (media.glsl); both go through the one next-event estimation
@@ -253,6 +276,12 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng, OUT(LobeRadiance) l
         throughput *= event.weight;
         scattered = event.scattered;
         if (scattered) segment = event.t;
+        vec3 center;
+        if (scattered && medium.kind == MEDIUM_FOG && fogLightCenter(ray.origin, rng, center)) {
+            float weight;
+            segment = fogScatterDistance(ray, min(hit.t, lampT), segment, center, rand1(rng), weight);
+            throughput *= weight;
+        }
 #endif
         if (depth == 1 && reflectedPath) lobes.reflectionDistance = min(min(segment, lampT), REFLECTION_AT_INFINITY);
         Vertex v;

@@ -96,4 +96,49 @@ MediumEvent sampleMediumEvent(Medium m, Ray ray, float tEnd, INOUT(Rng) rng, INO
     if (after > 0.0) path.pdfs /= maxComponent(path.pdfs);
     return MediumEvent(scattered, scattered ? t : tEnd, weight);
 }
+
+// Equiangular sampling (Kulla and Fajardo 2012) of a distance along a ray in [0, tEnd]: density in
+// proportion to 1 / (squared distance to a light at `center`), so that points near a light, whose
+// direct light is large, are drawn as often as they matter. In angle about the centre's foot on the
+// ray the density is uniform between thetaA and thetaB.
+struct Equiangular {
+    float along;  // the foot of the centre on the ray
+    float offset; // the centre's distance from the ray
+    float thetaA;
+    float thetaB;
+};
+
+Equiangular equiangularAround(Ray ray, float tEnd, vec3 center) {
+    float along = dot(center - ray.origin, ray.direction);
+    float offset = max(length(center - ray.origin - along * ray.direction), 1e-4);
+    return Equiangular(along, offset, atan(-along / offset), atan((min(tEnd, 1e30) - along) / offset));
+}
+
+float equiangularDistance(Equiangular e, float u) {
+    return e.along + e.offset * tan(mix(e.thetaA, e.thetaB, u));
+}
+
+float equiangularPdf(Equiangular e, float t) {
+    float r = t - e.along;
+    return e.offset / ((e.thetaB - e.thetaA) * (e.offset * e.offset + r * r));
+}
+
+// Where in the segment to scatter, given that the fog's free flight scattered there (at
+// `freeFlight`, probability 1 - T(tEnd)): one-sample MIS between that distance and an equiangular
+// one around `center`, each chosen with probability 1/2 (`u`: the choice, then the equiangular
+// draw). `weight`: extinction x transmittance at the distance / (1 - T(tEnd)) / the mixed pdf, at
+// most 2; the analog free flight alone would have weight 1 but rarely lands next to a light.
+float fogScatterDistance(Ray ray, float tEnd, float freeFlight, vec3 center, float u, OUT(float) weight) {
+    weight = 1.0;
+    Equiangular e = equiangularAround(ray, tEnd, center);
+    if (!(e.thetaB > e.thetaA)) return freeFlight;
+    float t = u < 0.5 ? clamp(equiangularDistance(e, 2.0 * u), 0.0, tEnd) : freeFlight;
+    float depthToEnd = fogOpticalDepth(uFog, ray.origin, ray.direction, tEnd);
+    float scatters = depthToEnd < 1e-4 ? depthToEnd * (1.0 - 0.5 * depthToEnd) : 1.0 - exp(-depthToEnd);
+    float density = fogDensityAt(uFog, ray.origin.y + t * ray.direction.y) * exp(-fogOpticalDepth(uFog, ray.origin, ray.direction, t));
+    float distancePdf = scatters > 0.0 ? density / scatters : 0.0;
+    float mixed = 0.5 * distancePdf + 0.5 * equiangularPdf(e, t);
+    weight = mixed > 0.0 ? distancePdf / mixed : 0.0;
+    return t;
+}
 #endif

@@ -3,12 +3,13 @@
 //   bench_convergence reference OUT.exr [--size 128] [--bounces 4] [--spp 8192] [--seed 1000]
 //       renders the reference (Accumulate; 32-bit RGB EXR)
 //   bench_convergence curve REF.exr [--size 128] [--bounces 4] [--spp 256] [--seeds 4]
-//       [--independent] [--label NAME] [--csv OUT.csv]
+//       [--independent] [--label NAME] [--csv OUT.csv] [--fog D]
 //       one progressive render per seed (seeds 0..), read back at 1, 2, 4, ... spp: relMSE, the share
 //       of it in the worst 0.1 % of pixels and the mean luminance, per seed and averaged over seeds
 //   bench_convergence fireflies REF.exr [--size 128] [--bounces 4] [--spp 64] [--seed 0] [--top 20]
 //       the worst pixels of one render with their largest single sample (which sample, how much)
-// The scene is resources/scenes/cornell_box as stored; the reference seed differs from the runs'.
+// The scene is resources/scenes/cornell_box as stored (with --fog D: filled with fog of density D,
+// albedo 0.9, g 0.6); the reference seed differs from the runs'.
 #include "error_share.h"
 
 #include "renderer/frame_renderer.h"
@@ -35,6 +36,7 @@ struct Options {
     unsigned seed = 0;
     bool independent = false;
     std::string label = "default", csv;
+    float fog = 0.0f; // the Cornell box filled with fog of this density (albedo 0.9, g 0.6): docs/MEDIA.md
 };
 
 Options parse(int argc, char** argv) {
@@ -59,6 +61,7 @@ Options parse(int argc, char** argv) {
         else if (!std::strcmp(argv[i], "--label")) o.label = next();
         else if (!std::strcmp(argv[i], "--csv")) o.csv = next();
         else if (!std::strcmp(argv[i], "--independent")) o.independent = true;
+        else if (!std::strcmp(argv[i], "--fog")) o.fog = float(std::atof(next()));
         else {
             std::fprintf(stderr, "bench_convergence: unknown option %s\n", argv[i]);
             std::exit(2);
@@ -67,8 +70,10 @@ Options parse(int argc, char** argv) {
     return o;
 }
 
-Scene cornellBox() {
-    return loadScene(std::filesystem::path(GLINT_RESOURCES_DIR) / "scenes" / "cornell_box" / "cornell_box.gltf").scene;
+Scene cornellBox(const Options& o) {
+    Scene scene = loadScene(std::filesystem::path(GLINT_RESOURCES_DIR) / "scenes" / "cornell_box" / "cornell_box.gltf").scene;
+    scene.settings.fog = {.density = o.fog, .color = glm::vec3(0.9f), .anisotropy = 0.6f};
+    return scene;
 }
 
 std::vector<float> readReference(const Options& o) {
@@ -103,7 +108,7 @@ void progressive(const Scene& scene, const Options& o, unsigned seed, int spp, A
 }
 
 int reference(const Options& o) {
-    const Scene scene = cornellBox();
+    const Scene scene = cornellBox(o);
     renderer::RenderRequest request;
     request.width = request.height = o.size;
     request.bounces = o.bounces;
@@ -121,7 +126,7 @@ int reference(const Options& o) {
 }
 
 int curve(const Options& o) {
-    const Scene scene = cornellBox();
+    const Scene scene = cornellBox(o);
     const std::vector<float> ref = readReference(o);
     const int spp = o.spp > 0 ? o.spp : 256;
     std::map<int, std::vector<test::ErrorShare>> bySpp;
@@ -153,7 +158,7 @@ int curve(const Options& o) {
 }
 
 int fireflies(const Options& o) {
-    const Scene scene = cornellBox();
+    const Scene scene = cornellBox(o);
     const std::vector<float> ref = readReference(o);
     const int spp = o.spp > 0 ? o.spp : 64;
     const std::size_t n = static_cast<std::size_t>(o.size) * static_cast<std::size_t>(o.size);
