@@ -565,6 +565,7 @@ T = {
 "Click the surface to focus on (Esc cancels).": ("Fai clic sulla superficie da mettere a fuoco (Esc annulla).", "Klicken Sie auf die Fläche, die scharf sein soll (Esc bricht ab).", "Cliquez sur la surface à mettre au point (Échap annule).", "Haga clic en la superficie que enfocar (Esc cancela)."),
 "Copy key": ("Copia chiave", "Schlüssel kopieren", "Copier la clé", "Copiar clave"),
 "Cornell box": ("Cornell box", "Cornell-Box", "Boîte de Cornell", "Caja de Cornell"),
+"Cornell box in fog": ("Cornell box nella nebbia", "Cornell-Box im Nebel", "Boîte de Cornell dans le brouillard", "Caja de Cornell en la niebla"),
 "Cubic": ("Cubica", "Kubisch", "Cubique", "Cúbica"),
 "Drag a rectangle: the path tracer renders only inside it": ("Trascina un rettangolo: il path tracer renderizza solo al suo interno", "Ziehen Sie ein Rechteck auf: der Pathtracer rendert nur darin", "Tracez un rectangle : le path tracer ne rend qu'à l'intérieur", "Arrastre un rectángulo: el trazador de caminos solo renderiza dentro"),
 "Edit %1 nodes": ("Modifica %1 nodi", "%1 Knoten bearbeiten", "Modifier %1 nœuds", "Editar %1 nodos"),

@@ -2422,6 +2422,10 @@ R %3  G %4  B %5 (linear)</translation>
         <source>Cornell box</source>
         <translation>Cornell-Box</translation>
     </message>
+    <message>
+        <source>Cornell box in fog</source>
+        <translation>Cornell-Box im Nebel</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::TimeRuler</name>

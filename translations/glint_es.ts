@@ -2422,6 +2422,10 @@ R %3  G %4  B %5 (lineal)</translation>
         <source>Cornell box</source>
         <translation>Caja de Cornell</translation>
     </message>
+    <message>
+        <source>Cornell box in fog</source>
+        <translation>Caja de Cornell en la niebla</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::TimeRuler</name>

@@ -2422,6 +2422,10 @@ R %3  V %4  B %5 (linéaire)</translation>
         <source>Cornell box</source>
         <translation>Boîte de Cornell</translation>
     </message>
+    <message>
+        <source>Cornell box in fog</source>
+        <translation>Boîte de Cornell dans le brouillard</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::TimeRuler</name>

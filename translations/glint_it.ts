@@ -2422,6 +2422,10 @@ R %3  G %4  B %5 (lineare)</translation>
         <source>Cornell box</source>
         <translation>Cornell box</translation>
     </message>
+    <message>
+        <source>Cornell box in fog</source>
+        <translation>Cornell box nella nebbia</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::TimeRuler</name>

@@ -12,9 +12,10 @@
 
 namespace glint::editor {
 
-enum class SceneTemplate { Studio, Empty, SunAndSky, CornellBox };
-inline constexpr std::array<SceneTemplate, 4> kSceneTemplates{SceneTemplate::Studio, SceneTemplate::Empty,
-                                                              SceneTemplate::SunAndSky, SceneTemplate::CornellBox};
+enum class SceneTemplate { Studio, Empty, SunAndSky, CornellBox, CornellBoxInFog };
+inline constexpr std::array<SceneTemplate, 5> kSceneTemplates{SceneTemplate::Studio, SceneTemplate::Empty,
+                                                              SceneTemplate::SunAndSky, SceneTemplate::CornellBox,
+                                                              SceneTemplate::CornellBoxInFog};
 
 // The menu text, untranslated (QT_TRANSLATE_NOOP in context glint::editor::SceneTemplates).
 const char* templateTitle(SceneTemplate kind);

@@ -94,7 +94,9 @@ private slots:
             }
             if (kind == SceneTemplate::SunAndSky)
                 QCOMPARE(nodesWith(scene, [](const Node& n) { return n.get<Light>() && n.get<Light>()->type == LightType::Sun; }), 1);
-            if (kind == SceneTemplate::CornellBox) QCOMPARE(scene.nodes().size(), std::size_t{9});
+            if (kind == SceneTemplate::CornellBox || kind == SceneTemplate::CornellBoxInFog)
+                QCOMPARE(scene.nodes().size(), std::size_t{9});
+            QCOMPARE(scene.settings.fog.enabled(), kind == SceneTemplate::CornellBoxInFog);
         }
         // File > New is the Studio template.
         window.findChild<QAction*>("file.new")->trigger();
