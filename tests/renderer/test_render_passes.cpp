@@ -154,6 +154,23 @@ private slots:
         QVERIFY2(check.worstExcess <= 0.0, qPrintable(QString("off by %1 beyond the tolerance").arg(check.worstExcess)));
     }
 
+    // Participating media (docs/MEDIA.md): fog (falling with height) and a scattering volume in the
+    // glass sphere's place. Light scattered in them is counted by the same passes (a scatter is a
+    // diffuse-like vertex), so the sum still holds.
+    void theSumHoldsInFogAndVolumes() {
+        Scene scene = everyPath(false);
+        scene.settings.fog = {.density = 0.4f, .color = glm::vec3(0.9f), .anisotropy = 0.5f, .heightFalloff = 0.5f};
+        Material smoke = glass(1.0f, 1.0f);
+        smoke.attenuationColor = glm::vec3(0.3f, 0.5f, 0.7f);
+        smoke.attenuationDistance = 0.3f;
+        smoke.scatterColor = glm::vec3(0.8f);
+        addShape(scene, ShapeKind::Sphere, scene.materials.add(smoke), glm::vec3(0.0f, 0.4f, 0.6f), 0.35f);
+        const Exr exr = render(scene, stillRequest(kSize, 16, 5, 4), "media.exr");
+        const SumCheck check = checkSum(exr);
+        qInfo("in fog: largest relative error %.3g", check.worstRelative);
+        QVERIFY2(check.worstExcess <= 0.0, qPrintable(QString("off by %1 beyond the tolerance").arg(check.worstExcess)));
+    }
+
     // The clamp scales every pass as it scales the radiance, so the sum still holds.
     void theSumHoldsUnderTheClamp() {
         renderer::RenderRequest request = stillRequest(kSize, 8, 4, 4);
