@@ -289,10 +289,16 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng, OUT(LobeRadiance) l
         float curvature = 0.0;
         if (scattered) {
             v = mediumVertex(ray, segment, medium, cone);
+            // The guide buffers describe what the camera ray meets behind the fog, not the random
+            // scatter point: the denoisers' reprojection and edge stops need the same surface from
+            // sample to sample. Its albedo is the fog's (the light this sample carries is the fog's).
             if (depth == 0) {
                 result.albedo = medium.albedo;
-                result.normal = -ray.direction;
-                result.depth = segment * dot(ray.direction, viewAxis);
+                if (hit.material >= 0 && hit.t < lampT) {
+                    result.normal = dot(hit.geometricNormal, ray.direction) < 0.0 ? hit.geometricNormal : -hit.geometricNormal;
+                    result.depth = hit.t * dot(ray.direction, viewAxis);
+                    result.objectId = hit.objectId;
+                }
             }
         } else {
             if (lampT < hit.t) {

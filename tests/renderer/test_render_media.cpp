@@ -301,6 +301,27 @@ private slots:
         QVERIFY2(std::abs(e.mean - expected) < 4.0 * e.sigma, qPrintable(describe(e, expected)));
     }
 
+    // The guide buffers (depth, normal, object id) describe the surface behind the fog, not the random
+    // point where a camera ray scattered, so the real-time denoisers reproject and edge-stop on a
+    // stable surface: with fog they equal those of the same scene without it (16x16, 4 spp).
+    void fogKeepsTheGuideBuffersOfTheSurfaces() {
+        Scene scene;
+        addShape(scene, ShapeKind::GroundPlane, scene.materials.add(lambert(glm::vec3(0.7f))), glm::vec3(0.0f));
+        addShape(scene, ShapeKind::Sphere, scene.materials.add(lambert(glm::vec3(0.5f))), {0.0f, 0.5f, 0.0f}, 0.5f);
+        Light lamp;
+        lamp.intensity = 50.0f;
+        addNode(scene, "lamp", lamp, {1.0f, 2.0f, 1.0f});
+        addPerspectiveCamera(scene, {0.0f, 1.0f, 3.0f}, {0.0f, 0.3f, 0.0f}, 0.9f);
+        const auto clear = render(scene, 16, 4, 9, 2);
+        scene.settings.fog = {.density = 0.8f, .color = glm::vec3(0.9f)};
+        const auto foggy = render(scene, 16, 4, 9, 2);
+        QCOMPARE(foggy.depth, clear.depth);
+        QCOMPARE(foggy.objectId, clear.objectId);
+        for (std::size_t i = 0; i < clear.normal.size(); ++i)
+            QVERIFY2(std::abs(foggy.normal[i] - clear.normal[i]) < 1e-5f, qPrintable(QString("normal component %1").arg(i)));
+        QVERIFY(foggy.radiance != clear.radiance); // the fog is there
+    }
+
 private:
     static void checkFurnace(const renderer::RenderOutput& out, int spp) {
         for (int c = 0; c < 3; ++c) {
