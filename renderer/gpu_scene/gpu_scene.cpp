@@ -130,8 +130,10 @@ bool GpuScene::updateMaterials(const Scene& scene) {
     addMeshMaterialFeatures(scene, features);
     features.extensionTextures = extensionTexturesUsed(scene, materials, textureSlots_);
     features.media = usesMedia(scene);
+    features.indexMatched = usesIndexMatched(scene);
     if (features.alpha != features_.alpha || features.singleSided != features_.singleSided ||
-        features.extensionTextures != features_.extensionTextures || features.media != features_.media)
+        features.extensionTextures != features_.extensionTextures || features.media != features_.media ||
+        features.indexMatched != features_.indexMatched)
         return false; // another variant
     PackedScene repacked = packScene(scene, &textureSlots_);
     if (repacked.materialIndex != packed_.materialIndex || repacked.shapes != packed_.shapes) return false;

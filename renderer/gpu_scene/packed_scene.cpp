@@ -79,6 +79,13 @@ glm::vec4 scatteringTexel(const Material& m) {
 
 } // namespace
 
+bool indexMatched(const Material& m) {
+    return m.transmissionFactor >= 1.0f && m.ior <= 1.0f && m.metallicFactor <= 0.0f &&
+           m.emissiveFactor * m.emissiveStrength == glm::vec3(0.0f) && m.alphaMode == AlphaMode::Opaque &&
+           !m.baseColorTexture.valid() && !m.metallicRoughnessTexture.valid() && !m.transmissionTexture.valid() &&
+           !m.thicknessTexture.valid();
+}
+
 bool scatters(const Material& m) {
     return std::isfinite(m.attenuationDistance) && m.attenuationDistance > 0.0f && m.attenuationColor != glm::vec3(1.0f) &&
            glm::any(glm::greaterThan(m.scatterColor, glm::vec3(0.0f)));
@@ -87,7 +94,7 @@ bool scatters(const Material& m) {
 // Texels: base colour; emission, roughness; metallic, specular, transmission, IOR; specular colour,
 // thickness (0: thin-walled); attenuation colour, attenuation distance (0: no absorption); alpha mode
 // (0 opaque, 1 mask, 2 blend), alpha cutoff, double-sided, 0 (an area light's material: 1, front
-// face only); the volume's scattering albedo, Henyey-Greenstein g (all 0 where the volume only
+// face only; an index-matched boundary: 2); the volume's scattering albedo, Henyey-Greenstein g (all 0 where the volume only
 // absorbs: media.glsl); then the texture references (texture_refs.h), the emissive one's last w holding the
 // luminance light sampling assumes for an emissive-textured mesh triangle (sampledEmission).
 std::vector<glm::vec4> packMaterial(const Material& m, const Scene* scene, const TextureSet* textures) {
@@ -98,7 +105,7 @@ std::vector<glm::vec4> packMaterial(const Material& m, const Scene* scene, const
              glm::clamp(m.transmissionFactor, 0.0f, 1.0f), std::max(m.ior, 1.0f)},
             glm::vec4(m.specularColorFactor, std::max(m.thicknessFactor, 0.0f)),
             glm::vec4(m.attenuationColor, absorbs ? m.attenuationDistance : 0.0f),
-            {static_cast<float>(m.alphaMode), m.alphaCutoff, m.doubleSided ? 1.0f : 0.0f, 0.0f},
+            {static_cast<float>(m.alphaMode), m.alphaCutoff, m.doubleSided ? 1.0f : 0.0f, indexMatched(m) ? 2.0f : 0.0f},
             scatteringTexel(m)};
     appendMaterialTextureRefs(texels, scene, m, textures);
     if (scene && hasEmissiveTexture(*scene, m))

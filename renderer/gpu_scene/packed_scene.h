@@ -44,6 +44,10 @@ PackedScene packScene(const Scene& scene, const TextureSet* textures = nullptr);
 // Whether the material's volume scatters light (GLINT_materials_volume_scatter on an attenuating
 // KHR_materials_volume): scenes with one compile the medium code (HAS_MEDIA).
 bool scatters(const Material& m);
+// Whether paths and shadow rays cross the material's surfaces without a vertex (HAS_INDEX_MATCHED,
+// docs/MEDIA.md): transmission 1, IOR 1, not metallic, not emitting, opaque, and no texture that
+// could change that or its tint across the surface.
+bool indexMatched(const Material& m);
 
 std::vector<glm::vec4> packMaterial(const Material& material, const Scene* scene = nullptr, const TextureSet* textures = nullptr);
 

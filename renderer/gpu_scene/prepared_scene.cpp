@@ -71,6 +71,7 @@ std::map<std::string, std::string> SceneFeatures::defines() const {
     if (meshes && singleSided) defines["HAS_SINGLE_SIDED"] = "";
     if (emissiveShapes) defines["HAS_EMISSIVE_SHAPES"] = "";
     if (media) defines["HAS_MEDIA"] = "";
+    if (indexMatched) defines["HAS_INDEX_MATCHED"] = "";
     return defines;
 }
 
@@ -86,6 +87,12 @@ bool usesMedia(const Scene& scene) {
     if (scene.settings.fog.enabled()) return true;
     for (const auto& [id, material] : scene.materials)
         if (scatters(material)) return true;
+    return false;
+}
+
+bool usesIndexMatched(const Scene& scene) {
+    for (const auto& [id, m] : scene.materials)
+        if (indexMatched(m)) return true;
     return false;
 }
 
@@ -126,6 +133,7 @@ PreparedScene prepareScene(const Scene& scene, const std::filesystem::path& envi
     out.environment = scene.settings.environment;
     out.fog = scene.settings.fog;
     out.features.media = usesMedia(scene);
+    out.features.indexMatched = usesIndexMatched(scene);
     out.environmentFile = environmentFile;
     if (!environmentFile.empty()) {
         report(control, PreparationStage::Environment, 0, 1);

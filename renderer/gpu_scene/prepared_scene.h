@@ -35,6 +35,7 @@ struct SceneFeatures {
     bool singleSided = false; // a non-emissive single-sided mesh material: camera rays cull its back faces
     bool emissiveShapes = false; // an emissive shape or an area light: light-sampled (HAS_EMISSIVE_SHAPES)
     bool media = false;       // fog, or a material whose volume scatters (HAS_MEDIA)
+    bool indexMatched = false; // a transmissive IOR-1 material: shadow rays cross it (HAS_INDEX_MATCHED)
     std::map<std::string, std::string> defines() const; // gl::Defines: NAME -> value
 };
 
@@ -42,6 +43,8 @@ struct SceneFeatures {
 void addMeshMaterialFeatures(const Scene& scene, SceneFeatures& features);
 // Whether the scene has fog or a material whose volume scatters.
 bool usesMedia(const Scene& scene);
+// Whether a material is index-matched (packed_scene.h indexMatched): paths and shadow rays cross it.
+bool usesIndexMatched(const Scene& scene);
 
 struct PreparedEnvironment {
     EnvironmentImage image;

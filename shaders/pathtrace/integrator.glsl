@@ -174,7 +174,8 @@ ShadowCandidate environmentCandidate(Vertex v, INOUT(Rng) rng) {
 // compile time (seconds on llvmpipe for the BVH variant).
 // `diffuse`: the part of the sum the diffuse lobe carried, where `split` (the first hit) asks for it.
 // Shadow rays cross the medium on their side of the surface: `arrived` on the side of wo (and
-// everywhere around a medium vertex), `across` on the other.
+// everywhere around a medium vertex), `across` on the other; in the HAS_INDEX_MATCHED variant they
+// also cross index-matched boundaries and the media behind them (media.glsl).
 vec3 directLight(Vertex v, Medium arrived, Medium across, bool split, INOUT(Rng) rng, OUT(vec3) diffuse) {
     vec3 sum = vec3(0.0);
     diffuse = vec3(0.0);
@@ -185,9 +186,16 @@ vec3 directLight(Vertex v, Medium arrived, Medium across, bool split, INOUT(Rng)
         setTraceState(false, alphaKey(rng, 1u), v.cone);
         Ray ray;
         float distance;
-        if (!shadowRay(v, c, ray, distance) || occluded(ray, distance)) continue;
+        if (!shadowRay(v, c, ray, distance)) continue;
         bool sameSide = v.inMedium || (localFromWorld(v.frame, c.direction).z > 0.0) == (v.wo.z > 0.0);
-        vec3 contribution = c.contribution * mediumTransmittance(sameSide ? arrived : across, ray, distance);
+#ifdef HAS_INDEX_MATCHED
+        vec3 transmittance = shadowTransmittance(ray, distance, sameSide ? arrived : across);
+        if (!(maxComponent(transmittance) > 0.0)) continue;
+#else
+        if (occluded(ray, distance)) continue;
+        vec3 transmittance = mediumTransmittance(sameSide ? arrived : across, ray, distance);
+#endif
+        vec3 contribution = c.contribution * transmittance;
         sum += contribution;
         if (split) diffuse += v.inMedium ? contribution : diffusePart(v.material, v.wo, localFromWorld(v.frame, c.direction), contribution);
     }
@@ -263,6 +271,9 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng, OUT(LobeRadiance) l
     float lastBsdfPdf = 0.0;       // of the sampled direction; 0 for camera rays and delta lobes
     vec3 lastPosition = ray.origin; // the vertex the ray left (MIS evaluates light sampling there)
     int maxBounces = min(uMaxBounces, HARD_PATH_LIMIT - 1);
+#ifdef HAS_INDEX_MATCHED
+    int crossings = 0; // of index-matched boundaries (media.glsl), which are not bounces
+#endif
     RayCone cone = cameraCone();
     for (int depth = 0; depth <= maxBounces + 1; ++depth) {
         setTraceState(depth == 0, alphaKey(rng, 2u), cone);
@@ -281,6 +292,15 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng, OUT(LobeRadiance) l
             float weight;
             segment = fogScatterDistance(ray, min(hit.t, lampT), segment, center, rand1(rng), weight);
             throughput *= weight;
+        }
+#endif
+#ifdef HAS_INDEX_MATCHED
+        if (!scattered && hit.material >= 0 && hit.t < lampT && crossings < MAX_PATH_CROSSINGS && indexMatchedBoundary(hit.material)) {
+            ++crossings;
+            cone = RayCone(coneWidthAt(cone, hit.t), cone.spread);
+            throughput *= crossBoundary(hit, ray, medium);
+            --depth; // not a bounce
+            continue;
         }
 #endif
         if (depth == 1 && reflectedPath) lobes.reflectionDistance = min(min(segment, lampT), REFLECTION_AT_INFINITY);

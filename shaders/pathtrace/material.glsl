@@ -19,6 +19,11 @@ vec3 fetchEmission(int material) {
     return materialTexel(material, 1).rgb;
 }
 
+// Material texel 5 w (renderer/gpu_scene/packed_scene.cpp): an area light's material emits from
+// its front face only; an index-matched boundary is crossed without a vertex (media.glsl).
+const float MATERIAL_FRONT_ONLY = 1.0;
+const float MATERIAL_INDEX_MATCHED = 2.0;
+
 // Whether a ray along `rayDirection` sees the emission of what it hit. A mesh triangle of a
 // single-sided material (glTF doubleSided false: its back face is culled) emits from its front face
 // only, the side its normal points to; double-sided materials and analytic shapes emit from both,
@@ -26,7 +31,7 @@ vec3 fetchEmission(int material) {
 // sphere). Next-event estimation samples the same sides (emissive_lights.glsl, shape_lights.glsl).
 bool emissionSeen(Hit hit, vec3 rayDirection) {
     vec4 sides = materialTexel(hit.material, 5);
-    bool frontOnly = hit.onMesh ? sides.z == 0.0 : sides.w != 0.0;
+    bool frontOnly = hit.onMesh ? sides.z == 0.0 : sides.w == MATERIAL_FRONT_ONLY;
     return !frontOnly || dot(hit.geometricNormal, rayDirection) < 0.0;
 }
 

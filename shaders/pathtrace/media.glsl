@@ -48,6 +48,47 @@ vec3 mediumTransmittance(Medium m, Ray ray, float t) {
     return exp(-m.sigmaT * t);
 }
 
+#ifdef HAS_INDEX_MATCHED
+// Index-matched boundaries (renderer/gpu_scene/packed_scene.h indexMatched) neither bend nor
+// reflect light: paths and shadow rays alike go straight through them, dimmed only by their tint (the
+// base colour, as KHR_materials_transmission tints) and the medium behind. A crossing is not a path
+// vertex: it takes no bounce and leaves the MIS state of the vertex before it, so next-event
+// estimation across a boundary and the path through it are weighted against each other as in the
+// open. Other surfaces block shadow rays.
+const int MAX_SHADOW_CROSSINGS = 8;
+const int MAX_PATH_CROSSINGS = 16;
+
+bool indexMatchedBoundary(int material) { return materialTexel(material, 5).w == MATERIAL_INDEX_MATCHED; }
+
+// Crosses the boundary `hit` found on `ray`: the medium behind it (a thin sheet keeps the medium),
+// the ray moved just past it; returns the boundary's tint.
+vec3 crossBoundary(Hit hit, INOUT(Ray) ray, INOUT(Medium) medium) {
+    bool entering = dot(hit.geometricNormal, ray.direction) < 0.0;
+    if (materialTexel(hit.material, 3).w > 0.0) // thickness: a closed volume
+        medium = entering ? interiorMedium(hit.material, fetchSurfaceMaterial(hit.material)) : sceneMedium();
+    ray.origin = bvhOffsetRayOrigin(ray.origin + hit.t * ray.direction, entering ? -hit.geometricNormal : hit.geometricNormal);
+    return materialTexel(hit.material, 0).rgb;
+}
+
+// What arrives along a shadow ray of length `distance` that starts in `medium`: the transmittance of
+// the media it crosses, through index-matched boundaries (a closed one switches the medium, as a
+// path crossing it does), 0 where anything else is in the way or after MAX_SHADOW_CROSSINGS.
+vec3 shadowTransmittance(Ray ray, float distance, Medium medium) {
+    vec3 through = vec3(1.0);
+    vec3 end = ray.origin + distance * ray.direction;
+    for (int i = 0; i < MAX_SHADOW_CROSSINGS; ++i) {
+        Hit hit = traceClosest(ray);
+        if (hit.material < 0 || hit.t >= distance) return through * mediumTransmittance(medium, ray, distance);
+        if (!indexMatchedBoundary(hit.material)) return vec3(0.0);
+        through *= mediumTransmittance(medium, ray, hit.t);
+        through *= crossBoundary(hit, ray, medium);
+        distance = dot(end - ray.origin, ray.direction);
+        if (!(distance > 0.0)) return through;
+    }
+    return vec3(0.0);
+}
+#endif
+
 #ifdef HAS_MEDIA
 // Whether a ray scatters in the medium before `tEnd` (the next surface, or RAY_MAX), and the weight
 // of that outcome (the albedo is the scattering vertex's own weight, scatterSample). Free flights are

@@ -53,7 +53,7 @@ bool sampleShapeLight(vec3 p, float x, vec2 uv, float areaPower, OUT(AreaLightSa
     vec3 direction = offset / distance;
     int material = int(shapeTexel(shape, 0).y);
     bool facesP = dot(point.normal, direction) < 0.0;
-    if (materialTexel(material, 5).w != 0.0 && !facesP) return false; // front face only
+    if (materialTexel(material, 5).w == MATERIAL_FRONT_ONLY && !facesP) return false;
     float pdf = shapeTexel(shape, 5).x / areaPower * point.pdf;
     if (!(pdf > 0.0) || !isFiniteFloat(pdf)) return false;
     s = AreaLightSample(direction, distance, fetchEmission(material), pdf,
