@@ -12,6 +12,7 @@
 
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -56,6 +57,45 @@ Estimate estimate(const renderer::RenderOutput& out, int size, int spp, int c, c
 
 QString describe(const Estimate& e, double expected) {
     return QString("mean %1, expected %2, sigma %3 over %4 pixels").arg(e.mean).arg(expected).arg(e.sigma).arg(e.pixels);
+}
+
+// The Henyey-Greenstein phase function, written out here independently of the shader's.
+double phase(double cosTheta, double g) { return (1.0 - g * g) / (4.0 * M_PI * std::pow(1.0 + g * g - 2.0 * g * cosTheta, 1.5)); }
+
+// The expected image of an orthographic view (rows top-down) centred on `centre` with the camera's
+// `halfHeight`: radiance(x, y), a function of the point on the view plane, averaged over n x n
+// points per pixel.
+std::vector<double> expectedImage(int size, glm::dvec2 centre, double halfHeight, int n,
+                                  const std::function<double(double, double)>& radiance) {
+    std::vector<double> image(std::size_t(size * size));
+    const double pixelSize = 2.0 * halfHeight / size;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x)
+            for (int sy = 0; sy < n; ++sy)
+                for (int sx = 0; sx < n; ++sx)
+                    image[std::size_t(y * size + x)] += radiance(centre.x - halfHeight + (x + (sx + 0.5) / n) * pixelSize,
+                                                                 centre.y + halfHeight - (y + (sy + 0.5) / n) * pixelSize) / (n * n);
+    return image;
+}
+
+// The red channel against `expected`: each pixel within 4.5 standard errors + 1 % of the expected peak, and the
+// image's sum within 1 %.
+void compareWithExpected(const renderer::RenderOutput& out, int size, int spp, const std::vector<double>& expected) {
+    const double peak = *std::max_element(expected.begin(), expected.end());
+    QVERIFY2(peak > 0.01, qPrintable(QString("expected peak %1: nothing to compare").arg(peak)));
+    double sumRendered = 0.0, sumExpected = 0.0;
+    for (int y = 0; y < size; ++y) {
+        for (int x = 0; x < size; ++x) {
+            const double value = pixel(out.radiance, size, x, y, 0);
+            const double reference = expected[std::size_t(y * size + x)];
+            const double se = std::sqrt(out.variance[std::size_t(y * size + x) * 3] / spp);
+            sumRendered += value;
+            sumExpected += reference;
+            QVERIFY2(std::abs(value - reference) < 4.5 * se + 0.01 * peak,
+                     qPrintable(QString("pixel %1,%2: %3, expected %4, standard error %5").arg(x).arg(y).arg(value).arg(reference).arg(se)));
+        }
+    }
+    QVERIFY2(std::abs(sumRendered / sumExpected - 1.0) < 0.01, qPrintable(QString("image sum %1, expected %2").arg(sumRendered).arg(sumExpected)));
 }
 
 } // namespace
@@ -201,37 +241,11 @@ private slots:
                 const double b = glm::dot(at, w);
                 const double exit = -b + std::sqrt(std::max(b * b - (glm::dot(at, at) - 1.0), 0.0));
                 const double cosTheta = -w.z; // travel is -Z
-                const double hg = (1.0 - g * g) / (4.0 * M_PI * std::pow(1.0 + g * g - 2.0 * g * cosTheta, 1.5));
-                sum += sigmaT * albedo * std::exp(-sigmaT * s) * hg * intensity / (r * r) * std::exp(-sigmaT * exit);
+                sum += sigmaT * albedo * std::exp(-sigmaT * s) * phase(cosTheta, g) * intensity / (r * r) * std::exp(-sigmaT * exit);
             }
             return sum * 2.0 * half / steps;
         };
-        const double pixelSize = 2.4 / size;
-        std::vector<double> expected(std::size_t(size * size));
-        double peak = 0.0, sumExpected = 0.0, sumRendered = 0.0;
-        for (int y = 0; y < size; ++y) {
-            for (int x = 0; x < size; ++x) {
-                double e = 0.0;
-                for (int sy = 0; sy < 4; ++sy)
-                    for (int sx = 0; sx < 4; ++sx)
-                        e += alongChord(-1.2 + (x + (sx + 0.5) / 4.0) * pixelSize, 1.2 - (y + (sy + 0.5) / 4.0) * pixelSize) / 16.0;
-                expected[std::size_t(y * size + x)] = e;
-                peak = std::max(peak, e);
-            }
-        }
-        QVERIFY2(peak > 0.01, qPrintable(QString("peak %1").arg(peak)));
-        for (int y = 0; y < size; ++y) {
-            for (int x = 0; x < size; ++x) {
-                const double value = pixel(out.radiance, size, x, y, 0);
-                const double reference = expected[std::size_t(y * size + x)];
-                const double se = std::sqrt(out.variance[std::size_t(y * size + x) * 3] / spp);
-                sumRendered += value;
-                sumExpected += reference;
-                QVERIFY2(std::abs(value - reference) < 4.5 * se + 0.01 * peak,
-                         qPrintable(QString("pixel %1,%2: %3, expected %4, standard error %5").arg(x).arg(y).arg(value).arg(reference).arg(se)));
-            }
-        }
-        QVERIFY2(std::abs(sumRendered / sumExpected - 1.0) < 0.01, qPrintable(QString("image sum %1, expected %2").arg(sumRendered).arg(sumExpected)));
+        compareWithExpected(out, size, spp, expectedImage(size, glm::dvec2(0.0), 1.2, 4, alongChord));
     }
 
     // 32x32, 512 spp, seed 4, 64 bounces. The furnace room filled with fog that scatters all it
@@ -292,38 +306,11 @@ private slots:
                 const double ramp = std::clamp((wi.y - cosOuter) / (cosInner - cosOuter), 0.0, 1.0); // the spot shines along -Y
                 if (ramp <= 0.0) continue;
                 const double cosTheta = -wi.z; // travel is -Z
-                const double hg = (1.0 - g * g) / (4.0 * M_PI * std::pow(1.0 + g * g - 2.0 * g * cosTheta, 1.5));
-                sum += density * albedo * std::exp(-density * s) * hg * intensity * ramp * ramp / (r * r) * std::exp(-density * r) * ds;
+                sum += density * albedo * std::exp(-density * s) * phase(cosTheta, g) * intensity * ramp * ramp / (r * r) * std::exp(-density * r) * ds;
             }
             return sum;
         };
-        std::vector<double> expected(size * size);
-        double peak = 0.0;
-        const double pixelSize = 2.0 / size;
-        for (int y = 0; y < size; ++y) {
-            for (int x = 0; x < size; ++x) {
-                double e = 0.0;
-                for (int sy = 0; sy < 8; ++sy)
-                    for (int sx = 0; sx < 8; ++sx)
-                        e += singleScattering(-1.0 + (x + (sx + 0.5) / 8.0) * pixelSize, 1.5 - (y + (sy + 0.5) / 8.0) * pixelSize);
-                expected[std::size_t(y * size + x)] = e / 64.0;
-                peak = std::max(peak, e / 64.0);
-            }
-        }
-        QVERIFY2(peak > 0.01, qPrintable(QString("peak %1: the beam is not in view").arg(peak)));
-        double sumRendered = 0.0, sumExpected = 0.0;
-        for (int y = 0; y < size; ++y) {
-            for (int x = 0; x < size; ++x) {
-                const double value = pixel(out.radiance, size, x, y, 0);
-                const double reference = expected[std::size_t(y * size + x)];
-                const double se = std::sqrt(out.variance[std::size_t(y * size + x) * 3] / spp);
-                sumRendered += value;
-                sumExpected += reference;
-                QVERIFY2(std::abs(value - reference) < 4.5 * se + 0.01 * peak,
-                         qPrintable(QString("pixel %1,%2: %3, expected %4, standard error %5").arg(x).arg(y).arg(value).arg(reference).arg(se)));
-            }
-        }
-        QVERIFY2(std::abs(sumRendered / sumExpected - 1.0) < 0.01, qPrintable(QString("image sum %1, expected %2").arg(sumRendered).arg(sumExpected)));
+        compareWithExpected(out, size, spp, expectedImage(size, {0.0, 0.5}, 1.0, 8, singleScattering));
     }
 
     // A scene without fog or scattering materials compiles no medium code, and its pixels do not
