@@ -94,9 +94,10 @@ bool scatters(const Material& m) {
 // Texels: base colour; emission, roughness; metallic, specular, transmission, IOR; specular colour,
 // thickness (0: thin-walled); attenuation colour, attenuation distance (0: no absorption); alpha mode
 // (0 opaque, 1 mask, 2 blend), alpha cutoff, double-sided, 0 (an area light's material: 1, front
-// face only; an index-matched boundary: 2); the volume's scattering albedo, Henyey-Greenstein g (all 0 where the volume only
-// absorbs: media.glsl); then the texture references (texture_refs.h), the emissive one's last w holding the
-// luminance light sampling assumes for an emissive-textured mesh triangle (sampledEmission).
+// face only; an index-matched boundary: 2); the volume's scattering albedo and Henyey-Greenstein g
+// (all 0 where the volume only absorbs: media.glsl); then the texture references (texture_refs.h),
+// the emissive one's last w holding the luminance light sampling assumes for an emissive-textured
+// mesh triangle (sampledEmission).
 std::vector<glm::vec4> packMaterial(const Material& m, const Scene* scene, const TextureSet* textures) {
     const bool absorbs = std::isfinite(m.attenuationDistance) && m.attenuationDistance > 0.0f;
     std::vector<glm::vec4> texels{m.baseColorFactor,

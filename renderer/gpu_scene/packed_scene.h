@@ -40,7 +40,6 @@ struct PackedScene {
 // references point into `textures` (none without it).
 PackedScene packScene(const Scene& scene, const TextureSet* textures = nullptr);
 
-// One material record; texture references are empty unless `scene` and `textures` are given.
 // Whether the material's volume scatters light (GLINT_materials_volume_scatter on an attenuating
 // KHR_materials_volume): scenes with one compile the medium code (HAS_MEDIA).
 bool scatters(const Material& m);
@@ -49,6 +48,7 @@ bool scatters(const Material& m);
 // could change that or its tint across the surface.
 bool indexMatched(const Material& m);
 
+// One material record; texture references are empty unless `scene` and `textures` are given.
 std::vector<glm::vec4> packMaterial(const Material& material, const Scene* scene = nullptr, const TextureSet* textures = nullptr);
 
 } // namespace glint::renderer
