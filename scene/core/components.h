@@ -24,6 +24,8 @@ struct Shape {
     glm::vec3 size{1.0f, 1.0f, 1.0f}; // box: full extents; quad: size.x by size.z in the XZ plane, normal +Y
     float height = 1.0f;              // cylinder, along +Y, centred on the origin
     MaterialId material{};
+    // Quad only: the paired portal's node (portal.h). A ray entering this quad leaves that one.
+    NodeId portal{};
     // GroundPlane: the infinite plane y = 0 of the node's space, normal +Y. Kept out of any BVH.
     // Disk: radius in the XZ plane, normal +Y.
     friend bool operator==(const Shape&, const Shape&) = default;

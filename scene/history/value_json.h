@@ -133,7 +133,8 @@ NLOHMANN_JSON_SERIALIZE_ENUM(Tonemapper, {{Tonemapper::None, "none"}, {Tonemappe
 
 GLINT_JSON_TYPE(Transform, translation, rotation, scale)
 GLINT_JSON_TYPE(MeshInstance, mesh)
-GLINT_JSON_TYPE(Shape, kind, radius, size, height, material)
+// With defaults: command logs written before portals existed still replay.
+GLINT_JSON_TYPE_WITH_DEFAULT(Shape, kind, radius, size, height, material, portal)
 // With defaults: command logs written before area lights existed still replay.
 GLINT_JSON_TYPE_WITH_DEFAULT(Light, type, color, intensity, range, innerConeAngle, outerConeAngle,
                                                 angularDiameter, radius, areaShape, size)
