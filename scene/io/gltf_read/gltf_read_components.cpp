@@ -179,7 +179,7 @@ Light readAreaLight(GltfReadContext& ctx, const Json& ext, const std::string& wh
     return l;
 }
 
-Shape readShape(const GltfReadContext& ctx, const Json& ext, const std::string& where)
+Shape readShape(GltfReadContext& ctx, const Json& ext, const std::string& where)
 {
     const JsonReader json{ctx.file};
     Shape s;
@@ -189,6 +189,7 @@ Shape readShape(const GltfReadContext& ctx, const Json& ext, const std::string& 
     s.height = json.number(ext, "height", s.height, where);
     const int material = json.index(ext, "material", where);
     if (material >= 0) s.material = ctx.materialIds.at(static_cast<std::size_t>(material));
+    s.portal = readPortalLink(ctx, ext, where); // checked as a pair once every node is read
     return s;
 }
 

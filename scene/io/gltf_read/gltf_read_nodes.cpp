@@ -155,6 +155,7 @@ void readNodes(GltfReadContext& ctx)
     }
     // Split-off cameras and lights get ids after every glTF node, so they never take a saved id.
     for (const PendingSplit& split : splits) addSplitChildren(ctx, split.parent, split.name, split.parts, split.where);
+    checkPortalPairs(ctx);
 }
 
 } // namespace glint

@@ -19,7 +19,11 @@ std::vector<NodeId> assignNodeIds(GltfReadContext& ctx, const std::vector<int>& 
 
 Camera readCamera(GltfReadContext& ctx, int camera, const nlohmann::json& node, const std::string& where);
 Light readLight(const GltfReadContext& ctx, int light);
-Shape readShape(const GltfReadContext& ctx, const nlohmann::json& extension, const std::string& where);
+Shape readShape(GltfReadContext& ctx, const nlohmann::json& extension, const std::string& where);
+// GLINT_shape's `portal` as the id its index names (none, with a warning, when it names no loaded node).
+NodeId readPortalLink(GltfReadContext& ctx, const nlohmann::json& extension, const std::string& where);
+// After every node is read: drops each portal link that is not half of a pair of quads, named.
+void checkPortalPairs(GltfReadContext& ctx);
 // GLINT_area_light on a node: an area light (the node's emissive mesh is its fallback, dropped).
 Light readAreaLight(GltfReadContext& ctx, const nlohmann::json& extension, const std::string& where);
 

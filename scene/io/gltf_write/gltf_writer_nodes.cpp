@@ -11,6 +11,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <optional>
 
 namespace glint {
 
@@ -50,6 +51,17 @@ const char* lightTypeName(LightType type)
     return "point";
 }
 
+// A file carries portal pairs only: two quads naming each other (hidden or not). A one-sided link
+// (its partner deleted, or no longer a quad) renders as an ordinary quad and is not saved.
+std::optional<int> portalPartnerIndex(const GltfWriteContext& ctx, const Node& source, const Shape& shape)
+{
+    if (shape.kind != ShapeKind::Quad || !shape.portal.valid() || shape.portal == source.id) return std::nullopt;
+    const Node* partner = ctx.scene.node(shape.portal);
+    const Shape* other = partner ? partner->get<Shape>() : nullptr;
+    if (!other || other->kind != ShapeKind::Quad || other->portal != source.id) return std::nullopt;
+    return ctx.nodes.at(shape.portal);
+}
+
 // The fallback mesh other tools show; Glint drops it on load and regenerates it here.
 void writeShape(GltfWriteContext& ctx, nlohmann::json& node, const Node& source, const Shape& shape)
 {
@@ -63,6 +75,7 @@ void writeShape(GltfWriteContext& ctx, nlohmann::json& node, const Node& source,
         else
             ctx.drop("dangling-material", "shape node " + std::to_string(source.id.value) + " refers to a missing material");
     }
+    if (const auto partner = portalPartnerIndex(ctx, source, shape)) ext["portal"] = *partner;
     node["extensions"]["GLINT_shape"] = std::move(ext);
 
     Mesh fallback;
