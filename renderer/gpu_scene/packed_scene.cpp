@@ -5,6 +5,7 @@
 #include "renderer/gpu_scene/texture_refs.h"
 #include "renderer/gpu_scene/visibility.h"
 #include "scene/core/area_light.h"
+#include "scene/core/portal.h"
 
 #include <cmath>
 
@@ -72,6 +73,15 @@ void packLight(PackedScene& out, const Light& light, const glm::mat4& worldFromL
     out.sphereLamps = out.sphereLamps || radius > 0.0f;
 }
 
+// Texel 5's z of each portal quad: its partner's shape index + 1 (0 on every other shape).
+void linkPortals(PackedScene& out, const Scene& scene, const std::map<NodeId, int>& portalShapes) {
+    for (const auto& [id, shape] : portalShapes) {
+        const int partner = portalShapes.at(*portalPartner(scene, id));
+        out.shapes[std::size_t(shape) * shapeTexels + 5].z = static_cast<float>(partner + 1);
+    }
+    out.portals = !portalShapes.empty();
+}
+
 glm::vec4 scatteringTexel(const Material& m) {
     if (!scatters(m)) return glm::vec4(0.0f);
     return glm::vec4(glm::clamp(m.scatterColor, 0.0f, 1.0f), glm::clamp(m.scatterAnisotropy, -0.99f, 0.99f));
@@ -123,16 +133,20 @@ PackedScene packScene(const Scene& scene, const TextureSet* textures) {
         out.materials.insert(out.materials.end(), texels.begin(), texels.end());
     }
     out.sceneMaterialCount = static_cast<int>(out.materials.size() / materialTexels);
+    std::map<NodeId, int> portalShapes;
     for (const NodeId id : scene.depthFirst()) {
         const Node& node = scene.at(id);
         if (!visibleInWorld(scene, node)) continue;
         if (const auto* shape = node.get<Shape>()) {
             const auto it = out.materialIndex.find(shape->material);
             const Material* material = scene.materials.find(shape->material);
+            // A portal is no light source: what it shows comes from behind its partner.
+            const bool portal = portalPartner(scene, id).has_value();
+            if (portal) portalShapes[id] = out.shapeCount;
             packShape(out, *shape, scene.worldFromNode(id), static_cast<float>(id.value),
                       it == out.materialIndex.end() ? 0 : it->second,
-                      material && !hasEmissiveTexture(scene, *material) ? sampledEmission(scene, *material, textures)
-                                                                        : glm::vec3(0.0f));
+                      material && !portal && !hasEmissiveTexture(scene, *material) ? sampledEmission(scene, *material, textures)
+                                                                                   : glm::vec3(0.0f));
         } else if (const auto* light = node.get<Light>()) {
             if (light->type == LightType::Area)
                 packAreaLight(out, *light, scene.worldFromNode(id), static_cast<float>(id.value));
@@ -140,6 +154,7 @@ PackedScene packScene(const Scene& scene, const TextureSet* textures) {
                 packLight(out, *light, scene.worldFromNode(id), static_cast<float>(id.value), scene.settings.lightUnits);
         }
     }
+    linkPortals(out, scene, portalShapes);
     return out;
 }
 

@@ -13,7 +13,7 @@
 namespace glint::renderer {
 
 // Shape texels: kind, material, id, height; localFromWorld (3 rows); radius, size; emitter (power,
-// cumulative power, 0, |det worldFromLocal|); worldFromLocal (3 rows). Layout: shaders/pathtrace/shapes.glsl.
+// cumulative power, portal partner's shape index + 1 or 0, |det worldFromLocal|); worldFromLocal (3 rows). Layout: shaders/pathtrace/shapes.glsl.
 inline constexpr int shapeTexels = 9;
 inline constexpr int materialBaseTexels = 7; // factors, alpha mode and sidedness, then volume scattering
 inline constexpr int materialTexels = 31;    // base texels + 8 texture references of 3 texels (texture_refs.h)
@@ -31,6 +31,7 @@ struct PackedScene {
     // (HAS_EMISSIVE_SHAPES). An area light is an emitter even at 0 W, so that editing its power
     // keeps the shader variant.
     bool emissiveShapes = false;
+    bool portals = false; // a linked portal pair (scene/core/portal.h): rays cross it (HAS_PORTALS)
     float shapeEmitterPower = 0.0f; // the sum of the shapes' powers
     int sceneMaterialCount = 0;     // material records of the scene's materials (+ the default); area lights' follow
     std::map<MaterialId, int> materialIndex;

@@ -72,6 +72,7 @@ std::map<std::string, std::string> SceneFeatures::defines() const {
     if (emissiveShapes) defines["HAS_EMISSIVE_SHAPES"] = "";
     if (media) defines["HAS_MEDIA"] = "";
     if (indexMatched) defines["HAS_INDEX_MATCHED"] = "";
+    if (portals) defines["HAS_PORTALS"] = "";
     return defines;
 }
 
@@ -121,6 +122,7 @@ PreparedScene prepareScene(const Scene& scene, const std::filesystem::path& envi
     report(control, PreparationStage::Packing, 0, 1);
     out.packed = packScene(scene, &out.textures);
     out.features.emissiveShapes = out.packed.emissiveShapes;
+    out.features.portals = out.packed.portals;
     const bool colors = meshesHaveColors(scene);
     out.meshes = validatedMeshData(scene, out.packed.materialIndex, !out.textures.empty() || colors, meshCache,
                                [&](std::size_t done, std::size_t total) { report(control, PreparationStage::Meshes, done, total); },

@@ -36,6 +36,7 @@ struct SceneFeatures {
     bool emissiveShapes = false; // an emissive shape or an area light: light-sampled (HAS_EMISSIVE_SHAPES)
     bool media = false;       // fog, or a material whose volume scatters (HAS_MEDIA)
     bool indexMatched = false; // a transmissive IOR-1 material: shadow rays cross it (HAS_INDEX_MATCHED)
+    bool portals = false;     // a linked portal pair: paths cross it (HAS_PORTALS)
     std::map<std::string, std::string> defines() const; // gl::Defines: NAME -> value
 };
 

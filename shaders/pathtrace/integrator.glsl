@@ -274,6 +274,12 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng, OUT(LobeRadiance) l
 #ifdef HAS_INDEX_MATCHED
     int crossings = 0; // of index-matched boundaries (media.glsl), which are not bounces
 #endif
+    // The guide buffers' depth of a camera ray that went through portals: along the unfolded ray.
+    float travelled = 0.0; // before this segment
+    float viewCos = dot(ray.direction, viewAxis);
+#ifdef HAS_PORTALS
+    int portalCrossings = 0; // a chain of portals ends at the bounce limit + 1: that quad is a surface
+#endif
     RayCone cone = cameraCone();
     for (int depth = 0; depth <= maxBounces + 1; ++depth) {
         setTraceState(depth == 0, alphaKey(rng, 2u), cone);
@@ -298,7 +304,24 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng, OUT(LobeRadiance) l
         if (!scattered && hit.material >= 0 && hit.t < lampT && crossings < MAX_PATH_CROSSINGS && indexMatchedBoundary(hit.material)) {
             ++crossings;
             cone = RayCone(coneWidthAt(cone, hit.t), cone.spread);
+            travelled += hit.t;
             throughput *= crossBoundary(hit, ray, medium);
+            --depth; // not a bounce
+            continue;
+        }
+#endif
+#ifdef HAS_PORTALS
+        int portalExitShape = scattered || hit.t >= lampT ? -1 : portalExit(hit);
+        if (portalExitShape >= 0 && portalCrossings <= maxBounces) {
+            ++portalCrossings;
+#ifndef HAS_MEDIA
+            throughput *= exp(-medium.sigmaT * hit.t);
+#endif
+            cone = RayCone(coneWidthAt(cone, hit.t), cone.spread);
+            travelled += hit.t;
+            ray = throughPortal(ray, hit.t, hit.triangle.y, portalExitShape);
+            lastBsdfPdf = 0.0;
+            lastPosition = ray.origin;
             --depth; // not a bounce
             continue;
         }
@@ -316,7 +339,7 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng, OUT(LobeRadiance) l
                 result.albedo = medium.albedo;
                 if (hit.material >= 0 && hit.t < lampT) {
                     result.normal = dot(hit.geometricNormal, ray.direction) < 0.0 ? hit.geometricNormal : -hit.geometricNormal;
-                    result.depth = hit.t * dot(ray.direction, viewAxis);
+                    result.depth = (travelled + hit.t) * viewCos;
                     result.objectId = hit.objectId;
                 }
             }
@@ -326,7 +349,7 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng, OUT(LobeRadiance) l
                 PASS_FOUND(depth, throughput * lamp, specularPath, false);
                 if (depth == 0) {
                     result.albedo = lamp;
-                    result.depth = lampT * dot(ray.direction, viewAxis);
+                    result.depth = (travelled + lampT) * viewCos;
                     result.objectId = lampId;
                 }
                 break;
@@ -357,7 +380,7 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng, OUT(LobeRadiance) l
             if (depth == 0) {
                 result.albedo = v.material.baseColor;
                 result.normal = v.wo.z >= 0.0 ? shading.normal : -shading.normal;
-                result.depth = hit.t * dot(ray.direction, viewAxis);
+                result.depth = (travelled + hit.t) * viewCos;
                 result.objectId = hit.objectId;
                 result.lobes = vec4(v.material.metallic, v.material.roughness, v.material.transmission, v.material.specularFactor);
             }

@@ -20,6 +20,9 @@
 #include "shape_lights.glsl"
 #endif
 #include "media.glsl"
+#ifdef HAS_PORTALS
+#include "portals.glsl"
+#endif
 #include "camera.glsl"
 #include "render_passes.glsl"
 #include "lobe_radiance.glsl"
