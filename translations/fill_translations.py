@@ -622,6 +622,19 @@ T = {
 "Rectangle": ("Rettangolo", "Rechteck", "Rectangle", "Rectángulo"),
 "Size X (m)": ("Dimensione X (m)", "Größe X (m)", "Taille X (m)", "Tamaño X (m)"),
 "Size Y (m)": ("Dimensione Y (m)", "Größe Y (m)", "Taille Y (m)", "Tamaño Y (m)"),
+"Portal pair": ("Coppia di portali", "Portalpaar", "Paire de portails", "Par de portales"),
+"Add Portal Pair": ("Aggiungi coppia di portali", "Portalpaar hinzufügen", "Ajouter une paire de portails", "Añadir par de portales"),
+"Portal A": ("Portale A", "Portal A", "Portail A", "Portal A"),
+"Portal B": ("Portale B", "Portal B", "Portail B", "Portal B"),
+"Only a quad can be a portal.": ("Solo un quadrilatero può essere un portale.", "Nur ein Viereck kann ein Portal sein.", "Seul un quadrilatère peut être un portail.", "Solo un cuadrilátero puede ser un portal."),
+"A portal cannot lead to itself.": ("Un portale non può condurre a se stesso.", "Ein Portal kann nicht zu sich selbst führen.", "Un portail ne peut pas mener à lui-même.", "Un portal no puede llevar a sí mismo."),
+"A portal can only lead to another quad.": ("Un portale può condurre solo a un altro quadrilatero.", "Ein Portal kann nur zu einem anderen Viereck führen.", "Un portail ne peut mener qu'à un autre quadrilatère.", "Un portal solo puede llevar a otro cuadrilátero."),
+"Link Portals": ("Collega portali", "Portale verbinden", "Relier les portails", "Enlazar portales"),
+"Unlink Portal": ("Scollega portale", "Portal trennen", "Délier le portail", "Desenlazar portal"),
+"Portal to": ("Portale verso", "Portal zu", "Portail vers", "Portal hacia"),
+"node %1, deleted": ("nodo %1, eliminato", "Knoten %1, gelöscht", "nœud %1, supprimé", "nodo %1, eliminado"),
+"Not paired: the other side does not lead back here, so this quad is an ordinary surface. Choose a quad to pair them again.": ("Non accoppiato: l'altro lato non riconduce qui, quindi questo quadrilatero è una superficie normale. Scegli un quadrilatero per accoppiarli di nuovo.", "Nicht gepaart: Die andere Seite führt nicht hierher zurück, daher ist dieses Viereck eine gewöhnliche Fläche. Wähle ein Viereck, um sie wieder zu paaren.", "Non appairé : l'autre côté ne ramène pas ici, ce quadrilatère est donc une surface ordinaire. Choisissez un quadrilatère pour les appairer de nouveau.", "Sin emparejar: el otro lado no lleva de vuelta aquí, así que este cuadrilátero es una superficie normal. Elige un cuadrilátero para emparejarlos de nuevo."),
+"What enters this quad leaves the quad chosen here, and the other way round.": ("Ciò che entra in questo quadrilatero esce dal quadrilatero scelto qui, e viceversa.", "Was in dieses Viereck eintritt, verlässt das hier gewählte Viereck, und umgekehrt.", "Ce qui entre dans ce quadrilatère sort du quadrilatère choisi ici, et inversement.", "Lo que entra en este cuadrilátero sale del cuadrilátero elegido aquí, y al revés."),
 }
 
 

@@ -1466,6 +1466,45 @@
         <source>Area sphere</source>
         <translation>Flächenkugel</translation>
     </message>
+    <message>
+        <source>Portal pair</source>
+        <translation>Portalpaar</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::PortalEdits</name>
+    <message>
+        <source>Add Portal Pair</source>
+        <translation>Portalpaar hinzufügen</translation>
+    </message>
+    <message>
+        <source>Portal A</source>
+        <translation>Portal A</translation>
+    </message>
+    <message>
+        <source>Portal B</source>
+        <translation>Portal B</translation>
+    </message>
+    <message>
+        <source>Only a quad can be a portal.</source>
+        <translation>Nur ein Viereck kann ein Portal sein.</translation>
+    </message>
+    <message>
+        <source>A portal cannot lead to itself.</source>
+        <translation>Ein Portal kann nicht zu sich selbst führen.</translation>
+    </message>
+    <message>
+        <source>A portal can only lead to another quad.</source>
+        <translation>Ein Portal kann nur zu einem anderen Viereck führen.</translation>
+    </message>
+    <message>
+        <source>Link Portals</source>
+        <translation>Portale verbinden</translation>
+    </message>
+    <message>
+        <source>Unlink Portal</source>
+        <translation>Portal trennen</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Preferences</name>
@@ -2304,6 +2343,22 @@
     <message>
         <source>Base height (m)</source>
         <translation>Basishöhe (m)</translation>
+    </message>
+    <message>
+        <source>node %1, deleted</source>
+        <translation>Knoten %1, gelöscht</translation>
+    </message>
+    <message>
+        <source>Not paired: the other side does not lead back here, so this quad is an ordinary surface. Choose a quad to pair them again.</source>
+        <translation>Nicht gepaart: Die andere Seite führt nicht hierher zurück, daher ist dieses Viereck eine gewöhnliche Fläche. Wähle ein Viereck, um sie wieder zu paaren.</translation>
+    </message>
+    <message>
+        <source>What enters this quad leaves the quad chosen here, and the other way round.</source>
+        <translation>Was in dieses Viereck eintritt, verlässt das hier gewählte Viereck, und umgekehrt.</translation>
+    </message>
+    <message>
+        <source>Portal to</source>
+        <translation>Portal zu</translation>
     </message>
 </context>
 <context>

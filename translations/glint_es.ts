@@ -1466,6 +1466,45 @@
         <source>Area sphere</source>
         <translation>Esfera de área</translation>
     </message>
+    <message>
+        <source>Portal pair</source>
+        <translation>Par de portales</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::PortalEdits</name>
+    <message>
+        <source>Add Portal Pair</source>
+        <translation>Añadir par de portales</translation>
+    </message>
+    <message>
+        <source>Portal A</source>
+        <translation>Portal A</translation>
+    </message>
+    <message>
+        <source>Portal B</source>
+        <translation>Portal B</translation>
+    </message>
+    <message>
+        <source>Only a quad can be a portal.</source>
+        <translation>Solo un cuadrilátero puede ser un portal.</translation>
+    </message>
+    <message>
+        <source>A portal cannot lead to itself.</source>
+        <translation>Un portal no puede llevar a sí mismo.</translation>
+    </message>
+    <message>
+        <source>A portal can only lead to another quad.</source>
+        <translation>Un portal solo puede llevar a otro cuadrilátero.</translation>
+    </message>
+    <message>
+        <source>Link Portals</source>
+        <translation>Enlazar portales</translation>
+    </message>
+    <message>
+        <source>Unlink Portal</source>
+        <translation>Desenlazar portal</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Preferences</name>
@@ -2304,6 +2343,22 @@
     <message>
         <source>Base height (m)</source>
         <translation>Altura base (m)</translation>
+    </message>
+    <message>
+        <source>node %1, deleted</source>
+        <translation>nodo %1, eliminado</translation>
+    </message>
+    <message>
+        <source>Not paired: the other side does not lead back here, so this quad is an ordinary surface. Choose a quad to pair them again.</source>
+        <translation>Sin emparejar: el otro lado no lleva de vuelta aquí, así que este cuadrilátero es una superficie normal. Elige un cuadrilátero para emparejarlos de nuevo.</translation>
+    </message>
+    <message>
+        <source>What enters this quad leaves the quad chosen here, and the other way round.</source>
+        <translation>Lo que entra en este cuadrilátero sale del cuadrilátero elegido aquí, y al revés.</translation>
+    </message>
+    <message>
+        <source>Portal to</source>
+        <translation>Portal hacia</translation>
     </message>
 </context>
 <context>

@@ -1466,6 +1466,45 @@
         <source>Area sphere</source>
         <translation>Sphère surfacique</translation>
     </message>
+    <message>
+        <source>Portal pair</source>
+        <translation>Paire de portails</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::PortalEdits</name>
+    <message>
+        <source>Add Portal Pair</source>
+        <translation>Ajouter une paire de portails</translation>
+    </message>
+    <message>
+        <source>Portal A</source>
+        <translation>Portail A</translation>
+    </message>
+    <message>
+        <source>Portal B</source>
+        <translation>Portail B</translation>
+    </message>
+    <message>
+        <source>Only a quad can be a portal.</source>
+        <translation>Seul un quadrilatère peut être un portail.</translation>
+    </message>
+    <message>
+        <source>A portal cannot lead to itself.</source>
+        <translation>Un portail ne peut pas mener à lui-même.</translation>
+    </message>
+    <message>
+        <source>A portal can only lead to another quad.</source>
+        <translation>Un portail ne peut mener qu'à un autre quadrilatère.</translation>
+    </message>
+    <message>
+        <source>Link Portals</source>
+        <translation>Relier les portails</translation>
+    </message>
+    <message>
+        <source>Unlink Portal</source>
+        <translation>Délier le portail</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Preferences</name>
@@ -2304,6 +2343,22 @@
     <message>
         <source>Base height (m)</source>
         <translation>Hauteur de base (m)</translation>
+    </message>
+    <message>
+        <source>node %1, deleted</source>
+        <translation>nœud %1, supprimé</translation>
+    </message>
+    <message>
+        <source>Not paired: the other side does not lead back here, so this quad is an ordinary surface. Choose a quad to pair them again.</source>
+        <translation>Non appairé : l'autre côté ne ramène pas ici, ce quadrilatère est donc une surface ordinaire. Choisissez un quadrilatère pour les appairer de nouveau.</translation>
+    </message>
+    <message>
+        <source>What enters this quad leaves the quad chosen here, and the other way round.</source>
+        <translation>Ce qui entre dans ce quadrilatère sort du quadrilatère choisi ici, et inversement.</translation>
+    </message>
+    <message>
+        <source>Portal to</source>
+        <translation>Portail vers</translation>
     </message>
 </context>
 <context>

@@ -1466,6 +1466,45 @@
         <source>Area sphere</source>
         <translation>Sfera d'area</translation>
     </message>
+    <message>
+        <source>Portal pair</source>
+        <translation>Coppia di portali</translation>
+    </message>
+</context>
+<context>
+    <name>glint::editor::PortalEdits</name>
+    <message>
+        <source>Add Portal Pair</source>
+        <translation>Aggiungi coppia di portali</translation>
+    </message>
+    <message>
+        <source>Portal A</source>
+        <translation>Portale A</translation>
+    </message>
+    <message>
+        <source>Portal B</source>
+        <translation>Portale B</translation>
+    </message>
+    <message>
+        <source>Only a quad can be a portal.</source>
+        <translation>Solo un quadrilatero può essere un portale.</translation>
+    </message>
+    <message>
+        <source>A portal cannot lead to itself.</source>
+        <translation>Un portale non può condurre a se stesso.</translation>
+    </message>
+    <message>
+        <source>A portal can only lead to another quad.</source>
+        <translation>Un portale può condurre solo a un altro quadrilatero.</translation>
+    </message>
+    <message>
+        <source>Link Portals</source>
+        <translation>Collega portali</translation>
+    </message>
+    <message>
+        <source>Unlink Portal</source>
+        <translation>Scollega portale</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Preferences</name>
@@ -2304,6 +2343,22 @@
     <message>
         <source>Base height (m)</source>
         <translation>Altezza di base (m)</translation>
+    </message>
+    <message>
+        <source>node %1, deleted</source>
+        <translation>nodo %1, eliminato</translation>
+    </message>
+    <message>
+        <source>Not paired: the other side does not lead back here, so this quad is an ordinary surface. Choose a quad to pair them again.</source>
+        <translation>Non accoppiato: l'altro lato non riconduce qui, quindi questo quadrilatero è una superficie normale. Scegli un quadrilatero per accoppiarli di nuovo.</translation>
+    </message>
+    <message>
+        <source>What enters this quad leaves the quad chosen here, and the other way round.</source>
+        <translation>Ciò che entra in questo quadrilatero esce dal quadrilatero scelto qui, e viceversa.</translation>
+    </message>
+    <message>
+        <source>Portal to</source>
+        <translation>Portale verso</translation>
     </message>
 </context>
 <context>

@@ -45,17 +45,6 @@ std::string copyName(const std::string& name, const std::set<std::string>& taken
     }
 }
 
-// A new shape's own material: glTF's defaults but a mid-grey dielectric (glTF's default material
-// is a white metal, which renders as a mirror), so it shows the light and can be edited at once.
-Material newShapeMaterial(const Scene& scene) {
-    Material m;
-    m.name = uniqueMaterialName(scene, "Material");
-    m.baseColorFactor = glm::vec4(0.8f, 0.8f, 0.8f, 1.0f);
-    m.metallicFactor = 0.0f;
-    m.roughnessFactor = 0.5f;
-    return m;
-}
-
 // The selected nodes that are not inside another selected node, in scene order.
 std::vector<NodeId> topLevelSelection(const Document& document) {
     const Scene& scene = document.scene();
@@ -69,6 +58,17 @@ std::vector<NodeId> topLevelSelection(const Document& document) {
 }
 
 } // namespace
+
+// A new shape's own material: glTF's defaults but a mid-grey dielectric (glTF's default material
+// is a white metal, which renders as a mirror), so it shows the light and can be edited at once.
+Material newShapeMaterial(const Scene& scene) {
+    Material m;
+    m.name = uniqueMaterialName(scene, "Material");
+    m.baseColorFactor = glm::vec4(0.8f, 0.8f, 0.8f, 1.0f);
+    m.metallicFactor = 0.0f;
+    m.roughnessFactor = 0.5f;
+    return m;
+}
 
 QString deleteSelection(Document& document) {
     const std::vector<NodeId> nodes = topLevelSelection(document);

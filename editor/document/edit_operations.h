@@ -26,5 +26,7 @@ Component defaultShape(ShapeKind kind);
 Component defaultLight(LightType type);
 Component defaultAreaLight(AreaShape shape);
 Component defaultCamera();
+// A new shape's own material, named uniquely in `scene`.
+Material newShapeMaterial(const Scene& scene);
 
 } // namespace glint::editor

@@ -47,6 +47,19 @@ double halfHeight(const Shape& shape) {
 
 } // namespace
 
+std::pair<Transform, Transform> placePortalPair(const ViewFocus& focus) {
+    Transform a;
+    // The quad's normal (+Y) turned to +Z: it stands upright, its Z extent now vertical.
+    a.rotation = glm::angleAxis(0.5f * std::numbers::pi_v<float>, glm::vec3(1.0f, 0.0f, 0.0f));
+    a.translation = glm::vec3(focus.point);
+    const double halfHeight = 1.0; // of a 2 m quad
+    if (focus.floor < 1e29) a.translation.y = float(focus.point.y - focus.floor + halfHeight);
+    Transform b = a;
+    a.translation.x -= float(0.5 * kPortalSpacing);
+    b.translation.x += float(0.5 * kPortalSpacing);
+    return {a, b};
+}
+
 double roundSize(double metres) {
     if (!(metres > 0.0) || !std::isfinite(metres)) return 1.0;
     const double decade = std::pow(10.0, std::floor(std::log10(metres)));

@@ -13,6 +13,8 @@
 
 #include <glm/glm.hpp>
 
+#include <utility>
+
 namespace glint::editor {
 
 struct ViewFocus {
@@ -32,6 +34,12 @@ struct Placement {
 
 // `unit`: the component as the menu offers it (defaultShape, defaultLight: sized for 1 m).
 Placement placeNewNode(const Component& unit, const ViewFocus& focus);
+
+// A new portal pair: two 2 m quads standing upright side by side, kPortalSpacing apart centre to
+// centre across the focus, both facing +Z, their lower edges on the surface below the focus if
+// there is one. Walking into one's front comes out of the other's front (portal.h).
+inline constexpr double kPortalSpacing = 5.0;
+std::pair<Transform, Transform> placePortalPair(const ViewFocus& focus);
 
 // 1, 2 or 5 x 10^k nearest below `metres` (> 0), so sizes read as round numbers.
 double roundSize(double metres);

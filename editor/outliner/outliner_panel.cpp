@@ -4,6 +4,7 @@
 
 #include "editor/document/document.h"
 #include "editor/document/edit_operations.h"
+#include "editor/document/portal_edits.h"
 #include "editor/preferences/retranslate.h"
 
 #include <QEvent>
@@ -97,6 +98,12 @@ void OutlinerPanel::buildAddMenu() {
     add(shapes, QT_TR_NOOP("Disk"), defaultShape(ShapeKind::Disk));
     add(shapes, QT_TR_NOOP("Cylinder"), defaultShape(ShapeKind::Cylinder));
     add(shapes, QT_TR_NOOP("Ground plane"), defaultShape(ShapeKind::GroundPlane));
+    QAction* portals = shapes->addAction(QString());
+    keepTranslated(portals, TextRole::Text, staticMetaObject.className(), QT_TR_NOOP("Portal pair"));
+    connect(portals, &QAction::triggered, this, [this] {
+        const QString error = addPortalPair(document_);
+        if (!error.isEmpty()) emit message(error);
+    });
     QMenu* lights = addMenu_->addMenu(QString());
     keepTranslated(lights, TextRole::Title, staticMetaObject.className(), QT_TR_NOOP("Light"));
     add(lights, QT_TR_NOOP("Point light"), defaultLight(LightType::Point));

@@ -160,6 +160,7 @@ PropertyForm* makeShapeForm(Document& document, NodeId node, const Report& repor
                        writeComponent<Shape>(document, node, report,
                                              [axis](Shape& s, double v) { s.size[axis] = float(v); }));
     }
+    if (kind == ShapeKind::Quad) addPortalField(form, document, node, report);
     if (kind == ShapeKind::GroundPlane)
         form->addNote(PropertyForm::tr("An infinite plane: the node's y = 0, facing +Y; move and turn it with the transform. "
                                        "It has no size. In the glTF file other programs (Blender) get a 200 m square in "

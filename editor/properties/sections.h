@@ -34,6 +34,8 @@ struct ViewportControls {
 PropertyForm* makeNodeForm(Document& document, NodeId node, const Report& report, QWidget* parent);
 PropertyForm* makeTransformForm(Document& document, NodeId node, const Report& report, QWidget* parent);
 PropertyForm* makeShapeForm(Document& document, NodeId node, const Report& report, QWidget* parent);
+// A quad's "Portal to" choice (portal_field.cpp); part of the shape form.
+void addPortalField(PropertyForm* form, Document& document, NodeId quad, const Report& report);
 PropertyForm* makeLightForm(Document& document, NodeId node, const Report& report, QWidget* parent);
 PropertyForm* makeCameraForm(Document& document, NodeId node, const Report& report, QWidget* parent);
 PropertyForm* makeMaterialForm(Document& document, MaterialId material, const Report& report, QWidget* parent);
