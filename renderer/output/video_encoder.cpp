@@ -9,7 +9,11 @@ extern "C" {
 #include <libswscale/swscale.h>
 }
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <string>
 #include <system_error>
 
@@ -82,6 +86,16 @@ struct VideoEncoder::State {
     }
     void check(int code, const char* what) const {
         if (code < 0) fail(what, code);
+    }
+    // The finished video reaches the disk before it replaces one there: after a power loss the name
+    // holds the old video or the whole new one, as with images (image_files.cpp).
+    void syncToDisk() const {
+        const int fd = ::open(temp.c_str(), O_RDONLY | O_CLOEXEC);
+        if (fd < 0) fail("cannot flush the video to disk", AVERROR(errno));
+        const int result = ::fsync(fd);
+        const int error = errno;
+        ::close(fd);
+        if (result != 0) fail("cannot flush the video to disk", AVERROR(error));
     }
 
     void openEncoder(const VideoSettings& settings, const CodecChoice& choice) {
@@ -197,9 +211,10 @@ void VideoEncoder::finish() {
     s.send(nullptr);
     s.check(av_write_trailer(s.format), "cannot finish the container");
     s.check(avio_closep(&s.format->pb), "cannot close the file");
+    s.syncToDisk();
     std::error_code ec;
     std::filesystem::rename(s.temp, s.file, ec);
-    if (ec) s.fail("cannot move the finished video into place", 0);
+    if (ec) s.fail("cannot move the finished video into place: " + ec.message(), 0);
     s.finished = true;
 }
 

@@ -394,6 +394,49 @@ private slots:
         QVERIFY(filesIn(dir.path()).filter(QRegularExpression("^\\.")).isEmpty());
     }
 
+    // A video over one already there, on a full disk and in a read-only folder: exit 1 naming the
+    // video and the reason, the old video intact, no partial file left. A full disk is a small
+    // tmpfs filled up where the test may mount one, else a file-size limit; a read-only folder is
+    // a tmpfs remounted read-only, else a folder without write permission.
+    void encodeFailureKeepsTheOldVideo() {
+        QTemporaryDir dir;
+        QDir(dir.path()).mkdir("f");
+        const QString pattern = dir.filePath("f/shot_####.png");
+        QCOMPARE(runGlint({"render", dolly, "--animation", "--frames", "0-3", "--size", "64x64", "--spp", "1", "--out", pattern}).exitCode, 0);
+        const QByteArray earlier("a video encoded earlier");
+        for (const bool readOnly : {false, true}) {
+            const QString folder = dir.filePath(readOnly ? "ro" : "full");
+            QVERIFY(QDir(dir.path()).mkdir(readOnly ? "ro" : "full"));
+            const bool mounted = QProcess::execute("mount", {"-t", "tmpfs", "-o", "size=96k", "tmpfs", folder}) == 0;
+            const QString video = folder + "/v.mkv";
+            {
+                QFile old(video);
+                QVERIFY(old.open(QIODevice::WriteOnly));
+                old.write(earlier);
+            }
+            QString prefix = "exec";
+            if (readOnly && mounted) QCOMPARE(QProcess::execute("mount", {"-o", "remount,ro", folder}), 0);
+            else if (readOnly) QVERIFY(QFile::setPermissions(folder, QFile::ReadOwner | QFile::ExeOwner));
+            else if (mounted) prefix = QString("cat /dev/zero > '%1/filler' 2>/dev/null; exec").arg(folder);
+            else prefix = "trap '' XFSZ; ulimit -f 1; exec";
+            QProcess p;
+            p.start("/bin/sh", {"-c", QString("%1 '%2' encode '%3' '%4' --codec ffv1").arg(prefix, GLINT_EXECUTABLE, pattern, video)});
+            QVERIFY(p.waitForFinished(120000));
+            const QString err = QString::fromUtf8(p.readAllStandardError());
+            QFile::remove(folder + "/filler");
+            const QStringList left = filesIn(folder);
+            const QByteArray kept = readAll(video);
+            if (mounted) QProcess::execute("umount", {folder});
+            else QFile::setPermissions(folder, QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
+            const QString reason = readOnly ? (mounted ? "Read-only file system" : "Permission denied")
+                                            : (mounted ? "No space left on device" : "File too large");
+            QVERIFY2(p.exitCode() == 1, qPrintable(err));
+            QVERIFY2(err.startsWith("glint: " + video + ": ") && err.contains(reason), qPrintable(err));
+            QCOMPARE(kept, earlier);
+            QCOMPARE(left, QStringList{"v.mkv"});
+        }
+    }
+
     void renderWithVideoEncodesExrFrames() {
         QTemporaryDir dir;
         const QString mp4 = dir.filePath("v.mp4");
