@@ -2,6 +2,7 @@
 
 #include "editor/document/document.h"
 #include "editor/viewport/gizmo_drag.h"
+#include "editor/viewport/portal_travel.h"
 #include "editor/viewport/render_view.h"
 
 #include <QKeyEvent>
@@ -126,6 +127,7 @@ void ViewTools::move(QMouseEvent* event) {
     const QPointF d = at - lastMouse_;
     lastMouse_ = at;
     ViewCamera& camera = view_.camera();
+    const glm::dvec3 eye = camera.position();
     switch (tool_) {
     case Tool::Orbit: orbit(camera, d.x(), d.y()); break;
     case Tool::Pan: pan(camera, d.x(), d.y(), view_.height()); break;
@@ -141,6 +143,7 @@ void ViewTools::move(QMouseEvent* event) {
     }
     default: return;
     }
+    carryThroughPortal(camera, document_.scene(), eye);
     view_.noteMotion(true);
 }
 
@@ -165,7 +168,9 @@ void ViewTools::release(QMouseEvent* event) {
 }
 
 void ViewTools::wheel(QWheelEvent* event) {
+    const glm::dvec3 eye = view_.camera().position();
     zoom(view_.camera(), event->angleDelta().y() / 120.0);
+    carryThroughPortal(view_.camera(), document_.scene(), eye);
     if (view_.lookThrough().valid()) view_.setLookThrough({});
     view_.noteMotion(true);
 }
@@ -212,7 +217,9 @@ void ViewTools::flyStep() {
     // Speed follows the orbit distance: a metre is slow in a city and fast on a table.
     ViewCamera& camera = view_.camera();
     const double speed = std::max(0.1, camera.distance) * kFlyIntervalMs / 1000.0;
+    const glm::dvec3 eye = camera.position();
     fly(camera, move * speed);
+    carryThroughPortal(camera, document_.scene(), eye);
     view_.noteMotion(true);
 }
 
