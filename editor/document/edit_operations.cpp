@@ -1,5 +1,6 @@
 #include "edit_operations.h"
 #include "editor/document/in_macro.h"
+#include "editor/document/portal_edits.h"
 
 #include "scene/history/asset_commands.h"
 #include "scene/history/node_commands.h"
@@ -8,6 +9,7 @@
 #include <QCoreApplication>
 
 #include <algorithm>
+#include <map>
 #include <set>
 #include <cstdio>
 #include <exception>
@@ -84,12 +86,15 @@ QString duplicateSelection(Document& document) {
     std::vector<NodeId> copies;
     std::set<std::string> taken;
     for (const NodeId id : document.scene().depthFirst()) taken.insert(document.scene().at(id).name);
+    std::map<NodeId, NodeId> copyOf;
     QString error = inMacro(document, QCoreApplication::translate("glint::editor::EditOperations", "Duplicate"), [&] {
         for (NodeId id : nodes) {
+            const std::vector<NodeId> originals = document.scene().subtree(id);
             auto command = std::make_unique<DuplicateNode>(id);
             DuplicateNode* raw = command.get();
             document.push(std::move(command));
             if (!raw->copyIds().empty()) copies.push_back(raw->copyIds().front());
+            for (std::size_t i = 0; i < originals.size() && i < raw->copyIds().size(); ++i) copyOf[originals[i]] = raw->copyIds()[i];
             // Each copy gets a name of its own, as in Blender (an unnamed node stays unnamed).
             for (const NodeId copy : raw->copyIds()) {
                 const std::string& name = document.scene().at(copy).name;
@@ -99,6 +104,7 @@ QString duplicateSelection(Document& document) {
                 document.push(std::make_unique<RenameNode>(copy, unique));
             }
         }
+        relinkCopiedPortals(document, copyOf);
     });
     if (error.isEmpty()) document.setSelection(copies);
     return error;

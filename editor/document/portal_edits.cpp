@@ -92,6 +92,16 @@ QString linkPortal(Document& document, NodeId quad, NodeId partner) {
     });
 }
 
+void relinkCopiedPortals(Document& document, const std::map<NodeId, NodeId>& copyOf) {
+    for (const auto& [original, copy] : copyOf) {
+        const Node* node = document.scene().node(copy);
+        const Shape* shape = node ? node->get<Shape>() : nullptr;
+        if (!shape || !shape->portal.valid()) continue;
+        const auto partner = copyOf.find(shape->portal);
+        pushLink(document, copy, partner == copyOf.end() ? NodeId{} : partner->second);
+    }
+}
+
 std::vector<NodeId> portalCandidates(const Scene& scene, NodeId quad) {
     std::vector<NodeId> out;
     for (const NodeId id : scene.depthFirst())

@@ -8,6 +8,7 @@
 
 #include <QString>
 
+#include <map>
 #include <vector>
 
 namespace glint::editor {
@@ -19,6 +20,11 @@ QString addPortalPair(Document& document);
 // Links `quad` and `partner` both ways (none: unlinks `quad`), first clearing the links to them of
 // their previous partners, as one undo step. A no-op when they are already a pair.
 QString linkPortal(Document& document, NodeId quad, NodeId partner);
+
+// After copying nodes (Duplicate), inside the caller's macro: a copied quad's link follows its
+// partner's copy when the partner was copied too, else it is cleared, so copying a pair makes a new
+// pair and copying one side makes an ordinary quad. `copyOf`: original -> copy.
+void relinkCopiedPortals(Document& document, const std::map<NodeId, NodeId>& copyOf);
 
 // The quads `quad` may be linked to: every other quad node, in depth-first order.
 std::vector<NodeId> portalCandidates(const Scene& scene, NodeId quad);

@@ -80,16 +80,18 @@ void remapComponent(Component& component, const AssetRemaps& remaps) {
 std::vector<CommandPtr> mergeCommands(const Scene& target, Scene&& imported) {
     std::vector<CommandPtr> out;
     const AssetRemaps remaps = addAllAssets(target, imported, out);
+    // Every id first: a portal quad may name a node that comes after it.
     std::map<NodeId, NodeId> nodes;
     std::uint32_t next = target.peekNextNodeId().value;
+    for (NodeId id : imported.depthFirst()) nodes[id] = NodeId{next++};
     for (NodeId id : imported.depthFirst()) { // parents come before their children
         const Node& source = imported.at(id);
         Node copy = source;
-        copy.id = NodeId{next++};
+        copy.id = nodes.at(id);
         copy.parent = {};
         copy.children.clear();
         remapComponent(copy.component, remaps);
-        nodes[id] = copy.id;
+        if (auto* shape = std::get_if<Shape>(&copy.component)) shape->portal = mapped(nodes, shape->portal);
         NodeId parent = source.parent ? nodes.at(source.parent) : NodeId{};
         out.push_back(std::make_unique<AddNode>(std::move(copy), parent));
     }

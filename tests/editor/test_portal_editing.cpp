@@ -1,12 +1,14 @@
 // Portal pairs in the editor: Add > Shape > Portal pair adds two linked 2 m quads standing side by
 // side as one undo step; the Properties panel's "Portal to" links a quad to another, clearing the
 // previous partners' links, as one undo step, and says when a link is one-sided (its partner
-// deleted). Undo and redo restore the exact scene.
+// deleted). Duplicating a pair makes a new pair, duplicating one side an ordinary quad; an
+// imported pair stays linked under its new ids. Undo and redo restore the exact scene.
 #include "editor_fixtures.h"
 
 #include "editor/document/edit_operations.h"
 #include "editor/document/node_placement.h"
 #include "editor/document/portal_edits.h"
+#include "editor/document/scene_merge.h"
 #include "editor/outliner/outliner_panel.h"
 #include "editor/properties/properties_panel.h"
 
@@ -152,6 +154,51 @@ private slots:
         settle();
         QCOMPARE(portalPartner(document.scene(), a), std::optional<NodeId>(b));
         QVERIFY(panel.findChild<QLabel*>("portalState")->isHidden());
+    }
+
+    void duplicatingAPairMakesANewPair() {
+        Document document;
+        const NodeId a = addQuad(document, "a"), b = addQuad(document, "b");
+        QCOMPARE(linkPortal(document, a, b), QString());
+        const Scene before = document.scene();
+        const std::size_t steps = document.history().count();
+        document.setSelection({a, b});
+        QCOMPARE(duplicateSelection(document), QString());
+        QCOMPARE(document.history().count(), steps + 1);
+        const std::vector<NodeId> copies = document.selection();
+        QCOMPARE(copies.size(), std::size_t(2));
+        QCOMPARE(portalOf(document, copies[0]), copies[1]);
+        QCOMPARE(portalOf(document, copies[1]), copies[0]);
+        QCOMPARE(portalOf(document, a), b); // the originals keep each other
+        QCOMPARE(portalOf(document, b), a);
+        document.undo();
+        QVERIFY(document.scene() == before);
+
+        document.setSelection({a});
+        QCOMPARE(duplicateSelection(document), QString());
+        const NodeId copy = document.selection().front();
+        QVERIFY(!portalOf(document, copy).valid()); // one side copied: an ordinary quad
+        QCOMPARE(portalOf(document, b), a);
+    }
+
+    // The imported file's ids are taken in the target: the links follow the new ids.
+    void importedPairStaysLinked() {
+        Scene target;
+        for (int i = 0; i < 3; ++i) target.addNode(Node{});
+        Scene imported;
+        const NodeId a = imported.addNode(Node{});
+        Node quad;
+        quad.component = std::get<Shape>(defaultShape(ShapeKind::Quad));
+        std::get<Shape>(quad.component).portal = NodeId{3};
+        const NodeId first = imported.addNode(quad, a);
+        std::get<Shape>(quad.component).portal = first;
+        const NodeId second = imported.addNode(quad);
+        QCOMPARE(second, NodeId{3});
+        for (CommandPtr& command : mergeCommands(target, std::move(imported))) command->apply(target);
+        const NodeId newFirst{5}, newSecond{6}; // after 1..3, in depth-first order: 4 (a), 5, 6
+        QCOMPARE(target.at(newFirst).get<Shape>()->portal, newSecond);
+        QCOMPARE(target.at(newSecond).get<Shape>()->portal, newFirst);
+        QCOMPARE(portalPartner(target, newFirst), std::optional<NodeId>(newSecond));
     }
 };
 
