@@ -68,6 +68,16 @@ private slots:
         QCOMPARE(portalOf(r.scene, 7), NodeId{40});
     }
 
+    // The fuzzer's seed (tests/fuzz/seeds/gltf/portals.gltf) is a valid pair, so fuzzing starts
+    // from the linked path.
+    void fuzzSeedIsAPair()
+    {
+        const LoadResult r = loadScene(std::filesystem::path(GLINT_FUZZ_SEEDS_DIR) / "gltf" / "portals.gltf");
+        QVERIFY(r.warnings.empty());
+        QCOMPARE(portalOf(r.scene, 1), NodeId{2});
+        QCOMPARE(portalOf(r.scene, 2), NodeId{1});
+    }
+
     void badLinkIsDroppedAndNamed_data()
     {
         QTest::addColumn<QString>("first");
