@@ -52,8 +52,9 @@ float combinedLuminance(ivec2 p) {
     return luminance(demodulate(radiance, lobeAlbedo(uDiffuseAlbedo, uSpecularAlbedo, p)));
 }
 
-// A pixel far brighter than its brightest neighbour is scaled down to the limit, both lobes alike.
-void withoutFireflies(ivec2 pixel, inout vec3 diffuse, inout vec3 specular) {
+// A pixel far brighter than its brightest neighbour is scaled down to the limit, both lobes alike;
+// returns its combined luminance after that.
+float withoutFireflies(ivec2 pixel, inout vec3 diffuse, inout vec3 specular) {
     ivec2 size = textureSize(uRadiance, 0);
     float brightest = 0.0;
     for (int y = -1; y <= 1; ++y)
@@ -61,6 +62,38 @@ void withoutFireflies(ivec2 pixel, inout vec3 diffuse, inout vec3 specular) {
             if (x != 0 || y != 0) brightest = max(brightest, combinedLuminance(clamp(pixel + ivec2(x, y), ivec2(0), size - 1)));
     float limit = uFireflyRatio * max(brightest, 1.0e-2);
     float l = combinedLuminance(pixel);
+    float scale = l > limit ? limit / l : 1.0;
+    diffuse *= scale;
+    specular *= scale;
+    return l * scale;
+}
+
+// A restarted history (the chunk's first frame, geometry the camera uncovers) has one sample and no
+// moments to judge it by, and its a-trous filter is kept small and strict (svgf_atrous), so a bright
+// outlier there stays in the frame at full strength and enters the history at weight 1: at 1 spp the
+// rule above does not catch it where the neighbours are noisy too (one of them as bright), and such
+// pixels held over half of a first frame's error (docs/DENOISING.md, failure mode 9). There the pixel
+// is limited to the mean plus RESTART_SIGMAS standard deviations of its 5x5 neighbours on the same
+// object (the filter's own support); thin objects with fewer than RESTART_MIN_NEIGHBOURS keep it.
+const float RESTART_SIGMAS = 3.0;
+const float RESTART_MIN_NEIGHBOURS = 8.0;
+// `l`: the pixel's combined luminance (withoutFireflies).
+void withoutOutliersAtRestart(ivec2 pixel, float id, float l, inout vec3 diffuse, inout vec3 specular) {
+    ivec2 size = textureSize(uRadiance, 0);
+    float sum = 0.0, sumSquares = 0.0, count = 0.0;
+    for (int y = -2; y <= 2; ++y)
+        for (int x = -2; x <= 2; ++x) {
+            ivec2 q = pixel + ivec2(x, y);
+            if ((x == 0 && y == 0) || any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
+            if (texelFetch(uObjectId, q, 0).x != id) continue;
+            float neighbour = combinedLuminance(q);
+            sum += neighbour;
+            sumSquares += neighbour * neighbour;
+            count += 1.0;
+        }
+    if (count < RESTART_MIN_NEIGHBOURS) return;
+    float mean = sum / count;
+    float limit = mean + RESTART_SIGMAS * sqrt(max(sumSquares / count - mean * mean, 0.0)) + 1.0e-2;
     float scale = l > limit ? limit / l : 1.0;
     diffuse *= scale;
     specular *= scale;
@@ -123,7 +156,7 @@ void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec3 diffuse, specular;
     illuminationAt(pixel, diffuse, specular);
-    withoutFireflies(pixel, diffuse, specular);
+    float combined = withoutFireflies(pixel, diffuse, specular);
     vec4 l = vec4(luminance(diffuse), 0.0, luminance(specular), 0.0);
     l.yw = l.xz * l.xz;
     vec4 normalDepth = texelFetch(uNormalDepth, pixel, 0);
@@ -135,6 +168,9 @@ void main() {
     // image is approximate, and may reproject off it).
     Reprojected d = reproject(gl_FragCoord.xy + motion.xy, uHistoryDiffuse, 0, normalDepth, id);
     if (d.weight == 0.0) {
+        withoutOutliersAtRestart(pixel, id, combined, diffuse, specular);
+        l = vec4(luminance(diffuse), 0.0, luminance(specular), 0.0);
+        l.yw = l.xz * l.xz;
         outDiffuse = vec4(diffuse, 0.0);
         outSpecular = vec4(specular, 0.0);
         outMoments = l;
