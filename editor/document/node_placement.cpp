@@ -47,17 +47,19 @@ double halfHeight(const Shape& shape) {
 
 } // namespace
 
-std::pair<Transform, Transform> placePortalPair(const ViewFocus& focus) {
-    Transform a;
+PortalPairPlacement placePortalPair(const ViewFocus& focus) {
+    const double scale = std::isfinite(focus.scale) && focus.scale > 0.0 ? focus.scale : 1.0;
+    PortalPairPlacement out;
+    out.edge = float(2.0 * roundSize(kShapeShare * scale));
+    Transform& a = out.a;
     // The quad's normal (+Y) turned to +Z: it stands upright, its Z extent now vertical.
     a.rotation = glm::angleAxis(0.5f * std::numbers::pi_v<float>, glm::vec3(1.0f, 0.0f, 0.0f));
     a.translation = glm::vec3(focus.point);
-    const double halfHeight = 1.0; // of a 2 m quad
-    if (focus.floor < 1e29) a.translation.y = float(focus.point.y - focus.floor + halfHeight);
-    Transform b = a;
-    a.translation.x -= float(0.5 * kPortalSpacing);
-    b.translation.x += float(0.5 * kPortalSpacing);
-    return {a, b};
+    if (focus.floor < 1e29) a.translation.y = float(focus.point.y - focus.floor + 0.5 * out.edge);
+    out.b = a;
+    a.translation.x -= 0.75f * out.edge;
+    out.b.translation.x += 0.75f * out.edge;
+    return out;
 }
 
 double roundSize(double metres) {

@@ -13,7 +13,6 @@
 
 #include <glm/glm.hpp>
 
-#include <utility>
 
 namespace glint::editor {
 
@@ -35,11 +34,15 @@ struct Placement {
 // `unit`: the component as the menu offers it (defaultShape, defaultLight: sized for 1 m).
 Placement placeNewNode(const Component& unit, const ViewFocus& focus);
 
-// A new portal pair: two 2 m quads standing upright side by side, kPortalSpacing apart centre to
-// centre across the focus, both facing +Z, their lower edges on the surface below the focus if
-// there is one. Walking into one's front comes out of the other's front (portal.h).
-inline constexpr double kPortalSpacing = 5.0;
-std::pair<Transform, Transform> placePortalPair(const ViewFocus& focus);
+// A new portal pair: two square quads standing upright side by side across the focus, both facing
+// +Z, each as large as a new quad (its 2 m edge scaled as shapes are), half an edge apart, their
+// lower edges on the surface below the focus if there is one. Walking into one's front comes out
+// of the other's front (portal.h).
+struct PortalPairPlacement {
+    Transform a, b; // world
+    float edge = 2.0f;
+};
+PortalPairPlacement placePortalPair(const ViewFocus& focus);
 
 // 1, 2 or 5 x 10^k nearest below `metres` (> 0), so sizes read as round numbers.
 double roundSize(double metres);

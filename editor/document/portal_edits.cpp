@@ -36,13 +36,13 @@ void unlinkPartnerOf(Document& document, NodeId quad) {
 }
 
 // A quad standing at `pose` (world) under `parent`, with its own material, linked to `partner`.
-NodeId pushPortalQuad(Document& document, const QString& name, const Transform& pose, NodeId parent, NodeId partner) {
+NodeId pushPortalQuad(Document& document, const QString& name, const Transform& pose, float edge, NodeId parent, NodeId partner) {
     const Scene& scene = document.scene();
     auto material = std::make_unique<AddAsset<Material>>(newShapeMaterial(scene));
     AddAsset<Material>* addedMaterial = material.get();
     document.push(std::move(material));
     Shape quad = std::get<Shape>(defaultShape(ShapeKind::Quad));
-    quad.size = {2.0f, 1.0f, 2.0f};
+    quad.size = {edge, 1.0f, edge};
     quad.material = addedMaterial->id();
     quad.portal = partner;
     Node node;
@@ -60,11 +60,11 @@ NodeId pushPortalQuad(Document& document, const QString& name, const Transform& 
 QString addPortalPair(Document& document) {
     const Node* current = document.scene().node(document.currentNode());
     const NodeId parent = current ? current->parent : NodeId{};
-    const auto [poseA, poseB] = placePortalPair(document.viewFocus());
+    const PortalPairPlacement place = placePortalPair(document.viewFocus());
     NodeId a, b;
     const QString error = inMacro(document, QCoreApplication::translate("glint::editor::PortalEdits", "Add Portal Pair"), [&] {
-        a = pushPortalQuad(document, QCoreApplication::translate("glint::editor::PortalEdits", "Portal A"), poseA, parent, {});
-        b = pushPortalQuad(document, QCoreApplication::translate("glint::editor::PortalEdits", "Portal B"), poseB, parent, a);
+        a = pushPortalQuad(document, QCoreApplication::translate("glint::editor::PortalEdits", "Portal A"), place.a, place.edge, parent, {});
+        b = pushPortalQuad(document, QCoreApplication::translate("glint::editor::PortalEdits", "Portal B"), place.b, place.edge, parent, a);
         pushLink(document, a, b); // A's id was not known before it was added
     });
     if (error.isEmpty()) document.setSelection({a, b});

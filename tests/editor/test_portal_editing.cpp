@@ -53,8 +53,9 @@ class TestPortalEditing : public QObject {
     Q_OBJECT
 
 private slots:
-    // At a focus (1, 3, 2) with a floor 3 m below: A and B stand on it (centres 1 m up), 5 m apart,
-    // facing +Z, 2 m square, each with its own material, linked; one undo step takes both away.
+    // At a focus (1, 3, 2) with a floor 3 m below, looking at 4 m: A and B stand on it (centres 1 m
+    // up), 2 m square as a new quad there is, 3 m apart, facing +Z, each with its own material,
+    // linked; one undo step takes both away. Looking at a 0.55 m box they are 0.2 m squares.
     void addMenuAddsALinkedPair() {
         Document document;
         document.setViewFocusProvider([] { return ViewFocus{{1.0, 3.0, 2.0}, 4.0, 1e30, 3.0}; });
@@ -77,8 +78,8 @@ private slots:
             QVERIFY(glm::length(normal - glm::vec3(0, 0, 1)) < 1e-5f);
         }
         QVERIFY(scene.at(a).get<Shape>()->material != scene.at(b).get<Shape>()->material);
-        QCOMPARE(scene.at(a).local.translation, glm::vec3(-1.5f, 1.0f, 2.0f));
-        QCOMPARE(scene.at(b).local.translation, glm::vec3(3.5f, 1.0f, 2.0f));
+        QCOMPARE(scene.at(a).local.translation, glm::vec3(-0.5f, 1.0f, 2.0f));
+        QCOMPARE(scene.at(b).local.translation, glm::vec3(2.5f, 1.0f, 2.0f));
         QCOMPARE(document.selection(), (std::vector<NodeId>{a, b}));
         QCOMPARE(document.history().count(), std::size_t(1));
         QCOMPARE(document.history().label(0), std::string("Add Portal Pair"));
@@ -87,6 +88,11 @@ private slots:
         QVERIFY(document.scene() == empty);
         document.redo();
         QVERIFY(document.scene() == added);
+
+        const PortalPairPlacement small = placePortalPair(ViewFocus{{0.28, 0.27, 0.28}, 0.55, 1e30, 0.27});
+        QCOMPARE(small.edge, 0.2f);
+        QVERIFY(glm::length(small.a.translation - glm::vec3(0.13f, 0.1f, 0.28f)) < 1e-6f);
+        QVERIFY(glm::length(small.b.translation - glm::vec3(0.43f, 0.1f, 0.28f)) < 1e-6f);
     }
 
     // A-B and C-D are pairs; linking A to C pairs them and leaves B and D unlinked, in one step.
