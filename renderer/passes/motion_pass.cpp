@@ -7,12 +7,33 @@
 #include <algorithm>
 
 namespace glint::renderer {
+namespace {
+
+constexpr GLuint movedUnit = 3; // after the stage's three G-buffer inputs
+
+// Records sorted by id, as motion.frag.glsl searches them: the id, then the matrix's columns. One
+// zero texel when nothing moved (a buffer texture cannot be empty).
+std::vector<glm::vec4> movedTexels(std::vector<MovedInstance> moved) {
+    std::sort(moved.begin(), moved.end(), [](const MovedInstance& a, const MovedInstance& b) { return a.objectId < b.objectId; });
+    std::vector<glm::vec4> texels;
+    texels.reserve(moved.size() * 5 + 1);
+    for (const MovedInstance& m : moved) {
+        texels.push_back({m.objectId, 0.0f, 0.0f, 0.0f});
+        for (int column = 0; column < 4; ++column) texels.push_back(m.previousFromCurrent[column]);
+    }
+    if (texels.empty()) texels.emplace_back(0.0f);
+    return texels;
+}
+
+} // namespace
 
 MotionPass::MotionPass(gl::ProgramCache& programs, int width, int height)
     : programs_(programs), motion_(width, height, {GL_RGBA32F}) {}
 
 const gl::RenderTarget& MotionPass::execute(const gl::RenderTarget& gbuffer, const CameraSetup& camera,
                                             const CameraSetup& previousCamera, const std::vector<MovedInstance>& moved) {
+    const std::vector<glm::vec4> texels = movedTexels(moved);
+    moved_.emplace("the moved-instance buffer", GL_RGBA32F, texels.data(), texels.size(), sizeof(glm::vec4));
     const auto uniforms = [&](const gl::ShaderProgram& p) {
         const glm::mat4 previousCameraFromWorld = glm::inverse(previousCamera.worldFromCamera);
         glUniform2f(p.uniform("uResolution"), static_cast<float>(motion_.width()), static_cast<float>(motion_.height()));
@@ -22,19 +43,8 @@ const gl::RenderTarget& MotionPass::execute(const gl::RenderTarget& gbuffer, con
         glUniformMatrix4fv(p.uniform("uPreviousCameraFromWorld"), 1, GL_FALSE, glm::value_ptr(previousCameraFromWorld));
         glUniform2f(p.uniform("uPreviousHalfExtent"), previousCamera.halfExtent.x, previousCamera.halfExtent.y);
         glUniform1i(p.uniform("uPreviousOrthographic"), previousCamera.orthographic ? 1 : 0);
-        const int count = std::min(static_cast<int>(moved.size()), maxMovedInstances);
-        std::vector<float> ids;
-        std::vector<float> matrices;
-        for (int i = 0; i < count; ++i) {
-            ids.push_back(moved[static_cast<std::size_t>(i)].objectId);
-            const float* m = glm::value_ptr(moved[static_cast<std::size_t>(i)].previousFromCurrent);
-            matrices.insert(matrices.end(), m, m + 16);
-        }
-        glUniform1i(p.uniform("uMovedCount"), count);
-        if (count > 0) {
-            glUniform1fv(p.uniform("uMovedIds"), count, ids.data());
-            glUniformMatrix4fv(p.uniform("uPreviousFromCurrent"), count, GL_FALSE, matrices.data());
-        }
+        glUniform1i(p.uniform("uMovedCount"), static_cast<int>(moved.size()));
+        moved_->bind(movedUnit, p.uniform("uMoved"));
     };
     runStage(programs_, triangle_,
              {"reconstruction/motion.frag.glsl", {"outMotion"},

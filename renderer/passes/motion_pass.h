@@ -4,11 +4,13 @@
 // virtual motion of reflections, for SVGF's specular lobe (motion.frag.glsl).
 // Input: G-buffer (normal + depth, id, specular radiance's reflection distance). Output: one RGBA32F
 // target, xy: the surface's motion, zw: the reflected image's.
+#include "renderer/gl/texture_buffer.h"
 #include "renderer/gpu_scene/camera_setup.h"
 #include "renderer/passes/fullscreen_stage.h"
 
 #include <glm/glm.hpp>
 
+#include <optional>
 #include <vector>
 
 namespace glint::renderer {
@@ -17,8 +19,6 @@ struct MovedInstance {
     float objectId = 0.0f;               // as the G-buffer's id target holds it
     glm::mat4 previousFromCurrent{1.0f}; // world space: where a point of the instance was last frame
 };
-
-inline constexpr int maxMovedInstances = 32; // more fall back to camera motion (shader array size)
 
 class MotionPass {
 public:
@@ -31,6 +31,7 @@ private:
     gl::ProgramCache& programs_;
     gl::FullscreenTriangle triangle_;
     gl::RenderTarget motion_;
+    std::optional<gl::TextureBuffer> moved_; // this frame's moved instances (motion.frag.glsl)
 };
 
 } // namespace glint::renderer

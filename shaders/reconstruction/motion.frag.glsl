@@ -25,23 +25,38 @@ uniform mat4 uPreviousCameraFromWorld;
 uniform vec2 uPreviousHalfExtent;
 uniform int uPreviousOrthographic;
 
-const int MAX_MOVED = 32; // more moving instances than this fall back to camera motion
+// The instances that moved since the previous frame, sorted by id, MOVED_TEXELS texels each: the
+// id in the first's x, then the columns of previousFromCurrent. A binary search finds an id, so any
+// number of moving instances gets its own motion (motion_pass.cpp).
+const int MOVED_TEXELS = 5;
+uniform samplerBuffer uMoved;
 uniform int uMovedCount;
-uniform float uMovedIds[MAX_MOVED];
-uniform mat4 uPreviousFromCurrent[MAX_MOVED];
 
 out vec4 outMotion;
 
-bool moved(float id) {
-    for (int i = 0; i < uMovedCount; ++i)
-        if (abs(uMovedIds[i] - id) < 0.5) return true;
-    return false;
+// The record of `id` among the moved instances, or -1.
+int movedIndex(float id) {
+    int low = 0;
+    int high = uMovedCount - 1;
+    while (low <= high) {
+        int middle = (low + high) / 2;
+        float at = texelFetch(uMoved, middle * MOVED_TEXELS).x;
+        if (abs(at - id) < 0.5) return middle;
+        if (at < id) low = middle + 1;
+        else high = middle - 1;
+    }
+    return -1;
 }
 
+bool moved(float id) { return movedIndex(id) >= 0; }
+
 vec3 movedToPrevious(vec3 world, float id) {
-    for (int i = 0; i < uMovedCount; ++i)
-        if (abs(uMovedIds[i] - id) < 0.5) return (uPreviousFromCurrent[i] * vec4(world, 1.0)).xyz;
-    return world;
+    int i = movedIndex(id);
+    if (i < 0) return world;
+    int first = i * MOVED_TEXELS + 1;
+    mat4 previousFromCurrent = mat4(texelFetch(uMoved, first), texelFetch(uMoved, first + 1), texelFetch(uMoved, first + 2),
+                                    texelFetch(uMoved, first + 3));
+    return (previousFromCurrent * vec4(world, 1.0)).xyz;
 }
 
 vec2 previousFilm(vec3 previousCamera) {

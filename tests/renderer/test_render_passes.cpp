@@ -271,6 +271,40 @@ private slots:
         QVERIFY(onQuad > kSize * kSize / 4);
     }
 
+    // Forty quads sliding along +X under a still camera: more moving objects than a shader's
+    // uniform arrays would hold (they held 32; the rest read 0). Every quad's pixels read -16 (64 px).
+    void manyMovingObjectsAllGetTheirOffset() {
+        Scene scene;
+        const MaterialId grey = scene.materials.add(lambert(glm::vec3(0.5f), glm::vec3(0.5f)));
+        const MaterialId glow = scene.materials.add(lambert(glm::vec3(0.0f), glm::vec3(1.0f)));
+        addShape(scene, ShapeKind::Quad, grey, glm::vec3(0.0f), 0.5f, glm::vec3(20.0f, 1.0f, 20.0f));
+        Animation slide;
+        for (int i = 0; i < 40; ++i) {
+            const glm::vec3 start(-0.65f + 0.12f * float(i % 8), 0.2f, -0.3f + 0.12f * float(i / 8));
+            const NodeId quad = addShape(scene, ShapeKind::Quad, glow, start, 0.5f, glm::vec3(0.08f, 1.0f, 0.08f));
+            Transform at = scene.at(quad).local;
+            slide = withNodeKey(slide, quad, 0.0, at, Interpolation::Linear);
+            at.translation.x += 1.0f;
+            slide = withNodeKey(slide, quad, 1.0, at, Interpolation::Linear);
+        }
+        scene.animations.add(slide);
+        addOrthographicCamera(scene, {0.0f, 1.0f, 0.0f}, {0.0f, -1.0f, 0.0f}, 0.5f);
+        const int size = 64;
+        renderer::RenderRequest request = stillRequest(size, 1, 10, 0);
+        request.time = 0.25;
+        request.motionSeconds = 0.25;
+        const Exr exr = render(sceneAt(scene, request.time), request, "many_moving.exr");
+        int onQuads = 0;
+        for (std::size_t i = 0; i < exr["Vector.X"].size(); ++i) {
+            const bool quadPixel = exr["Emit.G"][i] > 0.9f;
+            onQuads += quadPixel ? 1 : 0;
+            const float expected = quadPixel ? -size / 4.0f : 0.0f;
+            QVERIFY2(std::abs(exr["Vector.X"][i] - expected) < 1e-3f,
+                     qPrintable(QString("%1 at pixel %2, %3").arg(exr["Vector.X"][i]).arg(i % size).arg(i / size)));
+        }
+        QVERIFY2(onQuads > 40 * 16, qPrintable(QString("%1 quad pixels").arg(onQuads)));
+    }
+
     // Without passes the image has none and the render reads back none.
     void noPassesNoChannels() {
         const renderer::RenderOutput image = renderer_->render(everyPath(false), stillRequest(kSize, 1, 11, 1));
