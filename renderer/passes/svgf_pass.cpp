@@ -94,6 +94,7 @@ const gl::RenderTarget& SvgfPass::atrous(const SvgfInputs& in, const SvgfSetting
                       glUniform1i(p.uniform("uStep"), 1 << i);
                       glUniform1i(p.uniform("uIteration"), i);
                       glUniform1i(p.uniform("uIterations"), iterations);
+                      glUniform1i(p.uniform("uHistoryValid"), in.historyValid ? 1 : 0);
                       glUniform1f(p.uniform("uSigmaLuminance"), settings.sigmaLuminance);
                       glUniform1f(p.uniform("uSigmaNormal"), settings.sigmaNormal);
                       glUniform1f(p.uniform("uSigmaDepth"), settings.sigmaDepth);

@@ -25,6 +25,7 @@ uniform sampler2D uAntiLag;        // x: how much of that shortness anti-lag cau
 uniform int uStep;
 uniform int uIteration;        // 0-based
 uniform int uIterations;
+uniform int uHistoryValid;     // 0: no pixel has history (a chunk's first frame, after a cut)
 uniform float uSigmaLuminance; // 4 in the paper
 uniform float uSigmaNormal;    // 128
 uniform float uSigmaDepth;     // 1
@@ -33,6 +34,13 @@ uniform float uSpecularFullRoughness;
 const float SMALL_KERNEL_HISTORY = 4.0;   // frames: steps up to 2^n px below it
 const float STRICT_STOP_HISTORY = 8.0;    // frames: the stricter luminance stop below it
 const float RESTARTED_LUMINANCE_STOP = 0.25; // uSigmaLuminance's scale there
+// In a frame where no pixel has history (a chunk's first frame, after a cut or a resize) only 2x:
+// the 4x stop protects a band of restarted pixels from spreading the spatial variance's shading
+// change into the history their long-history neighbours average, and here every pixel is such a
+// pixel, so it left the first frame mostly unfiltered. Measured on a sunlit room panned fast
+// (docs/DENOISING.md, failure mode 9): first frame 0.42x -> 0.36x raw with the frames after it
+// unchanged; no stop (1) gives the same first frame but more error after; the full kernel 0.70x.
+const float FIRST_FRAME_LUMINANCE_STOP = 0.5;
 
 out vec4 outDiffuse;
 out vec4 outSpecular;
@@ -75,7 +83,8 @@ void main() {
     float stale = texelFetch(uAntiLag, pixel, 0).x;
     float restarted = mix(texelFetch(uHistoryLength, pixel, 0).x, STRICT_STOP_HISTORY, stale);
     if (restarted < SMALL_KERNEL_HISTORY && float(uStep) > exp2(restarted)) return;
-    float sigmaLuminance = uSigmaLuminance * (restarted < STRICT_STOP_HISTORY ? mix(RESTARTED_LUMINANCE_STOP, 1.0, stale) : 1.0);
+    float strict = uHistoryValid == 0 ? FIRST_FRAME_LUMINANCE_STOP : RESTARTED_LUMINANCE_STOP;
+    float sigmaLuminance = uSigmaLuminance * (restarted < STRICT_STOP_HISTORY ? mix(strict, 1.0, stale) : 1.0);
     float roughness = texelFetch(uSpecularAlbedo, pixel, 0).a;
     float rough = clamp(roughness / max(uSpecularFullRoughness, 1.0e-3), 0.0, 1.0);
     bool filterSpecular = uIteration < 1 + int(floor(float(uIterations - 1) * rough + 0.5));
