@@ -631,6 +631,7 @@ T = {
 "A portal can only lead to another quad.": ("Un portale può condurre solo a un altro quadrilatero.", "Ein Portal kann nur zu einem anderen Viereck führen.", "Un portail ne peut mener qu'à un autre quadrilatère.", "Un portal solo puede llevar a otro cuadrilátero."),
 "Link Portals": ("Collega portali", "Portale verbinden", "Relier les portails", "Enlazar portales"),
 "Unlink Portal": ("Scollega portale", "Portal trennen", "Délier le portail", "Desenlazar portal"),
+"Portals": ("Portali", "Portale", "Portails", "Portales"),
 "Portal to": ("Portale verso", "Portal zu", "Portail vers", "Portal hacia"),
 "node %1, deleted": ("nodo %1, eliminato", "Knoten %1, gelöscht", "nœud %1, supprimé", "nodo %1, eliminado"),
 "Not paired: the other side does not lead back here, so this quad is an ordinary surface. Choose a quad to pair them again.": ("Non accoppiato: l'altro lato non riconduce qui, quindi questo quadrilatero è una superficie normale. Scegli un quadrilatero per accoppiarli di nuovo.", "Nicht gepaart: Die andere Seite führt nicht hierher zurück, daher ist dieses Viereck eine gewöhnliche Fläche. Wähle ein Viereck, um sie wieder zu paaren.", "Non appairé : l'autre côté ne ramène pas ici, ce quadrilatère est donc une surface ordinaire. Choisissez un quadrilatère pour les appairer de nouveau.", "Sin emparejar: el otro lado no lleva de vuelta aquí, así que este cuadrilátero es una superficie normal. Elige un cuadrilátero para emparejarlos de nuevo."),

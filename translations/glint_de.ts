@@ -2481,6 +2481,10 @@ R %3  G %4  B %5 (linear)</translation>
         <source>Cornell box in fog</source>
         <translation>Cornell-Box im Nebel</translation>
     </message>
+    <message>
+        <source>Portals</source>
+        <translation>Portale</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::TimeRuler</name>

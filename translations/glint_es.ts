@@ -2481,6 +2481,10 @@ R %3  G %4  B %5 (lineal)</translation>
         <source>Cornell box in fog</source>
         <translation>Caja de Cornell en la niebla</translation>
     </message>
+    <message>
+        <source>Portals</source>
+        <translation>Portales</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::TimeRuler</name>

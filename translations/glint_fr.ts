@@ -2481,6 +2481,10 @@ R %3  V %4  B %5 (linéaire)</translation>
         <source>Cornell box in fog</source>
         <translation>Boîte de Cornell dans le brouillard</translation>
     </message>
+    <message>
+        <source>Portals</source>
+        <translation>Portails</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::TimeRuler</name>

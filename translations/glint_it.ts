@@ -2481,6 +2481,10 @@ R %3  G %4  B %5 (lineare)</translation>
         <source>Cornell box in fog</source>
         <translation>Cornell box nella nebbia</translation>
     </message>
+    <message>
+        <source>Portals</source>
+        <translation>Portali</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::TimeRuler</name>

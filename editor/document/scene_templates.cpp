@@ -103,6 +103,51 @@ Scene cornellBoxInFog() {
     return scene;
 }
 
+Material plainMaterial(std::string name, glm::vec3 colour, float metallic, float roughness) {
+    Material m;
+    m.name = std::move(name);
+    m.baseColorFactor = glm::vec4(colour, 1.0f);
+    m.metallicFactor = metallic;
+    m.roughnessFactor = roughness;
+    return m;
+}
+
+NodeId addShape(Scene& scene, std::string name, Shape shape, MaterialId material, glm::vec3 at,
+                glm::quat rotation = glm::quat(1, 0, 0, 0)) {
+    shape.material = material;
+    return addNode(scene, std::move(name), shape, at, rotation);
+}
+
+// Sun and sky with a portal pair (docs/PORTALS.md): A stands left of centre facing the camera; B
+// stands 9 m off to the right, out of the view, facing +X towards a red ball and a gold box. Through
+// A the camera sees them, as if it stood behind B; a white ball beside A is seen directly.
+Scene portals() {
+    Scene scene = sunAndSky();
+    const float quarterTurn = 0.5f * std::numbers::pi_v<float>;
+    const glm::quat facingCamera = glm::angleAxis(quarterTurn, glm::vec3(1, 0, 0)); // normal +Y turned to +Z
+    const glm::quat facingX = glm::angleAxis(quarterTurn, glm::vec3(0, 1, 0)) * facingCamera;
+    Shape quad;
+    quad.kind = ShapeKind::Quad;
+    quad.size = {2.0f, 1.0f, 2.0f};
+    const MaterialId frame = scene.materials.add(plainMaterial("Portal", glm::vec3(0.2f), 0.0f, 0.5f));
+    const NodeId a = addShape(scene, "Portal A", quad, frame, {-1.3f, 1.0f, 0.0f}, facingCamera);
+    const NodeId b = addShape(scene, "Portal B", quad, frame, {9.0f, 1.0f, -6.0f}, facingX);
+    std::get<Shape>(scene.component(a)).portal = b;
+    std::get<Shape>(scene.component(b)).portal = a;
+    Shape ball;
+    ball.radius = 0.5f;
+    addShape(scene, "Red ball", ball, scene.materials.add(plainMaterial("Red", {0.8f, 0.1f, 0.08f}, 0.0f, 0.4f)),
+             {11.5f, 0.5f, -6.3f});
+    addShape(scene, "White ball", ball, scene.materials.add(plainMaterial("White", glm::vec3(0.8f), 0.0f, 0.3f)),
+             {1.3f, 0.5f, 0.0f});
+    Shape box;
+    box.kind = ShapeKind::Box;
+    box.size = glm::vec3(0.7f);
+    addShape(scene, "Gold box", box, scene.materials.add(plainMaterial("Gold", {1.0f, 0.77f, 0.34f}, 1.0f, 0.25f)),
+             {11.0f, 0.35f, -5.0f}, glm::angleAxis(0.5f, glm::vec3(0, 1, 0)));
+    return scene;
+}
+
 } // namespace
 
 const char* templateTitle(SceneTemplate kind) {
@@ -112,6 +157,7 @@ const char* templateTitle(SceneTemplate kind) {
     case SceneTemplate::SunAndSky: return QT_TRANSLATE_NOOP("glint::editor::SceneTemplates", "Sun and sky");
     case SceneTemplate::CornellBox: return QT_TRANSLATE_NOOP("glint::editor::SceneTemplates", "Cornell box");
     case SceneTemplate::CornellBoxInFog: return QT_TRANSLATE_NOOP("glint::editor::SceneTemplates", "Cornell box in fog");
+    case SceneTemplate::Portals: return QT_TRANSLATE_NOOP("glint::editor::SceneTemplates", "Portals");
     }
     return "";
 }
@@ -123,6 +169,7 @@ const char* templateActionId(SceneTemplate kind) {
     case SceneTemplate::SunAndSky: return "file.new.sun_and_sky";
     case SceneTemplate::CornellBox: return "file.new.cornell_box";
     case SceneTemplate::CornellBoxInFog: return "file.new.cornell_box_fog";
+    case SceneTemplate::Portals: return "file.new.portals";
     }
     return "";
 }
@@ -134,6 +181,7 @@ Scene buildTemplate(SceneTemplate kind) {
     case SceneTemplate::SunAndSky: return sunAndSky();
     case SceneTemplate::CornellBox: return cornellBox();
     case SceneTemplate::CornellBoxInFog: return cornellBoxInFog();
+    case SceneTemplate::Portals: return portals();
     }
     return Scene{};
 }

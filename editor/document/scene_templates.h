@@ -1,7 +1,8 @@
 #pragma once
 // What File > New starts from. Studio (the default): a ground plane, a camera framing it and the
 // studio HDR environment that ships with Glint; Sun and sky: the ground under a sun and a blue sky;
-// Cornell box: the bundled sample; Empty: nothing (the viewport says why it is black). The shipped
+// Cornell box: the bundled sample (also in fog); Portals: the sunlit ground with a portal pair that
+// looks onto a corner out of the camera's view (docs/PORTALS.md); Empty: nothing (the viewport says why it is black). The shipped
 // files are compiled into the editor and written once to the user's data folder, so an untitled
 // scene can name them by absolute path until its first save copies them beside it.
 #include "scene/core/scene.h"
@@ -12,10 +13,10 @@
 
 namespace glint::editor {
 
-enum class SceneTemplate { Studio, Empty, SunAndSky, CornellBox, CornellBoxInFog };
-inline constexpr std::array<SceneTemplate, 5> kSceneTemplates{SceneTemplate::Studio, SceneTemplate::Empty,
+enum class SceneTemplate { Studio, Empty, SunAndSky, CornellBox, CornellBoxInFog, Portals };
+inline constexpr std::array<SceneTemplate, 6> kSceneTemplates{SceneTemplate::Studio, SceneTemplate::Empty,
                                                               SceneTemplate::SunAndSky, SceneTemplate::CornellBox,
-                                                              SceneTemplate::CornellBoxInFog};
+                                                              SceneTemplate::CornellBoxInFog, SceneTemplate::Portals};
 
 // The menu text, untranslated (QT_TRANSLATE_NOOP in context glint::editor::SceneTemplates).
 const char* templateTitle(SceneTemplate kind);
