@@ -24,15 +24,6 @@ using namespace glint::editor::test;
 
 namespace {
 
-QAction* actionNamed(QMenu* menu, const QString& text) {
-    for (QAction* action : menu->actions()) {
-        if (action->text() == text) return action;
-        if (action->menu())
-            if (QAction* found = actionNamed(action->menu(), text)) return found;
-    }
-    return nullptr;
-}
-
 const Light* currentLight(const Document& document) {
     const Node* node = document.scene().node(document.currentNode());
     return node ? node->get<Light>() : nullptr;

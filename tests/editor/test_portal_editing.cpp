@@ -25,15 +25,6 @@ using namespace glint::editor::test;
 
 namespace {
 
-QAction* actionNamed(QMenu* menu, const QString& text) {
-    for (QAction* action : menu->actions()) {
-        if (action->text() == text) return action;
-        if (action->menu())
-            if (QAction* found = actionNamed(action->menu(), text)) return found;
-    }
-    return nullptr;
-}
-
 void settle() {
     QCoreApplication::processEvents();
     QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
