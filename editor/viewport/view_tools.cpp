@@ -143,8 +143,7 @@ void ViewTools::move(QMouseEvent* event) {
     }
     default: return;
     }
-    carryThroughPortal(camera, document_.scene(), eye);
-    view_.noteMotion(true);
+    finishCameraMove(eye);
 }
 
 void ViewTools::release(QMouseEvent* event) {
@@ -168,11 +167,10 @@ void ViewTools::release(QMouseEvent* event) {
 }
 
 void ViewTools::wheel(QWheelEvent* event) {
+    if (view_.lookThrough().valid()) view_.setLookThrough({}); // as a drag does: zoom from the camera's view
     const glm::dvec3 eye = view_.camera().position();
     zoom(view_.camera(), event->angleDelta().y() / 120.0);
-    carryThroughPortal(view_.camera(), document_.scene(), eye);
-    if (view_.lookThrough().valid()) view_.setLookThrough({});
-    view_.noteMotion(true);
+    finishCameraMove(eye);
 }
 
 bool ViewTools::keyPress(QKeyEvent* event) {
@@ -219,7 +217,12 @@ void ViewTools::flyStep() {
     const double speed = std::max(0.1, camera.distance) * kFlyIntervalMs / 1000.0;
     const glm::dvec3 eye = camera.position();
     fly(camera, move * speed);
-    carryThroughPortal(camera, document_.scene(), eye);
+    finishCameraMove(eye);
+}
+
+// Every move of the view camera ends here, so none can pass through a portal without crossing it.
+void ViewTools::finishCameraMove(const glm::dvec3& eyeBefore) {
+    carryThroughPortal(view_.camera(), document_.scene(), eyeBefore);
     view_.noteMotion(true);
 }
 

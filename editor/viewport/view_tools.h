@@ -81,6 +81,7 @@ private:
     void enter(Tool tool);
     bool startGizmoDrag(QPointF at);
     void flyStep();
+    void finishCameraMove(const glm::dvec3& eyeBefore);
 
     RenderView& view_;
     Document& document_;
