@@ -33,7 +33,9 @@ MotionPass::MotionPass(gl::ProgramCache& programs, int width, int height)
 const gl::RenderTarget& MotionPass::execute(const gl::RenderTarget& gbuffer, const CameraSetup& camera,
                                             const CameraSetup& previousCamera, const std::vector<MovedInstance>& moved) {
     const std::vector<glm::vec4> texels = movedTexels(moved);
-    moved_.emplace("the moved-instance buffer", GL_RGBA32F, texels.data(), texels.size(), sizeof(glm::vec4));
+    // The buffer only grows: frames rewrite it in place (uMovedCount bounds the search).
+    if (moved_ && moved_->texels() >= texels.size()) moved_->update(0, texels.data(), texels.size());
+    else moved_.emplace("the moved-instance buffer", GL_RGBA32F, texels.data(), texels.size(), sizeof(glm::vec4));
     const auto uniforms = [&](const gl::ShaderProgram& p) {
         const glm::mat4 previousCameraFromWorld = glm::inverse(previousCamera.worldFromCamera);
         glUniform2f(p.uniform("uResolution"), static_cast<float>(motion_.width()), static_cast<float>(motion_.height()));

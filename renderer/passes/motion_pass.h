@@ -31,7 +31,7 @@ private:
     gl::ProgramCache& programs_;
     gl::FullscreenTriangle triangle_;
     gl::RenderTarget motion_;
-    std::optional<gl::TextureBuffer> moved_; // this frame's moved instances (motion.frag.glsl)
+    std::optional<gl::TextureBuffer> moved_; // the moved instances, this frame's first (motion.frag.glsl)
 };
 
 } // namespace glint::renderer
