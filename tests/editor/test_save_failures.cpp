@@ -12,6 +12,7 @@
 #include "editor/export/export_job.h"
 #include "editor/main_window/autosave.h"
 #include "scene/history/camera_path_commands.h"
+#include "scene/history/settings_commands.h"
 #include "scene/io/scene_io.h"
 
 #include <QDir>
@@ -88,9 +89,9 @@ private:
 // limit of the whole process below what the next write needs, for as long as this lives.
 class FullFolder {
 public:
-    explicit FullFolder(const QString& folder) : folder_(folder) {
+    explicit FullFolder(const QString& folder, const QString& size = "1m") : folder_(folder) {
         QDir().mkpath(folder);
-        mounted_ = QProcess::execute("mount", {"-t", "tmpfs", "-o", "size=1m", "tmpfs", folder}) == 0;
+        mounted_ = QProcess::execute("mount", {"-t", "tmpfs", "-o", "size=" + size, "tmpfs", folder}) == 0;
     }
     ~FullFolder() {
         release();
@@ -131,6 +132,20 @@ private:
 };
 
 void addSphere(Document& document, float x) { test::addShape(document, "Ball", ShapeKind::Sphere, {x, 0.0f, 0.0f}); }
+
+QMap<QString, QByteArray> contentsOf(const QString& folder) {
+    QMap<QString, QByteArray> contents;
+    for (const QString& name : filesIn(folder)) contents.insert(name, bytesOf(folder + "/" + name));
+    return contents;
+}
+
+// Points the document's environment image at `file` (an absolute path, as the editor stores an
+// image chosen outside the scene's folder), as one undoable settings edit.
+void chooseEnvironment(Document& document, const QString& file) {
+    ProjectSettings settings = document.scene().settings;
+    settings.environment.file = file.toStdString();
+    document.push(std::make_unique<SetProjectSettings>(settings));
+}
 
 } // namespace
 
@@ -214,6 +229,39 @@ private slots:
         QCOMPARE(bytesOf(file), before);
         QVERIFY(document.isModified());
         QCOMPARE(document.scene().nodeCount(), std::size_t(2));
+    }
+
+    // A save copies an environment image chosen outside the scene's folder beside the scene. Where
+    // the copy does not fit, the whole save fails: the files saved before stay byte for byte, no
+    // copy or temporary is left, and the document still reads the image from where it was.
+    void saveCopyingTheEnvironmentIntoAFullFolderKeepsTheFiles() {
+        const QString folder = dir_.filePath("save-environment-full");
+        FullFolder full(folder, "4m"); // room for the 1.7 MB image once the filler is gone
+        const QString file = folder + "/scene.gltf";
+        Document document;
+        addSphere(document, 0.0f);
+        QCOMPARE(document.saveAs(file), QString());
+        const QMap<QString, QByteArray> before = contentsOf(folder);
+        QVERIFY(before.contains("scene.gltf") && before.size() >= 2); // the scene and its project file
+
+        QVERIFY(QDir().mkpath(dir_.filePath("library")));
+        const QString sky = dir_.filePath("library/sky.hdr");
+        QVERIFY(QFile::copy(QStringLiteral(GLINT_RESOURCES_DIR "/env/studio_small_03_1k.hdr"), sky));
+        chooseEnvironment(document, sky);
+        full.fill();
+        const QString error = document.save();
+        full.release();
+        QVERIFY2(error.contains(folder + "/") && error.contains(full.problem()), qPrintable(error));
+        QCOMPARE(contentsOf(folder), before);
+        QVERIFY(document.isModified());
+        QCOMPARE(QString::fromStdString(document.scene().settings.environment.file), sky);
+
+        // Room again: the image is copied and the document names the copy.
+        QCOMPARE(document.save(), QString());
+        QCOMPARE(bytesOf(folder + "/sky.hdr"), bytesOf(sky));
+        QCOMPARE(document.scene().settings.environment.file, std::string("sky.hdr"));
+        QCOMPARE(loadScene(file.toStdString()).scene.settings.environment.file, std::string("sky.hdr"));
+        QVERIFY(!document.isModified());
     }
 
     void exportIntoAReadOnlyFolderSaysSoAndKeepsTheOldImage_data() {
