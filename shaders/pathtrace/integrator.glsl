@@ -179,7 +179,14 @@ ShadowCandidate environmentCandidate(Vertex v, INOUT(Rng) rng) {
 vec3 directLight(Vertex v, Medium arrived, Medium across, bool split, INOUT(Rng) rng, OUT(vec3) diffuse) {
     vec3 sum = vec3(0.0);
     diffuse = vec3(0.0);
-    for (int i = 0; i < uLightCount + 2; ++i) {
+    // Without an environment map the loop ends before its candidate, which would be none: llvmpipe
+    // runs every branch of a pass through the loop, so an empty pass costs as much as a full one.
+#ifdef HAS_ENV_MAP
+    int candidates = uLightCount + 2;
+#else
+    int candidates = uLightCount + 1;
+#endif
+    for (int i = 0; i < candidates; ++i) {
         ShadowCandidate c = i < uLightCount ? punctualCandidate(v, i, rng)
                           : (i == uLightCount ? areaCandidate(v, rng) : environmentCandidate(v, rng));
         if (!(maxComponent(c.contribution) > 0.0)) continue;
@@ -199,6 +206,9 @@ vec3 directLight(Vertex v, Medium arrived, Medium across, bool split, INOUT(Rng)
         sum += contribution;
         if (split) diffuse += v.inMedium ? contribution : diffusePart(v.material, v.wo, localFromWorld(v.frame, c.direction), contribution);
     }
+#ifndef HAS_ENV_MAP
+    rng.dimension += 1u; // the environment candidate's draw: later draws keep their dimensions
+#endif
     return sum;
 }
 
