@@ -122,16 +122,12 @@ void walkScene(const FlatScene& scene, const Ray& worldRay, float& tMax, OnTrian
                 if (onShape(link.x, info.y, local)) return;
                 continue;
             }
-            const BoxRay localBox = boxRay(local);
-            const float meshNear = boxEntry(scene, info.y, localBox, tMax);
-            if (meshNear != kMissed) {
-                meshMark = size;
-                node = info.y;
-                nodeNear = meshNear;
-                instance = link.x;
-                box = localBox;
-                triangleRay = prepareWatertight(local);
-            }
+            // The mesh's root comes next without a box test of its own, as in the shader.
+            meshMark = size;
+            node = info.y;
+            instance = link.x;
+            box = boxRay(local);
+            triangleRay = prepareWatertight(local);
             continue;
         }
         const float nearLeft = boxEntry(scene, link.x, box, tMax);

@@ -118,18 +118,15 @@ BvhHit bvhTraverse(vec3 origin, vec3 direction, float tMax, bool anyHit) {
             vec3 localDirection;
             bvhLocalRay(leafInstance, origin, direction, localOrigin, localDirection);
             if (info.x == BVH_INSTANCE_MESH) {
-                vec3 localInverse = 1.0 / localDirection;
-                float meshNear = bvhBoxEntry(int(info.y), localOrigin, localInverse, hit.t);
-                if (meshNear >= 0.0) {
-                    meshMark = size;
-                    node = int(info.y);
-                    nodeNear = meshNear;
-                    instance = leafInstance;
-                    rayOrigin = localOrigin;
-                    rayDirection = localDirection;
-                    rayInverse = localInverse;
-                    triangleRay = bvhPrepareWatertight(localOrigin, localDirection);
-                }
+                // The mesh's root comes next without a box test of its own: the instance's box,
+                // just entered, bounds it, and the root's children are tested as usual.
+                meshMark = size;
+                node = int(info.y);
+                instance = leafInstance;
+                rayOrigin = localOrigin;
+                rayDirection = localDirection;
+                rayInverse = 1.0 / localDirection;
+                triangleRay = bvhPrepareWatertight(localOrigin, localDirection);
             }
 #ifdef BVH_SHAPE_INSTANCES
             else if (info.x == BVH_INSTANCE_SHAPE) {
