@@ -118,6 +118,8 @@ void GpuScene::updateTransforms(const Scene& scene) {
     }
     // The pass reads the variant from the features at each frame: a light change that adds the
     // first emissive shape compiles it in.
+    features_.shapes = moved.shapeCount > 0;
+    features_.punctualLights = moved.lightCount > 0;
     features_.emissiveShapes = moved.emissiveShapes;
     features_.portals = moved.portals;
     meshes_.updateTransforms(scene, packed_.materialIndex, &textureSlots_);

@@ -61,6 +61,8 @@ Warnings textureWarnings(const std::vector<std::string>& messages) {
 std::map<std::string, std::string> SceneFeatures::defines() const {
     std::map<std::string, std::string> defines;
     if (meshes) defines["HAS_MESHES"] = "";
+    if (shapes) defines["HAS_SHAPES"] = "";
+    if (punctualLights) defines["HAS_PUNCTUAL_LIGHTS"] = "";
     if (environmentMap) defines["HAS_ENV_MAP"] = "";
     if (textures) { // meshes or shapes
         defines["HAS_TEXTURES"] = "";
@@ -121,6 +123,8 @@ PreparedScene prepareScene(const Scene& scene, const std::filesystem::path& envi
     out.warnings = textureWarnings(out.textures.warnings);
     report(control, PreparationStage::Packing, 0, 1);
     out.packed = packScene(scene, &out.textures);
+    out.features.shapes = out.packed.shapeCount > 0;
+    out.features.punctualLights = out.packed.lightCount > 0;
     out.features.emissiveShapes = out.packed.emissiveShapes;
     out.features.portals = out.packed.portals;
     const bool colors = meshesHaveColors(scene);

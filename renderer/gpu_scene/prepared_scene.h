@@ -25,8 +25,13 @@
 namespace glint::renderer {
 
 // What the scene uses; selects shader variants so a scene pays only for its features.
+// What a scene uses, each a shader variant define: a scene pays only for what it has. That matters
+// most on llvmpipe, which runs every branch of the shader for all pixels (masked), and a loop's body
+// at least once even where it has nothing to do (docs/PERFORMANCE.md, "Every branch costs").
 struct SceneFeatures {
     bool meshes = false;
+    bool shapes = false;         // an analytic shape, area light or portal (HAS_SHAPES)
+    bool punctualLights = false; // a point, spot or sun light (HAS_PUNCTUAL_LIGHTS)
     bool environmentMap = false;
     bool textures = false;    // material textures or COLOR_0 on meshes: UVs, tangents, texture arrays
     int textureArrays = 0;    // texture arrays bound (TEXTURE_ARRAY_COUNT)

@@ -169,6 +169,18 @@ ShadowCandidate environmentCandidate(Vertex v, INOUT(Rng) rng) {
     return ShadowCandidate(direction, RAY_MAX, f * environmentRadiance(direction) * (powerHeuristic(lightPdf, bsdfPdf) / lightPdf), vec4(0.0));
 }
 
+// Candidate i of next-event estimation: punctual lights first, then the area emitter, then the
+// environment. Each kind is compiled in only where the scene has it (llvmpipe runs every branch).
+ShadowCandidate lightCandidate(Vertex v, int i, INOUT(Rng) rng) {
+#ifdef HAS_PUNCTUAL_LIGHTS
+    if (i < uLightCount) return punctualCandidate(v, i, rng);
+#endif
+#ifdef HAS_ENV_MAP
+    if (i > uLightCount) return environmentCandidate(v, rng);
+#endif
+    return areaCandidate(v, rng);
+}
+
 // Next-event estimation: every punctual light, one emissive triangle and one environment sample.
 // All shadow rays go through one call site: GLSL inlines every call, and each traversal copy costs
 // compile time (seconds on llvmpipe for the BVH variant).
@@ -187,8 +199,7 @@ vec3 directLight(Vertex v, Medium arrived, Medium across, bool split, INOUT(Rng)
     int candidates = uLightCount + 1;
 #endif
     for (int i = 0; i < candidates; ++i) {
-        ShadowCandidate c = i < uLightCount ? punctualCandidate(v, i, rng)
-                          : (i == uLightCount ? areaCandidate(v, rng) : environmentCandidate(v, rng));
+        ShadowCandidate c = lightCandidate(v, i, rng);
         if (!(maxComponent(c.contribution) > 0.0)) continue;
         setTraceState(false, alphaKey(rng, 1u), v.cone);
         Ray ray;

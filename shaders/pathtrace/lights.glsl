@@ -98,6 +98,7 @@ vec3 sphereLampEmission(Ray ray, float tMax, float bsdfPdf, OUT(float) t, OUT(fl
 // glass, which NEE cannot produce) sees the disk with weight 1. A delta sun has no disk: no ray finds it.
 vec3 sunDiskRadiance(vec3 direction, float bsdfPdf) {
     vec3 sum = vec3(0.0);
+#ifdef HAS_PUNCTUAL_LIGHTS
     for (int light = 0; light < uLightCount; ++light) {
         vec4 intensity = lightTexel(light, 1);
         if (int(lightTexel(light, 0).x) != LIGHT_SUN || !(intensity.w < 1.0)) continue;
@@ -105,5 +106,6 @@ vec3 sunDiskRadiance(vec3 direction, float bsdfPdf) {
         float pdf = uniformConePdf(intensity.w);
         sum += intensity.rgb * pdf * (bsdfPdf > 0.0 ? powerHeuristic(bsdfPdf, pdf) : 1.0);
     }
+#endif
     return sum;
 }

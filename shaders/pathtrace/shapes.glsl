@@ -113,8 +113,11 @@ bool hitShapeLocal(int kind, vec3 o, vec3 d, vec4 params, float height, float tM
     return hitPlane(o, d, kind, size, radius, tMax, t, normal);
 }
 
-// Closest hit over every shape; `hit` keeps the nearer of what it held and what is found.
+// Closest hit over every shape; `hit` keeps the nearer of what it held and what is found. Compiled
+// in only for scenes with shapes (HAS_SHAPES): llvmpipe runs a loop's body at least once, masked,
+// even when it has nothing to do, so an empty shape list would still cost one shape test per ray.
 void intersectShapes(Ray ray, INOUT(Hit) hit) {
+#ifdef HAS_SHAPES
     for (int shape = 0; shape < uShapeCount; ++shape) {
         vec4 header = shapeTexel(shape, 0); // kind, material, object id, cylinder height
         vec4 row0 = shapeTexel(shape, 1);   // localFromWorld, rows 0..2 of a 3x4 matrix
@@ -133,12 +136,17 @@ void intersectShapes(Ray ray, INOUT(Hit) hit) {
 #endif
         hit = Hit(t, n, n, int(header.y), header.z, false, ivec2(-1, shape), uv);
     }
+#endif
 }
 
 bool occludedByShapes(Ray ray, float distance) {
     if (occludedByLamps(ray.origin, ray.direction, distance)) return true;
+#ifdef HAS_SHAPES
     Hit hit = noHit();
     hit.t = distance;
     intersectShapes(ray, hit);
     return hit.material >= 0;
+#else
+    return false;
+#endif
 }

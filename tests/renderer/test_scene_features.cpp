@@ -1,0 +1,69 @@
+// Which shader variant a scene gets (SceneFeatures::defines): each feature is compiled in exactly
+// when the scene uses it. Without a GL context: the preparation is CPU work. A feature left in
+// where it is not used costs time on llvmpipe (docs/PERFORMANCE.md, "Every branch costs"); one left
+// out where it is used renders wrongly, which the render tests of each feature would show.
+#include "scene_builder.h"
+
+#include "renderer/gpu_scene/prepared_scene.h"
+#include "scene/io/scene_io.h"
+
+#include <QTest>
+
+using namespace glint;
+using namespace glint::test;
+
+namespace {
+
+std::map<std::string, std::string> definesOf(const Scene& scene) {
+    renderer::MeshBvhCache cache;
+    return renderer::prepareScene(scene, {}, renderer::TextureLimits{}, cache).features.defines();
+}
+
+bool has(const std::map<std::string, std::string>& defines, const char* name) { return defines.contains(name); }
+
+Scene shapesLitBySun() {
+    Scene scene;
+    const MaterialId grey = scene.materials.add(lambert(glm::vec3(0.5f)));
+    addShape(scene, ShapeKind::Sphere, grey, {0.0f, 0.0f, 0.0f});
+    addSun(scene, {0.0f, -1.0f, 0.0f}, 1000.0f);
+    return scene;
+}
+
+} // namespace
+
+class TestSceneFeatures : public QObject {
+    Q_OBJECT
+private slots:
+    // The bundled Cornell box: meshes of single-sided materials and an emissive ceiling, nothing else.
+    void meshOnlySceneLeavesOutShapesAndLights() {
+        const Scene scene = loadScene(GLINT_RESOURCES_DIR "/scenes/cornell_box/cornell_box.gltf").scene;
+        const auto defines = definesOf(scene);
+        QVERIFY(has(defines, "HAS_MESHES"));
+        QVERIFY(has(defines, "HAS_SINGLE_SIDED"));
+        for (const char* absent : {"HAS_SHAPES", "HAS_PUNCTUAL_LIGHTS", "HAS_ENV_MAP", "HAS_EMISSIVE_SHAPES"})
+            QVERIFY2(!has(defines, absent), absent);
+    }
+
+    void shapesAndSunAreCompiledIn() {
+        const auto defines = definesOf(shapesLitBySun());
+        QVERIFY(has(defines, "HAS_SHAPES"));
+        QVERIFY(has(defines, "HAS_PUNCTUAL_LIGHTS"));
+        QVERIFY(!has(defines, "HAS_MESHES"));
+    }
+
+    // An area light is a shape of its own: the shape code comes with it.
+    void areaLightBringsShapes() {
+        Scene scene;
+        Light panel;
+        panel.type = LightType::Area;
+        panel.intensity = 10.0f;
+        addNode(scene, "panel", panel, {0.0f, 1.0f, 0.0f});
+        const auto defines = definesOf(scene);
+        QVERIFY(has(defines, "HAS_SHAPES"));
+        QVERIFY(has(defines, "HAS_EMISSIVE_SHAPES"));
+        QVERIFY(!has(defines, "HAS_PUNCTUAL_LIGHTS"));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestSceneFeatures)
+#include "test_scene_features.moc"
