@@ -51,15 +51,18 @@ void bvhLocalRay(int instance, vec3 origin, vec3 direction, out vec3 localOrigin
     }
 }
 
-// One loop over both levels with one stack: a top-level leaf (an instance) pushes its mesh's root
+// One walk over both levels with one stack: a top-level leaf (an instance) pushes its mesh's root
 // above the top-level entries and switches to the mesh-local ray; when the stack falls back to that
-// mark, the walk is at the top level again. On llvmpipe a single loop keeps the SIMD lanes together
-// (a nested mesh loop makes lanes still at the top level wait for the others' whole mesh walks), and
-// one pair of stack arrays replaces two. Nearer child first; anyHit: stop at the first hit.
-// The node to visit next (the nearer child, a mesh's root) stays in `node` instead of going through
-// the stack: only farther children are pushed. The order of visits is the same as pushing both,
-// but llvmpipe pays for every run-time indexed stack access (a gather or scatter across the SIMD
-// lanes), and this halves them (docs/PERFORMANCE.md, "BVH heat map").
+// mark, the walk is at the top level again. Nearer child first; anyHit: stop at the first hit. The
+// node to visit next (the nearer child, a mesh's root) stays in `node`; only farther children are
+// pushed (run-time indexed stack accesses are gathers and scatters across llvmpipe's SIMD lanes).
+//
+// Interior nodes and leaves take turns ("while-while", Aila and Laine 2009): an inner loop descends
+// interior nodes until every lane stands at a leaf or has finished, then each lane at a leaf tests
+// its triangles or enters its instance. llvmpipe runs every branch of a loop body for all lanes,
+// masked, so a single loop paid for a leaf's triangle tests and an instance's transform at every
+// interior step; here an interior step pays for two box tests only. Each ray visits the same nodes
+// in the same order as before (and as renderer/bvh/traverse.cpp), so hits are the same to the bit.
 BvhHit bvhTraverse(vec3 origin, vec3 direction, float tMax, bool anyHit) {
     BvhHit hit = bvhNoHit(tMax);
     if (uBvhTopLevelRoot < 0) return hit;
@@ -79,24 +82,46 @@ BvhHit bvhTraverse(vec3 origin, vec3 direction, float tMax, bool anyHit) {
     BvhWatertightRay triangleRay = bvhPrepareWatertight(origin, direction);
     int steps = 0;
     while (node >= 0 || size > 0) {
-        if (++steps > BVH_MAX_STEPS) break;
-        if (node < 0) {
-            if (instance >= 0 && size == meshMark) {
-                instance = -1;
-                rayOrigin = origin;
-                rayDirection = direction;
-                rayInverse = worldInverse;
+        bool atLeaf = false;
+        uvec4 link;
+        while (node >= 0 || size > 0) {
+            if (++steps > BVH_MAX_STEPS) break;
+            if (node < 0) {
+                if (instance >= 0 && size == meshMark) {
+                    instance = -1;
+                    rayOrigin = origin;
+                    rayDirection = direction;
+                    rayInverse = worldInverse;
+                }
+                --size;
+                node = stackNode[size];
+                nodeNear = stackNear[size];
             }
-            --size;
-            node = stackNode[size];
-            nodeNear = stackNear[size];
+            int current = node;
+            node = -1;
+            if (nodeNear > hit.t) continue;
+            BVH_COUNT_NODE();
+            link = bvhNodeLink(current);
+            if (link.y > 0u) {
+                atLeaf = true;
+                break;
+            }
+            int left = int(link.x);
+            float nearLeft = bvhBoxEntry(left, rayOrigin, rayInverse, hit.t);
+            float nearRight = bvhBoxEntry(left + 1, rayOrigin, rayInverse, hit.t);
+            bool leftFirst = nearLeft <= nearRight || nearRight < 0.0;
+            // The farther child waits on the stack; the nearer one is visited next.
+            int farNode = leftFirst ? left + 1 : left;
+            float farNear = leftFirst ? nearRight : nearLeft;
+            if (farNear >= 0.0 && size < BVH_TRAVERSAL_STACK) { stackNode[size] = farNode; stackNear[size] = farNear; ++size; }
+            float nearNear = leftFirst ? nearLeft : nearRight;
+            if (nearNear >= 0.0) {
+                node = leftFirst ? left : left + 1;
+                nodeNear = nearNear;
+            }
         }
-        int current = node;
-        node = -1;
-        if (nodeNear > hit.t) continue;
-        BVH_COUNT_NODE();
-        uvec4 link = bvhNodeLink(current);
-        if (link.y > 0u && instance >= 0) {
+        if (!atLeaf) break; // nothing left, or out of steps
+        if (instance >= 0) {
             for (int slot = int(link.x); slot < int(link.x + link.y); ++slot) {
                 vec3 tuv;
                 BVH_COUNT_PRIMITIVE();
@@ -111,48 +136,32 @@ BvhHit bvhTraverse(vec3 origin, vec3 direction, float tMax, bool anyHit) {
             }
             continue;
         }
-        if (link.y > 0u) {
-            int leafInstance = int(link.x);
-            uvec4 info = bvhInstanceInfo(leafInstance);
-            vec3 localOrigin;
-            vec3 localDirection;
-            bvhLocalRay(leafInstance, origin, direction, localOrigin, localDirection);
-            if (info.x == BVH_INSTANCE_MESH) {
-                // The mesh's root comes next without a box test of its own: the instance's box,
-                // just entered, bounds it, and the root's children are tested as usual.
-                meshMark = size;
-                node = int(info.y);
-                instance = leafInstance;
-                rayOrigin = localOrigin;
-                rayDirection = localDirection;
-                rayInverse = 1.0 / localDirection;
-                triangleRay = bvhPrepareWatertight(localOrigin, localDirection);
-            }
+        int leafInstance = int(link.x);
+        uvec4 info = bvhInstanceInfo(leafInstance);
+        vec3 localOrigin;
+        vec3 localDirection;
+        bvhLocalRay(leafInstance, origin, direction, localOrigin, localDirection);
+        if (info.x == BVH_INSTANCE_MESH) {
+            // The mesh's root comes next without a box test of its own: the instance's box, just
+            // entered, bounds it, and the root's children are tested as usual.
+            meshMark = size;
+            node = int(info.y);
+            instance = leafInstance;
+            rayOrigin = localOrigin;
+            rayDirection = localDirection;
+            rayInverse = 1.0 / localDirection;
+            triangleRay = bvhPrepareWatertight(localOrigin, localDirection);
+        }
 #ifdef BVH_SHAPE_INSTANCES
-            else if (info.x == BVH_INSTANCE_SHAPE) {
-                float t = hit.t;
-                BVH_COUNT_PRIMITIVE();
-                if (bvhIntersectShapeInstance(info.y, localOrigin, localDirection, t)) {
-                    hit = BvhHit(t, 0.0, 0.0, leafInstance, -1);
-                    if (anyHit) return hit;
-                }
+        else if (info.x == BVH_INSTANCE_SHAPE) {
+            float t = hit.t;
+            BVH_COUNT_PRIMITIVE();
+            if (bvhIntersectShapeInstance(info.y, localOrigin, localDirection, t)) {
+                hit = BvhHit(t, 0.0, 0.0, leafInstance, -1);
+                if (anyHit) return hit;
             }
+        }
 #endif
-            continue;
-        }
-        int left = int(link.x);
-        float nearLeft = bvhBoxEntry(left, rayOrigin, rayInverse, hit.t);
-        float nearRight = bvhBoxEntry(left + 1, rayOrigin, rayInverse, hit.t);
-        bool leftFirst = nearLeft <= nearRight || nearRight < 0.0;
-        // The farther child waits on the stack; the nearer one is visited next.
-        int farNode = leftFirst ? left + 1 : left;
-        float farNear = leftFirst ? nearRight : nearLeft;
-        if (farNear >= 0.0 && size < BVH_TRAVERSAL_STACK) { stackNode[size] = farNode; stackNear[size] = farNear; ++size; }
-        float nearNear = leftFirst ? nearLeft : nearRight;
-        if (nearNear >= 0.0) {
-            node = leftFirst ? left : left + 1;
-            nodeNear = nearNear;
-        }
     }
     return hit;
 }
