@@ -134,9 +134,10 @@ bool GpuScene::updateMaterials(const Scene& scene) {
     features.extensionTextures = extensionTexturesUsed(scene, materials, textureSlots_);
     features.media = usesMedia(scene);
     features.indexMatched = usesIndexMatched(scene);
+    features.transmission = usesTransmission(scene);
     if (features.alpha != features_.alpha || features.singleSided != features_.singleSided ||
         features.extensionTextures != features_.extensionTextures || features.media != features_.media ||
-        features.indexMatched != features_.indexMatched)
+        features.indexMatched != features_.indexMatched || features.transmission != features_.transmission)
         return false; // another variant
     PackedScene repacked = packScene(scene, &textureSlots_);
     if (repacked.materialIndex != packed_.materialIndex || repacked.shapes != packed_.shapes) return false;

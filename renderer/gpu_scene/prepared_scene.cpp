@@ -75,6 +75,7 @@ std::map<std::string, std::string> SceneFeatures::defines() const {
     if (media) defines["HAS_MEDIA"] = "";
     if (indexMatched) defines["HAS_INDEX_MATCHED"] = "";
     if (portals) defines["HAS_PORTALS"] = "";
+    if (transmission) defines["HAS_TRANSMISSION"] = "";
     return defines;
 }
 
@@ -96,6 +97,12 @@ bool usesMedia(const Scene& scene) {
 bool usesIndexMatched(const Scene& scene) {
     for (const auto& [id, m] : scene.materials)
         if (indexMatched(m)) return true;
+    return false;
+}
+
+bool usesTransmission(const Scene& scene) {
+    for (const auto& [id, m] : scene.materials)
+        if (m.transmissionFactor > 0.0f) return true;
     return false;
 }
 
@@ -140,6 +147,7 @@ PreparedScene prepareScene(const Scene& scene, const std::filesystem::path& envi
     out.fog = scene.settings.fog;
     out.features.media = usesMedia(scene);
     out.features.indexMatched = usesIndexMatched(scene);
+    out.features.transmission = usesTransmission(scene);
     out.environmentFile = environmentFile;
     if (!environmentFile.empty()) {
         report(control, PreparationStage::Environment, 0, 1);

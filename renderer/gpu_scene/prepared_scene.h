@@ -42,6 +42,7 @@ struct SceneFeatures {
     bool media = false;       // fog, or a material whose volume scatters (HAS_MEDIA)
     bool indexMatched = false; // a transmissive IOR-1 material: shadow rays cross it (HAS_INDEX_MATCHED)
     bool portals = false;     // a linked portal pair: paths cross it (HAS_PORTALS)
+    bool transmission = false; // a material that transmits: the BSDF's glass lobe (HAS_TRANSMISSION)
     std::map<std::string, std::string> defines() const; // gl::Defines: NAME -> value
 };
 
@@ -51,6 +52,8 @@ void addMeshMaterialFeatures(const Scene& scene, SceneFeatures& features);
 bool usesMedia(const Scene& scene);
 // Whether a material is index-matched (packed_scene.h indexMatched): paths and shadow rays cross it.
 bool usesIndexMatched(const Scene& scene);
+// Whether a material transmits light (KHR_materials_transmission factor above 0).
+bool usesTransmission(const Scene& scene);
 
 struct PreparedEnvironment {
     EnvironmentImage image;

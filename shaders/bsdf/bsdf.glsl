@@ -16,6 +16,15 @@
 #include "bsdf/ggx_energy.glsl"
 #include "bsdf/lambert.glsl"
 
+// The glass lobe is compiled in only where a material of the scene transmits (HAS_TRANSMISSION):
+// llvmpipe runs both sides of every branch, so an opaque scene would pay for it at every vertex.
+// The CPU twin always has it.
+#if defined(__cplusplus) || defined(HAS_TRANSMISSION)
+#define BSDF_TRANSMISSION 1
+#else
+#define BSDF_TRANSMISSION 0
+#endif
+
 // Mixture weights and the probabilities of sampling each lobe, from the material and wo.
 struct BsdfLobes {
     float metal;        // weights of the three parts
@@ -33,7 +42,11 @@ struct BsdfLobes {
 
 BsdfLobes bsdfLobes(SurfaceMaterial m, float cosWo) {
     float metal = clamp(m.metallic, 0.0f, 1.0f);
+#if BSDF_TRANSMISSION
     float glass = (1.0f - metal) * clamp(m.transmission, 0.0f, 1.0f);
+#else
+    float glass = 0.0f;
+#endif
     float layered = (1.0f - metal) - glass;
     vec3 f0 = dielectricF0(m.ior, m.specularColor);
     float layerF = m.specularFactor * maxComponent(fresnelSchlick(f0, abs(cosWo)));
@@ -101,9 +114,11 @@ vec3 bsdfEval(SurfaceMaterial m, vec3 wo, vec3 wi, OUT(float) pdf) {
     BsdfLobes l = bsdfLobes(m, wo.z);
     float glassPdf = 0.0f;
     vec3 f = vec3(0.0f);
+#if BSDF_TRANSMISSION
     if (l.pGlass > 0.0f) {
         f = l.glass * dielectricEval(wo, wi, m.ior, m.thinWalled, l.alpha, m.baseColor, glassPdf);
     }
+#endif
     float opaquePdf = 0.0f;
     vec3 woUp = wo.z > 0.0f ? wo : flipZ(wo);
     vec3 wiUp = wo.z > 0.0f ? wi : flipZ(wi);
@@ -134,6 +149,7 @@ bool bsdfSample(SurfaceMaterial m, vec3 wo, vec3 u, OUT(BsdfSample) s) {
     BsdfLobes l = bsdfLobes(m, wo.z);
     bool rough = l.alpha >= GGX_DELTA_ALPHA;
     float choice = u.x;
+#if BSDF_TRANSMISSION
     if (choice < l.pGlass) {
         vec3 uGlass = vec3(choice / l.pGlass, u.y, u.z);
         if (!dielectricSample(wo, m.ior, m.thinWalled, l.alpha, m.baseColor, uGlass, s)) return false;
@@ -142,7 +158,9 @@ bool bsdfSample(SurfaceMaterial m, vec3 wo, vec3 u, OUT(BsdfSample) s) {
             s.pdf *= l.pGlass;
             return true;
         }
-    } else {
+    } else
+#endif
+    {
         bool below = wo.z < 0.0f;
         vec3 woUp = below ? flipZ(wo) : wo;
         choice -= l.pGlass;

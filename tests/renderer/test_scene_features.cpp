@@ -35,12 +35,12 @@ class TestSceneFeatures : public QObject {
     Q_OBJECT
 private slots:
     // The bundled Cornell box: meshes of single-sided materials and an emissive ceiling, nothing else.
-    void meshOnlySceneLeavesOutShapesAndLights() {
+    void meshOnlySceneLeavesOutShapesLightsAndGlass() {
         const Scene scene = loadScene(GLINT_RESOURCES_DIR "/scenes/cornell_box/cornell_box.gltf").scene;
         const auto defines = definesOf(scene);
         QVERIFY(has(defines, "HAS_MESHES"));
         QVERIFY(has(defines, "HAS_SINGLE_SIDED"));
-        for (const char* absent : {"HAS_SHAPES", "HAS_PUNCTUAL_LIGHTS", "HAS_ENV_MAP", "HAS_EMISSIVE_SHAPES"})
+        for (const char* absent : {"HAS_SHAPES", "HAS_PUNCTUAL_LIGHTS", "HAS_TRANSMISSION", "HAS_ENV_MAP", "HAS_EMISSIVE_SHAPES"})
             QVERIFY2(!has(defines, absent), absent);
     }
 
@@ -49,6 +49,21 @@ private slots:
         QVERIFY(has(defines, "HAS_SHAPES"));
         QVERIFY(has(defines, "HAS_PUNCTUAL_LIGHTS"));
         QVERIFY(!has(defines, "HAS_MESHES"));
+        QVERIFY(!has(defines, "HAS_TRANSMISSION"));
+    }
+
+    // One transmissive material anywhere in the scene brings the BSDF's glass lobe in.
+    void glassBringsTheTransmissionLobe() {
+        Scene scene = shapesLitBySun();
+        const MaterialId glassy = scene.materials.add(glass(1.5f, 0.0f));
+        addShape(scene, ShapeKind::Sphere, glassy, {1.5f, 0.0f, 0.0f});
+        QVERIFY(has(definesOf(scene), "HAS_TRANSMISSION"));
+
+        Material barely = lambert(glm::vec3(0.5f));
+        barely.transmissionFactor = 0.01f;
+        Scene other = shapesLitBySun();
+        addShape(other, ShapeKind::Box, other.materials.add(barely), {0.0f, 2.0f, 0.0f});
+        QVERIFY(has(definesOf(other), "HAS_TRANSMISSION"));
     }
 
     // An area light is a shape of its own: the shape code comes with it.
