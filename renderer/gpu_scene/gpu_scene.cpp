@@ -123,6 +123,13 @@ void GpuScene::updateTransforms(const Scene& scene) {
     features_.emissiveShapes = moved.emissiveShapes;
     features_.portals = moved.portals;
     meshes_.updateTransforms(scene, packed_.materialIndex, &textureSlots_);
+    noteAreaEmitters();
+}
+
+// Moving, showing or hiding an emissive mesh, or a material edit, can bring the first area emitter
+// in or take the last one out: the variant follows at the next frame.
+void GpuScene::noteAreaEmitters() {
+    features_.areaEmitters = meshes_.data().lights.count() > 0 || features_.emissiveShapes;
 }
 
 bool GpuScene::updateMaterials(const Scene& scene) {
@@ -144,6 +151,7 @@ bool GpuScene::updateMaterials(const Scene& scene) {
     packed_.materials = std::move(repacked.materials);
     materials_ = vec4Buffer("the material buffer", packed_.materials);
     meshes_.updateEmission(scene, packed_.materialIndex, &textureSlots_);
+    noteAreaEmitters();
     return true;
 }
 

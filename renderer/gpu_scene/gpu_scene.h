@@ -53,6 +53,8 @@ public:
     void bind(const gl::ShaderProgram& program) const;
 
 private:
+    void noteAreaEmitters();
+
     SceneFeatures features_;
     PackedScene packed_;
     Environment environment_;

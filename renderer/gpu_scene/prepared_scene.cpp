@@ -72,6 +72,7 @@ std::map<std::string, std::string> SceneFeatures::defines() const {
     if (meshes && alpha) defines["HAS_ALPHA"] = "";
     if (meshes && singleSided) defines["HAS_SINGLE_SIDED"] = "";
     if (emissiveShapes) defines["HAS_EMISSIVE_SHAPES"] = "";
+    if (areaEmitters) defines["HAS_AREA_EMITTERS"] = "";
     if (media) defines["HAS_MEDIA"] = "";
     if (indexMatched) defines["HAS_INDEX_MATCHED"] = "";
     if (portals) defines["HAS_PORTALS"] = "";
@@ -139,6 +140,7 @@ PreparedScene prepareScene(const Scene& scene, const std::filesystem::path& envi
                                [&](std::size_t done, std::size_t total) { report(control, PreparationStage::Meshes, done, total); },
                                &out.textures);
     out.features.meshes = !out.meshes.instances.empty() && !out.meshes.flat.trianglePositions.empty();
+    out.features.areaEmitters = out.meshes.lights.count() > 0 || out.features.emissiveShapes;
     addMeshMaterialFeatures(scene, out.features);
     out.features.textures = !out.textures.empty() || colors;
     out.features.textureArrays = static_cast<int>(out.textures.buckets.size());

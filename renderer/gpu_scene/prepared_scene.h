@@ -39,6 +39,7 @@ struct SceneFeatures {
     bool alpha = false;       // a mesh material with alpha mode MASK or BLEND
     bool singleSided = false; // a non-emissive single-sided mesh material: camera rays cull its back faces
     bool emissiveShapes = false; // an emissive shape or an area light: light-sampled (HAS_EMISSIVE_SHAPES)
+    bool areaEmitters = false;   // the above or an emissive triangle: the area light sample (HAS_AREA_EMITTERS)
     bool media = false;       // fog, or a material whose volume scatters (HAS_MEDIA)
     bool indexMatched = false; // a transmissive IOR-1 material: shadow rays cross it (HAS_INDEX_MATCHED)
     bool portals = false;     // a linked portal pair: paths cross it (HAS_PORTALS)

@@ -169,16 +169,17 @@ ShadowCandidate environmentCandidate(Vertex v, INOUT(Rng) rng) {
     return ShadowCandidate(direction, RAY_MAX, f * environmentRadiance(direction) * (powerHeuristic(lightPdf, bsdfPdf) / lightPdf), vec4(0.0));
 }
 
-// Candidate i of next-event estimation: punctual lights first, then the area emitter, then the
-// environment. Each kind is compiled in only where the scene has it (llvmpipe runs every branch).
-ShadowCandidate lightCandidate(Vertex v, int i, INOUT(Rng) rng) {
+// Candidate k of next-event estimation: punctual lights 0 .. uLightCount - 1, then the area emitter,
+// then the environment. Each kind is compiled in only where the scene has it (llvmpipe runs every
+// branch and every loop pass, so a kind with nothing to sample would cost a full pass).
+ShadowCandidate lightCandidate(Vertex v, int k, INOUT(Rng) rng) {
 #ifdef HAS_PUNCTUAL_LIGHTS
-    if (i < uLightCount) return punctualCandidate(v, i, rng);
+    if (k < uLightCount) return punctualCandidate(v, k, rng);
 #endif
-#ifdef HAS_ENV_MAP
-    if (i > uLightCount) return environmentCandidate(v, rng);
+#ifdef HAS_AREA_EMITTERS
+    if (k == uLightCount) return areaCandidate(v, rng);
 #endif
-    return areaCandidate(v, rng);
+    return environmentCandidate(v, rng);
 }
 
 // Next-event estimation: every punctual light, one emissive triangle and one environment sample.
@@ -191,15 +192,24 @@ ShadowCandidate lightCandidate(Vertex v, int i, INOUT(Rng) rng) {
 vec3 directLight(Vertex v, Medium arrived, Medium across, bool split, INOUT(Rng) rng, OUT(vec3) diffuse) {
     vec3 sum = vec3(0.0);
     diffuse = vec3(0.0);
-    // Without an environment map the loop ends before its candidate, which would be none: llvmpipe
-    // runs every branch of a pass through the loop, so an empty pass costs as much as a full one.
-#ifdef HAS_ENV_MAP
-    int candidates = uLightCount + 2;
+    // Only the kinds the scene has take a pass of the loop: llvmpipe runs every branch of a pass, so
+    // an empty one costs as much as a full one. Candidate k draws dimension first + k whichever kinds
+    // the variant has, so every variant of a scene draws the same numbers.
+#ifdef HAS_AREA_EMITTERS
+    const int areaCandidates = 1;
 #else
-    int candidates = uLightCount + 1;
+    const int areaCandidates = 0;
 #endif
-    for (int i = 0; i < candidates; ++i) {
-        ShadowCandidate c = lightCandidate(v, i, rng);
+#ifdef HAS_ENV_MAP
+    const int environmentCandidates = 1;
+#else
+    const int environmentCandidates = 0;
+#endif
+    uint first = rng.dimension;
+    for (int i = 0; i < uLightCount + areaCandidates + environmentCandidates; ++i) {
+        int k = i < uLightCount ? i : i + 1 - areaCandidates;
+        rng.dimension = first + uint(k);
+        ShadowCandidate c = lightCandidate(v, k, rng);
         if (!(maxComponent(c.contribution) > 0.0)) continue;
         setTraceState(false, alphaKey(rng, 1u), v.cone);
         Ray ray;
@@ -217,9 +227,7 @@ vec3 directLight(Vertex v, Medium arrived, Medium across, bool split, INOUT(Rng)
         sum += contribution;
         if (split) diffuse += v.inMedium ? contribution : diffusePart(v.material, v.wo, localFromWorld(v.frame, c.direction), contribution);
     }
-#ifndef HAS_ENV_MAP
-    rng.dimension += 1u; // the environment candidate's draw: later draws keep their dimensions
-#endif
+    rng.dimension = first + uint(uLightCount) + 2u; // later draws keep their dimensions
     return sum;
 }
 

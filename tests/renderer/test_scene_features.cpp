@@ -40,8 +40,16 @@ private slots:
         const auto defines = definesOf(scene);
         QVERIFY(has(defines, "HAS_MESHES"));
         QVERIFY(has(defines, "HAS_SINGLE_SIDED"));
+        QVERIFY(has(defines, "HAS_AREA_EMITTERS")); // the emissive ceiling triangles
         for (const char* absent : {"HAS_SHAPES", "HAS_PUNCTUAL_LIGHTS", "HAS_TRANSMISSION", "HAS_ENV_MAP", "HAS_EMISSIVE_SHAPES"})
             QVERIFY2(!has(defines, absent), absent);
+    }
+
+    // With its ceiling switched off no triangle emits: no area light sample per vertex.
+    void meshesWithoutEmissionLeaveOutTheAreaSample() {
+        Scene scene = loadScene(GLINT_RESOURCES_DIR "/scenes/cornell_box/cornell_box.gltf").scene;
+        for (auto& [id, material] : scene.materials) material.emissiveFactor = glm::vec3(0.0f);
+        QVERIFY(!has(definesOf(scene), "HAS_AREA_EMITTERS"));
     }
 
     void shapesAndSunAreCompiledIn() {
@@ -49,6 +57,7 @@ private slots:
         QVERIFY(has(defines, "HAS_SHAPES"));
         QVERIFY(has(defines, "HAS_PUNCTUAL_LIGHTS"));
         QVERIFY(!has(defines, "HAS_MESHES"));
+        QVERIFY(!has(defines, "HAS_AREA_EMITTERS")); // nothing emits but the sun
         QVERIFY(!has(defines, "HAS_TRANSMISSION"));
     }
 
@@ -76,6 +85,7 @@ private slots:
         const auto defines = definesOf(scene);
         QVERIFY(has(defines, "HAS_SHAPES"));
         QVERIFY(has(defines, "HAS_EMISSIVE_SHAPES"));
+        QVERIFY(has(defines, "HAS_AREA_EMITTERS"));
         QVERIFY(!has(defines, "HAS_PUNCTUAL_LIGHTS"));
     }
 };
