@@ -24,7 +24,6 @@
 
 namespace glint::renderer {
 
-// What the scene uses; selects shader variants so a scene pays only for its features.
 // What a scene uses, each a shader variant define: a scene pays only for what it has. That matters
 // most on llvmpipe, which runs every branch of the shader for all pixels (masked), and a loop's body
 // at least once even where it has nothing to do (docs/PERFORMANCE.md, "Every branch costs").
