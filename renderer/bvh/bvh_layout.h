@@ -5,7 +5,7 @@
 //
 // Texture buffers and the sampler uniforms that read them (set their units with glUniform1i):
 //
-//   uBvhNodeBounds        samplerBuffer   GL_RGBA32F   2 texels per node
+//   uBvhNodeBounds        usamplerBuffer  GL_RGBA32UI  2 texels per node
 //   uBvhNodeLinks         usamplerBuffer  GL_RGBA32UI  1 texel per node
 //   uBvhTrianglePositions samplerBuffer   GL_RGBA32F   3 texels per triangle slot
 //   uBvhTriangleVertices  usamplerBuffer  GL_RGBA32UI  1 texel per triangle slot
@@ -17,9 +17,11 @@
 // (number of mesh BVH nodes). Moving an object rewrites only the top-level tail of the two node
 // buffers and the instance buffer (flattenTopLevel()); the mesh part keeps its bytes.
 //
-//   uBvhNodeBounds[2n + 0] = (min.x, min.y, min.z, 0)   node n's box, in its level's space
-//   uBvhNodeBounds[2n + 1] = (max.x, max.y, max.z, 0)   (mesh: the mesh's local space; top: world)
-//   uBvhNodeLinks[n]       = (first, count, 0, 0)
+//   uBvhNodeBounds[2n + 0] = (min.x, min.y, min.z, first)   node n's box as float bits, in its
+//   uBvhNodeBounds[2n + 1] = (max.x, max.y, max.z, count)   level's space (mesh: the mesh's local
+//                            space; top: world), and its link: testing a child's box reads the
+//                            child's link with it, so the walk needs no fetch of its own for it
+//   uBvhNodeLinks[n]       = (first, count, 0, 0)            the same link, for the roots
 //       count == 0: an interior node; its two children are the nodes `first` and `first + 1`
 //                   (siblings are always adjacent, so one fetch range reads both children's boxes).
 //       count > 0 : a leaf.
@@ -74,6 +76,10 @@ inline constexpr std::uint32_t kInstanceShape = 1;
 inline constexpr std::uint32_t kInstanceMirrored = 1u; // flags bit 0
 
 inline constexpr std::uint32_t kMaxLeafTriangles = 8;
+// The traversal packs a link into one int, (first << 4) | count: `first` stays below 2^27 (134 M
+// nodes, triangle slots or instances; validation refuses more) and `count` below 16.
+inline constexpr std::uint32_t kMaxLinkFirst = 1u << 27;
+static_assert(kMaxLeafTriangles < 16);
 // Traversal (GLSL and CPU): stack entries per level (one loop walks both levels on one stack of
 // 2 * kStackSize entries, a mesh's above the top level's), and the cap on visited nodes over both
 // levels, so a NaN ray or a corrupt buffer cannot loop forever. A level deeper than kStackSize is

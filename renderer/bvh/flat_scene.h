@@ -5,6 +5,8 @@
 
 #include <glm/glm.hpp>
 
+#include <bit>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -21,13 +23,13 @@ struct FlatMeshRange {
 
 // The top-level part, rewritten alone when transforms change.
 struct FlatTopLevel {
-    std::vector<glm::vec4> nodeBounds; // appended to FlatScene::nodeBounds at topLevelRoot
+    std::vector<glm::uvec4> nodeBounds; // appended to FlatScene::nodeBounds at topLevelRoot
     std::vector<glm::uvec4> nodeLinks; // appended to FlatScene::nodeLinks at topLevelRoot
     std::vector<glm::uvec4> instances; // the whole uBvhInstances buffer
 };
 
 struct FlatScene {
-    std::vector<glm::vec4> nodeBounds;        // uBvhNodeBounds
+    std::vector<glm::uvec4> nodeBounds;       // uBvhNodeBounds
     std::vector<glm::uvec4> nodeLinks;        // uBvhNodeLinks
     std::vector<glm::vec4> trianglePositions; // uBvhTrianglePositions
     std::vector<glm::uvec4> triangleVertices; // uBvhTriangleVertices
@@ -38,6 +40,12 @@ struct FlatScene {
     std::vector<std::uint32_t> slotTriangle;  // CPU only: slot -> triangle index within its mesh
     friend bool operator==(const FlatScene&, const FlatScene&) = default;
 };
+
+// Texel `texel` of the node bounds as floats: 2n is node n's min corner, 2n + 1 its max.
+inline glm::vec3 nodeCorner(const FlatScene& scene, std::size_t texel)
+{
+    return std::bit_cast<glm::vec3>(glm::uvec3(scene.nodeBounds[texel]));
+}
 
 FlatScene flattenScene(const std::vector<MeshBvh>& meshes, const TopLevel& topLevel);
 

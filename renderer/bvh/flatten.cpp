@@ -7,19 +7,21 @@
 namespace glint::bvh {
 namespace {
 
-void appendBounds(std::vector<glm::vec4>& out, const Aabb& box)
+// A node's box as float bits, with its link beside it (bvh_layout.h).
+void appendBounds(std::vector<glm::uvec4>& out, const Aabb& box, glm::uvec2 link)
 {
-    out.emplace_back(box.lo, 0.0f);
-    out.emplace_back(box.hi, 0.0f);
+    out.emplace_back(std::bit_cast<glm::uvec3>(box.lo), link.x);
+    out.emplace_back(std::bit_cast<glm::uvec3>(box.hi), link.y);
 }
 
 // Interior children and leaf items are offset by where this tree's nodes and items start.
-void appendNodes(std::vector<glm::vec4>& bounds, std::vector<glm::uvec4>& links, const Bvh& bvh, std::uint32_t firstNode,
+void appendNodes(std::vector<glm::uvec4>& bounds, std::vector<glm::uvec4>& links, const Bvh& bvh, std::uint32_t firstNode,
                  std::uint32_t firstItem)
 {
     for (const BvhNode& node : bvh.nodes) {
-        appendBounds(bounds, node.bounds);
-        links.emplace_back(node.first + (node.leaf() ? firstItem : firstNode), node.count, 0u, 0u);
+        const glm::uvec2 link(node.first + (node.leaf() ? firstItem : firstNode), node.count);
+        appendBounds(bounds, node.bounds, link);
+        links.emplace_back(link, 0u, 0u);
     }
 }
 

@@ -27,8 +27,8 @@ BoxRay boxRay(const Ray& ray)
 // Where the ray enters node's box within [0, tMax], or kMissed. A NaN slab constrains nothing.
 float boxEntry(const FlatScene& scene, std::uint32_t node, const BoxRay& ray, float tMax)
 {
-    const glm::vec3 t0 = (glm::vec3(scene.nodeBounds[2 * node]) - ray.origin) * ray.inverseDirection;
-    const glm::vec3 t1 = (glm::vec3(scene.nodeBounds[2 * node + 1]) - ray.origin) * ray.inverseDirection;
+    const glm::vec3 t0 = (nodeCorner(scene, 2 * node) - ray.origin) * ray.inverseDirection;
+    const glm::vec3 t1 = (nodeCorner(scene, 2 * node + 1) - ray.origin) * ray.inverseDirection;
     float nearT = 0.0f;
     float farT = tMax;
     for (int axis = 0; axis < 3; ++axis) {

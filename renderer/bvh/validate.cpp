@@ -22,7 +22,7 @@ std::string message(const Parts&... parts)
 
 Aabb nodeBox(const FlatScene& scene, std::uint32_t node)
 {
-    return Aabb{glm::vec3(scene.nodeBounds[2 * node]), glm::vec3(scene.nodeBounds[2 * node + 1])};
+    return Aabb{nodeCorner(scene, 2 * node), nodeCorner(scene, 2 * node + 1)};
 }
 
 bool finitePoint(const glm::vec3& p)
@@ -52,6 +52,10 @@ Problem checkTree(const FlatScene& scene, const Level& level, const LeafCheck& c
         pending.pop_back();
         if (depth >= kStackSize) return message(level.name, ": node ", node, " is deeper than the traversal stack (", kStackSize, ")");
         const glm::uvec4 link = scene.nodeLinks[node];
+        if (scene.nodeBounds[2 * node].w != link.x || scene.nodeBounds[2 * node + 1].w != link.y)
+            return message(level.name, ": node ", node, "'s bounds carry another link than its link texel");
+        if (link.x >= kMaxLinkFirst)
+            return message(level.name, ": node ", node, " links to index ", link.x, ", beyond the ", kMaxLinkFirst, " the traversal can address");
         if (link.y > 0) {
             if (link.y > level.maxLeaf) return message(level.name, ": leaf node ", node, " holds ", link.y, " items (at most ", level.maxLeaf, ")");
             if (link.x < level.firstItem || link.x + link.y > level.endItem || link.x + link.y < link.x)

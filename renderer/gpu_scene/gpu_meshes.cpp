@@ -49,7 +49,7 @@ GpuMeshes::GpuMeshes(MeshData data) : data_(std::move(data)) {
     const bvh::FlatScene& flat = data_.flat;
     checkSizes(flat); // validated on the CPU already (validatedMeshData), off the GL thread
     buffers_ = std::make_unique<Buffers>(Buffers{
-        upload("uBvhNodeBounds", GL_RGBA32F, flat.nodeBounds), upload("uBvhNodeLinks", GL_RGBA32UI, flat.nodeLinks),
+        upload("uBvhNodeBounds", GL_RGBA32UI, flat.nodeBounds), upload("uBvhNodeLinks", GL_RGBA32UI, flat.nodeLinks),
         upload("uBvhTrianglePositions", GL_RGBA32F, flat.trianglePositions),
         upload("uBvhTriangleVertices", GL_RGBA32UI, flat.triangleVertices), upload("uBvhInstances", GL_RGBA32UI, flat.instances),
         upload("the vertex attributes", GL_RGBA32F, data_.vertexTexels),
@@ -70,7 +70,7 @@ void GpuMeshes::updateTransforms(const Scene& scene, const std::map<MaterialId, 
     checkSizes(data_.flat);
     Buffers& b = *buffers_;
     const std::size_t meshNodes = data_.flat.meshNodeCount;
-    replaceTail(b.nodeBounds, "uBvhNodeBounds", GL_RGBA32F, data_.flat.nodeBounds, bvh::kNodeBoundsTexels * meshNodes);
+    replaceTail(b.nodeBounds, "uBvhNodeBounds", GL_RGBA32UI, data_.flat.nodeBounds, bvh::kNodeBoundsTexels * meshNodes);
     replaceTail(b.nodeLinks, "uBvhNodeLinks", GL_RGBA32UI, data_.flat.nodeLinks, meshNodes);
     replaceTail(b.instances, "uBvhInstances", GL_RGBA32UI, data_.flat.instances, 0);
     if (hadEmitters || !data_.lights.texels.empty()) {

@@ -4,11 +4,15 @@
 // "Robust BVH Ray Traversal", JCGT 2013).
 const float BVH_FAR_WIDENING = 1.00000071525573730469;
 
-// Where the ray enters the node's box within [0, tMax], or -1.0 on a miss. Selections instead of
-// min/max: a NaN slab (origin on the plane, zero direction) constrains nothing.
-float bvhBoxEntry(int node, vec3 origin, vec3 inverseDirection, float tMax) {
-    precise vec3 t0 = (texelFetch(uBvhNodeBounds, 2 * node).xyz - origin) * inverseDirection;
-    precise vec3 t1 = (texelFetch(uBvhNodeBounds, 2 * node + 1).xyz - origin) * inverseDirection;
+// Where the ray enters the node's box within [0, tMax], or -1.0 on a miss; `link`: the node's link,
+// packed (bvhPackLink), which its box texels carry. Selections instead of min/max: a NaN slab
+// (origin on the plane, zero direction) constrains nothing.
+float bvhBoxEntry(int node, vec3 origin, vec3 inverseDirection, float tMax, out int link) {
+    uvec4 lo = texelFetch(uBvhNodeBounds, 2 * node);
+    uvec4 hi = texelFetch(uBvhNodeBounds, 2 * node + 1);
+    link = bvhPackLink(lo.w, hi.w);
+    precise vec3 t0 = (uintBitsToFloat(lo.xyz) - origin) * inverseDirection;
+    precise vec3 t1 = (uintBitsToFloat(hi.xyz) - origin) * inverseDirection;
     vec3 enter = mix(t1, t0, lessThan(t0, t1));
     vec3 leave = mix(t1, t0, greaterThan(t0, t1));
     float nearT = 0.0;

@@ -1,6 +1,6 @@
 // The flattened two-level BVH: texture buffers and fetch helpers. Layout, texel by texel, in
 // renderer/bvh/bvh_layout.h (the contract with renderer/bvh/flatten.cpp).
-uniform samplerBuffer uBvhNodeBounds;         // RGBA32F, 2 texels per node: min, max
+uniform usamplerBuffer uBvhNodeBounds;        // RGBA32UI, 2 texels per node: (min, first), (max, count)
 uniform usamplerBuffer uBvhNodeLinks;         // RGBA32UI, 1 texel per node: (first, count, 0, 0)
 uniform samplerBuffer uBvhTrianglePositions;  // RGBA32F, 3 texels per triangle slot
 uniform usamplerBuffer uBvhTriangleVertices;  // RGBA32UI, 1 texel per slot: (v0, v1, v2, material)
@@ -14,6 +14,11 @@ const uint BVH_INSTANCE_SHAPE = 1u;
 const uint BVH_INSTANCE_MIRRORED = 1u;
 
 uvec4 bvhNodeLink(int node) { return texelFetch(uBvhNodeLinks, node); }
+
+// A node's link packed into one int, (first << 4) | count (renderer/bvh/bvh_layout.h, kMaxLinkFirst).
+int bvhPackLink(uint first, uint count) { return int((first << 4u) | count); }
+int bvhLinkFirst(int link) { return link >> 4; }
+int bvhLinkCount(int link) { return link & 15; }
 
 vec3 bvhTrianglePosition(int slot, int k) { return texelFetch(uBvhTrianglePositions, 3 * slot + k).xyz; }
 

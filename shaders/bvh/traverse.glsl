@@ -54,114 +54,149 @@ void bvhLocalRay(int instance, vec3 origin, vec3 direction, out vec3 localOrigin
 // One walk over both levels with one stack: a top-level leaf (an instance) pushes its mesh's root
 // above the top-level entries and switches to the mesh-local ray; when the stack falls back to that
 // mark, the walk is at the top level again. Nearer child first; anyHit: stop at the first hit. The
-// node to visit next (the nearer child, a mesh's root) stays in `node`; only farther children are
+// node to visit next (the nearer child, a mesh's root) stays in the walk; only farther children are
 // pushed (run-time indexed stack accesses are gathers and scatters across llvmpipe's SIMD lanes).
+// Nodes are handled by their packed links, read with their boxes, so a step fetches its children's
+// boxes and nothing else.
 //
-// Interior nodes and leaves take turns ("while-while", Aila and Laine 2009): an inner loop descends
+// Interior nodes and leaves take turns ("while-while", Aila and Laine 2009): bvhDescend walks
 // interior nodes until every lane stands at a leaf or has finished, then each lane at a leaf tests
 // its triangles or enters its instance. llvmpipe runs every branch of a loop body for all lanes,
 // masked, so a single loop paid for a leaf's triangle tests and an instance's transform at every
-// interior step; here an interior step pays for two box tests only. Each ray visits the same nodes
-// in the same order as before (and as renderer/bvh/traverse.cpp), so hits are the same to the bit.
+// interior step; here an interior step pays for two box tests only, and a nearer child that is a
+// leaf is stood at in the same step. A pass of the outer loop enters an instance and descends its
+// mesh before the triangle tests, so an instance and its first mesh leaf (the whole of a one-leaf
+// mesh) cost one pass, not two. Each ray visits the same nodes in the same order as
+// renderer/bvh/traverse.cpp, so hits are the same to the bit.
+struct BvhWalk {
+    int next;       // the packed link of the node to visit next; -1: take one from the stack
+    float nextNear; // where the ray enters that node's box
+    int size;       // stack entries
+    int instance;   // the mesh instance being walked; -1 at the top level
+    int meshMark;   // stack size below the mesh's entries
+    vec3 rayOrigin; // the current level's ray
+    vec3 rayDirection;
+    vec3 rayInverse;
+    int steps;
+    int leaf;       // the packed link of the leaf the walk stands at; -1: none
+};
+
+// The stack lives outside bvhTraverse so that its two descents share it without a copy (GLSL passes
+// arrays by value).
+int bvhStackLink[BVH_TRAVERSAL_STACK];
+float bvhStackNear[BVH_TRAVERSAL_STACK];
+
+// Descends interior nodes, nearer child first, taking the next node from the stack where there is
+// none, until the walk stands at a leaf or has nothing left (or has run out of steps). A walk already
+// at a leaf stays there.
+void bvhDescend(inout BvhWalk walk, vec3 worldOrigin, vec3 worldDirection, vec3 worldInverse, float tMax) {
+    while (walk.leaf < 0 && (walk.next >= 0 || walk.size > 0)) {
+        if (++walk.steps > BVH_MAX_STEPS) break;
+        if (walk.next < 0) {
+            if (walk.instance >= 0 && walk.size == walk.meshMark) {
+                walk.instance = -1;
+                walk.rayOrigin = worldOrigin;
+                walk.rayDirection = worldDirection;
+                walk.rayInverse = worldInverse;
+            }
+            --walk.size;
+            walk.next = bvhStackLink[walk.size];
+            walk.nextNear = bvhStackNear[walk.size];
+        }
+        int link = walk.next;
+        walk.next = -1;
+        if (walk.nextNear > tMax) continue;
+        BVH_COUNT_NODE();
+        if (bvhLinkCount(link) > 0) {
+            walk.leaf = link;
+            break;
+        }
+        int left = bvhLinkFirst(link);
+        int leftLink;
+        int rightLink;
+        float nearLeft = bvhBoxEntry(left, walk.rayOrigin, walk.rayInverse, tMax, leftLink);
+        float nearRight = bvhBoxEntry(left + 1, walk.rayOrigin, walk.rayInverse, tMax, rightLink);
+        bool leftFirst = nearLeft <= nearRight || nearRight < 0.0;
+        // The farther child waits on the stack; the nearer one is visited next, at once if a leaf.
+        float farNear = leftFirst ? nearRight : nearLeft;
+        if (farNear >= 0.0 && walk.size < BVH_TRAVERSAL_STACK) {
+            bvhStackLink[walk.size] = leftFirst ? rightLink : leftLink;
+            bvhStackNear[walk.size] = farNear;
+            ++walk.size;
+        }
+        float nearNear = leftFirst ? nearLeft : nearRight;
+        int nearLink = leftFirst ? leftLink : rightLink;
+        if (nearNear < 0.0) continue;
+        if (bvhLinkCount(nearLink) > 0) {
+            ++walk.steps;
+            BVH_COUNT_NODE();
+            walk.leaf = nearLink;
+            break;
+        }
+        walk.next = nearLink;
+        walk.nextNear = nearNear;
+    }
+}
+
 BvhHit bvhTraverse(vec3 origin, vec3 direction, float tMax, bool anyHit) {
     BvhHit hit = bvhNoHit(tMax);
     if (uBvhTopLevelRoot < 0) return hit;
     vec3 worldInverse = 1.0 / direction;
-    float rootNear = bvhBoxEntry(uBvhTopLevelRoot, origin, worldInverse, hit.t);
+    int rootLink;
+    float rootNear = bvhBoxEntry(uBvhTopLevelRoot, origin, worldInverse, hit.t, rootLink);
     if (rootNear < 0.0) return hit;
-    int stackNode[BVH_TRAVERSAL_STACK];
-    float stackNear[BVH_TRAVERSAL_STACK];
-    int size = 0;
-    int node = uBvhTopLevelRoot; // the next node to visit, -1: take it from the stack
-    float nodeNear = rootNear;
-    int instance = -1; // the mesh instance being walked; -1 at the top level
-    int meshMark = 0;  // stack size below the mesh's entries
-    vec3 rayOrigin = origin;
-    vec3 rayDirection = direction;
-    vec3 rayInverse = worldInverse;
+    BvhWalk walk = BvhWalk(rootLink, rootNear, 0, -1, 0, origin, direction, worldInverse, 0, -1);
     BvhWatertightRay triangleRay = bvhPrepareWatertight(origin, direction);
-    int steps = 0;
-    while (node >= 0 || size > 0) {
-        bool atLeaf = false;
-        uvec4 link;
-        while (node >= 0 || size > 0) {
-            if (++steps > BVH_MAX_STEPS) break;
-            if (node < 0) {
-                if (instance >= 0 && size == meshMark) {
-                    instance = -1;
-                    rayOrigin = origin;
-                    rayDirection = direction;
-                    rayInverse = worldInverse;
-                }
-                --size;
-                node = stackNode[size];
-                nodeNear = stackNear[size];
+    while (true) {
+        bvhDescend(walk, origin, direction, worldInverse, hit.t);
+        if (walk.leaf < 0) break; // nothing left, or out of steps
+        if (walk.instance < 0) {
+            int leafInstance = bvhLinkFirst(walk.leaf);
+            walk.leaf = -1;
+            uvec4 info = bvhInstanceInfo(leafInstance);
+            vec3 localOrigin;
+            vec3 localDirection;
+            bvhLocalRay(leafInstance, origin, direction, localOrigin, localDirection);
+            if (info.x == BVH_INSTANCE_MESH) {
+                // The mesh's root comes next without a box test of its own: the instance's box, just
+                // entered, bounds it, and the root's children are tested as usual.
+                uvec4 rootLink = bvhNodeLink(int(info.y));
+                walk.meshMark = walk.size;
+                walk.next = bvhPackLink(rootLink.x, rootLink.y);
+                walk.instance = leafInstance;
+                walk.rayOrigin = localOrigin;
+                walk.rayDirection = localDirection;
+                walk.rayInverse = 1.0 / localDirection;
+                triangleRay = bvhPrepareWatertight(localOrigin, localDirection);
             }
-            int current = node;
-            node = -1;
-            if (nodeNear > hit.t) continue;
-            BVH_COUNT_NODE();
-            link = bvhNodeLink(current);
-            if (link.y > 0u) {
-                atLeaf = true;
-                break;
-            }
-            int left = int(link.x);
-            float nearLeft = bvhBoxEntry(left, rayOrigin, rayInverse, hit.t);
-            float nearRight = bvhBoxEntry(left + 1, rayOrigin, rayInverse, hit.t);
-            bool leftFirst = nearLeft <= nearRight || nearRight < 0.0;
-            // The farther child waits on the stack; the nearer one is visited next.
-            int farNode = leftFirst ? left + 1 : left;
-            float farNear = leftFirst ? nearRight : nearLeft;
-            if (farNear >= 0.0 && size < BVH_TRAVERSAL_STACK) { stackNode[size] = farNode; stackNear[size] = farNear; ++size; }
-            float nearNear = leftFirst ? nearLeft : nearRight;
-            if (nearNear >= 0.0) {
-                node = leftFirst ? left : left + 1;
-                nodeNear = nearNear;
-            }
-        }
-        if (!atLeaf) break; // nothing left, or out of steps
-        if (instance >= 0) {
-            for (int slot = int(link.x); slot < int(link.x + link.y); ++slot) {
-                vec3 tuv;
+#ifdef BVH_SHAPE_INSTANCES
+            else if (info.x == BVH_INSTANCE_SHAPE) {
+                float t = hit.t;
                 BVH_COUNT_PRIMITIVE();
-                if (bvhIntersectTriangle(triangleRay, bvhTrianglePosition(slot, 0), bvhTrianglePosition(slot, 1),
-                                         bvhTrianglePosition(slot, 2), hit.t, tuv)) {
-#ifdef BVH_TRIANGLE_FILTER
-                    if (!bvhAcceptTriangle(instance, slot, tuv, rayDirection)) continue;
-#endif
-                    hit = BvhHit(tuv.x, tuv.y, tuv.z, instance, slot);
+                if (bvhIntersectShapeInstance(info.y, localOrigin, localDirection, t)) {
+                    hit = BvhHit(t, 0.0, 0.0, leafInstance, -1);
                     if (anyHit) return hit;
                 }
             }
-            continue;
+#endif
         }
-        int leafInstance = int(link.x);
-        uvec4 info = bvhInstanceInfo(leafInstance);
-        vec3 localOrigin;
-        vec3 localDirection;
-        bvhLocalRay(leafInstance, origin, direction, localOrigin, localDirection);
-        if (info.x == BVH_INSTANCE_MESH) {
-            // The mesh's root comes next without a box test of its own: the instance's box, just
-            // entered, bounds it, and the root's children are tested as usual.
-            meshMark = size;
-            node = int(info.y);
-            instance = leafInstance;
-            rayOrigin = localOrigin;
-            rayDirection = localDirection;
-            rayInverse = 1.0 / localDirection;
-            triangleRay = bvhPrepareWatertight(localOrigin, localDirection);
-        }
-#ifdef BVH_SHAPE_INSTANCES
-        else if (info.x == BVH_INSTANCE_SHAPE) {
-            float t = hit.t;
+        bvhDescend(walk, origin, direction, worldInverse, hit.t); // into the mesh just entered
+        if (walk.leaf < 0 || walk.instance < 0) continue; // a top-level leaf waits for the next pass
+        int first = bvhLinkFirst(walk.leaf);
+        int end = first + bvhLinkCount(walk.leaf);
+        walk.leaf = -1;
+        for (int slot = first; slot < end; ++slot) {
+            vec3 tuv;
             BVH_COUNT_PRIMITIVE();
-            if (bvhIntersectShapeInstance(info.y, localOrigin, localDirection, t)) {
-                hit = BvhHit(t, 0.0, 0.0, leafInstance, -1);
+            if (bvhIntersectTriangle(triangleRay, bvhTrianglePosition(slot, 0), bvhTrianglePosition(slot, 1),
+                                     bvhTrianglePosition(slot, 2), hit.t, tuv)) {
+#ifdef BVH_TRIANGLE_FILTER
+                if (!bvhAcceptTriangle(walk.instance, slot, tuv, walk.rayDirection)) continue;
+#endif
+                hit = BvhHit(tuv.x, tuv.y, tuv.z, walk.instance, slot);
                 if (anyHit) return hit;
             }
         }
-#endif
     }
     return hit;
 }

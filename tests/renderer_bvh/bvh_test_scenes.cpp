@@ -96,6 +96,12 @@ TestScene makeScene(std::vector<MeshTriangles> meshes, std::vector<Placement> pl
     return scene;
 }
 
+void setLink(FlatScene& scene, std::uint32_t node, std::uint32_t first, std::uint32_t count)
+{
+    scene.nodeLinks[node].x = scene.nodeBounds[2 * node].w = first;
+    scene.nodeLinks[node].y = scene.nodeBounds[2 * node + 1].w = count;
+}
+
 Ray randomRayThrough(std::mt19937& rng, const Aabb& bounds)
 {
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);

@@ -33,6 +33,9 @@ struct TestScene {
 };
 TestScene makeScene(std::vector<MeshTriangles> meshes, std::vector<Placement> placements, int threads = 1);
 
+// Rewrites node's link (first, count) where both the link texel and the node's bounds carry it.
+void setLink(FlatScene& scene, std::uint32_t node, std::uint32_t first, std::uint32_t count);
+
 // A ray from a random point of `bounds` grown by half its size towards a random point inside it.
 Ray randomRayThrough(std::mt19937& rng, const Aabb& bounds);
 

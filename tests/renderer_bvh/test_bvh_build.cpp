@@ -10,6 +10,7 @@
 
 #include <QTest>
 
+#include <bit>
 #include <cstring>
 
 using namespace glint;
@@ -150,7 +151,7 @@ private slots:
     {
         TestScene scene = bunnyScene();
         const std::uint32_t node = someInteriorNode(scene.flat);
-        scene.flat.nodeLinks[node].x = 0;
+        setLink(scene.flat, node, 0, 0);
         const auto problem = validateFlatScene(scene.flat);
         QVERIFY(problem);
         QCOMPARE(QString::fromStdString(*problem),
@@ -161,10 +162,32 @@ private slots:
     {
         TestScene scene = bunnyScene();
         const std::uint32_t child = scene.flat.nodeLinks[0].x;
-        scene.flat.nodeBounds[2 * child + 1].x += 1.0f;
+        scene.flat.nodeBounds[2 * child + 1].x = std::bit_cast<std::uint32_t>(nodeCorner(scene.flat, 2 * child + 1).x + 1.0f);
         const auto problem = validateFlatScene(scene.flat);
         QVERIFY(problem);
         QCOMPARE(QString::fromStdString(*problem), QString("mesh 0: the box of node %1 is not inside the box of its parent 0").arg(child));
+    }
+
+    void validationCatchesBoundsCarryingAnotherLink()
+    {
+        // The shader reads a child's link from its bounds, the CPU from the link texel: they agree.
+        TestScene scene = bunnyScene();
+        const std::uint32_t node = someInteriorNode(scene.flat);
+        scene.flat.nodeBounds[2 * node].w += 2;
+        const auto problem = validateFlatScene(scene.flat);
+        QVERIFY(problem);
+        QCOMPARE(QString::fromStdString(*problem), QString("mesh 0: node %1's bounds carry another link than its link texel").arg(node));
+    }
+
+    void validationCatchesALinkBeyondWhatTheTraversalPacks()
+    {
+        TestScene scene = bunnyScene();
+        const std::uint32_t leaf = someLeaf(scene.flat, 0);
+        setLink(scene.flat, leaf, kMaxLinkFirst, 1);
+        const auto problem = validateFlatScene(scene.flat);
+        QVERIFY(problem);
+        QCOMPARE(QString::fromStdString(*problem),
+                 QString("mesh 0: node %1 links to index 134217728, beyond the 134217728 the traversal can address").arg(leaf));
     }
 
     void validationCatchesATriangleReferencedTwice()
@@ -173,8 +196,7 @@ private slots:
         TestScene scene = makeScene({copiesOfOneTriangle(100)}, {{0, glm::mat4(1.0f)}});
         const std::uint32_t first = someLeaf(scene.flat, 1);
         const std::uint32_t second = someLeaf(scene.flat, first + 1);
-        scene.flat.nodeLinks[second].x = scene.flat.nodeLinks[first].x;
-        scene.flat.nodeLinks[second].y = 1;
+        setLink(scene.flat, second, scene.flat.nodeLinks[first].x, 1);
         const auto problem = validateFlatScene(scene.flat);
         QVERIFY(problem);
         QVERIFY2(QString::fromStdString(*problem).contains(QString("triangle slot %1 is referenced twice").arg(scene.flat.nodeLinks[first].x)),

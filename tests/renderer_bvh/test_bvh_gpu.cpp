@@ -39,7 +39,7 @@ TestScene instancedBunnies()
 struct GpuBuffers {
     gl::TextureBuffer nodeBounds, nodeLinks, positions, vertices, instances;
     explicit GpuBuffers(const FlatScene& s)
-        : nodeBounds("BVH node bounds", GL_RGBA32F, s.nodeBounds.data(), s.nodeBounds.size(), 16),
+        : nodeBounds("BVH node bounds", GL_RGBA32UI, s.nodeBounds.data(), s.nodeBounds.size(), 16),
           nodeLinks("BVH node links", GL_RGBA32UI, s.nodeLinks.data(), s.nodeLinks.size(), 16),
           positions("BVH triangle positions", GL_RGBA32F, s.trianglePositions.data(), s.trianglePositions.size(), 16),
           vertices("BVH triangle vertices", GL_RGBA32UI, s.triangleVertices.data(), s.triangleVertices.size(), 16),

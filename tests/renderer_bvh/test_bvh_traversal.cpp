@@ -112,7 +112,7 @@ private slots:
         // traversal still stops after kMaxTraversalSteps nodes.
         const std::uint32_t rootChildren = scene.flat.nodeLinks[0].x;
         for (std::uint32_t n = 1; n < scene.flat.meshNodeCount; ++n)
-            if (scene.flat.nodeLinks[n].y == 0) scene.flat.nodeLinks[n].x = rootChildren;
+            if (scene.flat.nodeLinks[n].y == 0) setLink(scene.flat, n, rootChildren, 0);
         QVERIFY(validateFlatScene(scene.flat).has_value());
         const Ray ray{{-0.02f, 0.1f, -1.0f}, {0.0f, 0.0f, 1.0f}};
         (void)intersectClosest(scene.flat, ray, kFar);
