@@ -31,7 +31,9 @@
 //   always have larger indices than the node itself, so following links can never cycle.
 //
 // Triangle slots: each mesh's triangles in BVH leaf order, meshes one after another.
-//   uBvhTrianglePositions[3s + k] = (vertex k of slot s: x, y, z, 0) in mesh-local space, k = 0, 1, 2
+//   uBvhTrianglePositions[3s + k] = (vertex k of slot s: x, y, z, w) in mesh-local space, k = 0, 1, 2;
+//                                   w = 0, except the renderer's mark of the slot in texel 3s
+//                                   (renderer/gpu_scene/mesh_data.h, markCulledTriangles)
 //   uBvhTriangleVertices[s]       = (v0, v1, v2, material)
 //       v0..v2: vertex indices into the scene's vertex attribute arrays: every mesh's vertices
 //               concatenated in the order of FlatScene::meshes, and within a mesh its primitives'

@@ -82,7 +82,8 @@ void GpuMeshes::updateTransforms(const Scene& scene, const std::map<MaterialId, 
 
 void GpuMeshes::updateEmission(const Scene& scene, const std::map<MaterialId, int>& materialIndex, const TextureSet* textures) {
     if (!buffers_) return;
-    updateMeshEmission(data_, scene, materialIndex, textures);
+    if (updateMeshEmission(data_, scene, materialIndex, textures))
+        buffers_->trianglePositions.update(0, data_.flat.trianglePositions.data(), data_.flat.trianglePositions.size());
     buffers_->emissiveTriangles = upload("the emissive triangles", GL_RGBA32F, data_.lights.texels);
     buffers_->emissiveCdf = upload("the emissive CDF", GL_R32F, data_.lights.cdf);
     setCounts();

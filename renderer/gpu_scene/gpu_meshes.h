@@ -25,7 +25,8 @@ public:
     // After a transform-only change: rebuilds the top level and the emissive triangles and uploads
     // the node, instance and emissive buffers; mesh BVHs and vertex buffers stay as they are.
     void updateTransforms(const Scene& scene, const std::map<MaterialId, int>& materialIndex, const TextureSet* textures);
-    // After a material-only change: re-uploads the emissive triangles alone.
+    // After a material-only change: re-uploads the emissive triangles, and the triangle positions
+    // where a culling mark changed (mesh_data.h, markCulledTriangles).
     void updateEmission(const Scene& scene, const std::map<MaterialId, int>& materialIndex, const TextureSet* textures);
     const MeshData& data() const { return data_; }
 

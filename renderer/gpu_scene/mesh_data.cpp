@@ -142,6 +142,7 @@ MeshData buildMeshData(const Scene& scene, const std::map<MaterialId, int>& mate
     data.instances = meshInstances(scene, data.ids);
     if (data.instances.empty()) return data;
     data.flat = bvh::flattenScene(data.bvhs, bvh::buildTopLevel(data.instances, data.bvhs));
+    markCulledTriangles(data.flat, scene, materialIndex);
     data.vertexTexels = vertexTexels(scene, data.ids, texturing);
     data.lights = emissiveTriangles(scene, data, materialIndex, textures);
     return data;
@@ -164,9 +165,31 @@ void updateMeshTransforms(MeshData& data, const Scene& scene, const std::map<Mat
     data.lights = emissiveTriangles(scene, data, materialIndex, textures);
 }
 
-void updateMeshEmission(MeshData& data, const Scene& scene, const std::map<MaterialId, int>& materialIndex,
+bool updateMeshEmission(MeshData& data, const Scene& scene, const std::map<MaterialId, int>& materialIndex,
                         const TextureSet* textures) {
-    if (!data.instances.empty()) data.lights = emissiveTriangles(scene, data, materialIndex, textures);
+    if (data.instances.empty()) return false;
+    data.lights = emissiveTriangles(scene, data, materialIndex, textures);
+    return markCulledTriangles(data.flat, scene, materialIndex);
+}
+
+bool markCulledTriangles(bvh::FlatScene& flat, const Scene& scene, const std::map<MaterialId, int>& materialIndex) {
+    std::vector<float> markOf; // by the renderer's material index; indices without a material: 0
+    for (const auto& [id, index] : materialIndex) {
+        if (!scene.materials.contains(id) || index < 0) continue;
+        const Material& m = scene.materials.at(id);
+        const glm::vec3 emission = m.emissiveFactor * m.emissiveStrength;
+        if (markOf.size() <= static_cast<std::size_t>(index)) markOf.resize(static_cast<std::size_t>(index) + 1, 0.0f);
+        markOf[static_cast<std::size_t>(index)] = !m.doubleSided && std::max({emission.x, emission.y, emission.z}) <= 0.0f ? 1.0f : 0.0f;
+    }
+    bool changed = false;
+    for (std::size_t slot = 0; slot < flat.triangleVertices.size(); ++slot) {
+        const std::uint32_t material = flat.triangleVertices[slot].w;
+        const float mark = material < markOf.size() ? markOf[material] : 0.0f;
+        float& w = flat.trianglePositions[bvh::kTrianglePositionTexels * slot].w;
+        changed = changed || w != mark;
+        w = mark;
+    }
+    return changed;
 }
 
 } // namespace glint::renderer

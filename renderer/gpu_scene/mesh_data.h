@@ -64,8 +64,15 @@ MeshData validatedMeshData(const Scene& scene, const std::map<MaterialId, int>& 
 void updateMeshTransforms(MeshData& data, const Scene& scene, const std::map<MaterialId, int>& materialIndex,
                           const TextureSet* textures = nullptr);
 
-// After material content alone changed: the emissive triangles (their emission is the materials').
-void updateMeshEmission(MeshData& data, const Scene& scene, const std::map<MaterialId, int>& materialIndex,
+// After material content alone changed: the emissive triangles (their emission is the materials')
+// and the triangles' culling marks. Returns whether a mark changed (the positions need uploading).
+bool updateMeshEmission(MeshData& data, const Scene& scene, const std::map<MaterialId, int>& materialIndex,
                         const TextureSet* textures = nullptr);
+
+// Marks each triangle slot whose material is single-sided and emits nothing, whose back face camera
+// rays pass (shaders/pathtrace/triangle_filter.glsl): w = 1 in the slot's first position texel, so
+// the filter reads the mark with the position the triangle test fetched, not the material. Returns
+// whether a mark changed.
+bool markCulledTriangles(bvh::FlatScene& flat, const Scene& scene, const std::map<MaterialId, int>& materialIndex);
 
 } // namespace glint::renderer

@@ -22,6 +22,10 @@ int bvhLinkCount(int link) { return link & 15; }
 
 vec3 bvhTrianglePosition(int slot, int k) { return texelFetch(uBvhTrianglePositions, 3 * slot + k).xyz; }
 
+// The renderer's mark of a slot (bvh_layout.h): the w of its first position texel, which the
+// triangle test has fetched already.
+float bvhTriangleMark(int slot) { return texelFetch(uBvhTrianglePositions, 3 * slot).w; }
+
 // (v0, v1, v2, material): vertex indices into the scene's vertex attribute buffers.
 uvec4 bvhTriangleVertices(int slot) { return texelFetch(uBvhTriangleVertices, slot); }
 

@@ -23,20 +23,19 @@ float surfaceAlpha(int material, int slot, int instance, vec3 tuv, vec3 localDir
     return alpha;
 }
 
+// Single-sided, the triangle's mark (renderer/gpu_scene/mesh_data.h, markCulledTriangles) says
+// whether its material culls: the filter reads no material for it, only texels the triangle test
+// fetched already (llvmpipe pays for every fetch a filter holds, at every triangle test).
 bool bvhAcceptTriangle(int instance, int slot, vec3 tuv, vec3 localDirection) {
-#ifndef HAS_ALPHA
-    if (!gCullBackFaces) return true; // secondary rays of an alpha-free scene: no fetches
-#endif
-    uvec4 vertices = bvhTriangleVertices(slot);
-    int material = int(vertices.w);
-    vec4 mode = materialTexel(material, 5); // alpha mode, cutoff, double-sided
 #ifdef HAS_SINGLE_SIDED
-    if (gCullBackFaces && mode.z == 0.0 && maxComponent(materialTexel(material, 1).rgb) <= 0.0) {
+    if (gCullBackFaces && bvhTriangleMark(slot) > 0.0) {
         vec3 p0 = bvhTrianglePosition(slot, 0);
         if (dot(cross(bvhTrianglePosition(slot, 1) - p0, bvhTrianglePosition(slot, 2) - p0), localDirection) > 0.0) return false;
     }
 #endif
 #ifdef HAS_ALPHA
+    int material = int(bvhTriangleVertices(slot).w);
+    vec4 mode = materialTexel(material, 5); // alpha mode, cutoff, double-sided
     if (mode.x == 0.0) return true;
     float alpha = surfaceAlpha(material, slot, instance, tuv, localDirection);
     if (mode.x == 1.0) return alpha >= mode.y;

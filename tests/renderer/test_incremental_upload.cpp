@@ -105,6 +105,38 @@ private slots:
         compareMeshData(cached, full);
     }
 
+    // The culling marks (markCulledTriangles): the big spheres' single-sided grey is marked, the
+    // emissive glow is not. A material edit that makes the grey double-sided and switches the glow
+    // off changes both marks, as a full build of the edited scene has them; an edit that changes no
+    // sidedness reports no change.
+    void materialEditMarksTrianglesAsAFullBuild() {
+        Fixture f = makeScene(12);
+        renderer::MeshBvhCache cache;
+        const auto index = renderer::packScene(f.scene).materialIndex;
+        renderer::MeshData data = renderer::buildMeshData(f.scene, index, false, cache);
+        const auto marked = [](const renderer::MeshData& d) {
+            std::size_t count = 0;
+            for (std::size_t slot = 0; slot < d.flat.triangleVertices.size(); ++slot)
+                count += d.flat.trianglePositions[3 * slot].w == 1.0f ? 1 : 0;
+            return count;
+        };
+        const std::size_t big = f.scene.meshes.at(f.big).triangleCount();
+        const std::size_t small = f.scene.meshes.at(f.small).triangleCount();
+        QCOMPARE(marked(data), big);
+
+        const MaterialId grey = f.scene.meshes.at(f.big).primitives[0].material;
+        const MaterialId glow = f.scene.meshes.at(f.small).primitives[0].material;
+        f.scene.materials.at(grey).doubleSided = true;
+        f.scene.materials.at(glow).emissiveFactor = glm::vec3(0.0f);
+        QVERIFY(renderer::updateMeshEmission(data, f.scene, index));
+        QCOMPARE(marked(data), small);
+        renderer::MeshBvhCache fresh;
+        compareMeshData(data, renderer::buildMeshData(f.scene, index, false, fresh));
+
+        f.scene.materials.at(grey).baseColorFactor = glm::vec4(0.9f);
+        QVERIFY(!renderer::updateMeshEmission(data, f.scene, index));
+    }
+
     // Editing one mesh's vertices rebuilds that mesh's BVH only; a deleted mesh leaves the cache.
     void geometryEditRebuildsOnlyThatMesh() {
         Fixture f = makeScene(24);

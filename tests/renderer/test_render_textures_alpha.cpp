@@ -5,6 +5,9 @@
 #include "image_stats.h"
 #include "test_render_textures_scenes.h"
 
+#include "renderer/frame_renderer.h"
+#include "renderer/gl/headless_context.h"
+#include "scene/history/change_set.h"
 #include "scene/io/scene_io.h"
 
 #include <QTest>
@@ -185,6 +188,59 @@ private slots:
         const double mean = sum / onBottle;
         const double stddev = std::sqrt(std::max(sum2 / onBottle - mean * mean, 0.0));
         QVERIFY2(stddev > 0.02 && mean < 0.9, qPrintable(QString("albedo mean %1, stddev %2").arg(mean).arg(stddev)));
+    }
+
+    // 16x16, 1 spp, seed 15. The quad of singleSidedBackFacesAreCulledForCameraRays made double-sided
+    // in place (FrameRenderer::applyChangesInPlace; a second single-sided quad outside the view keeps
+    // culling compiled in, so no new variant): the triangles' culling marks follow the material, so
+    // the red ground (1e-4) gives way to the black quad, and the frame equals a full rebuild of the
+    // edited scene bit for bit. Last: it makes a context of its own current.
+    void sidednessEditedInPlaceCullsAsAFullRebuild() {
+        renderer_.reset();
+        gl::HeadlessContext context;
+        Scene scene;
+        addShape(scene, ShapeKind::GroundPlane, scene.materials.add(emitter({1.0f, 0.0f, 0.0f})), {0.0f, -1.0f, 0.0f});
+        Material single = lambert(glm::vec3(1.0f));
+        single.doubleSided = false;
+        const MaterialId edited = scene.materials.add(single);
+        const glm::quat faceDown = glm::angleAxis(kPi, glm::vec3(1.0f, 0.0f, 0.0f));
+        addNode(scene, "quad", MeshInstance{scene.meshes.add(texturedQuad(1.0f, edited))}, glm::vec3(0.0f), faceDown);
+        addNode(scene, "elsewhere", MeshInstance{scene.meshes.add(texturedQuad(1.0f, scene.materials.add(single)))},
+                glm::vec3(20.0f, 0.0f, 0.0f), faceDown);
+        addTopCamera(scene, 0.5f);
+        renderer::FrameSettings settings;
+        settings.spp = 1;
+        settings.bounces = 0;
+        settings.seed = 15;
+        settings.width = settings.height = 16;
+        settings.tonemapper = Tonemapper::None;
+        renderer::FrameRenderer frames;
+        frames.setSettings(settings);
+        frames.setCamera(renderer::resolveCamera(scene, "", 16, 16));
+        frames.setScene(scene);
+        const auto redRange = [&] {
+            frames.renderFrame();
+            const std::vector<float> radiance = frames.readImages().radiance;
+            float low = 1e9f, high = -1e9f;
+            for (std::size_t i = 0; i < radiance.size(); i += 4) low = std::min(low, radiance[i]), high = std::max(high, radiance[i]);
+            return std::pair{low, high};
+        };
+        const auto [culledLow, culledHigh] = redRange();
+        QVERIFY2(std::abs(culledLow - 1.0f) < 1e-4f && std::abs(culledHigh - 1.0f) < 1e-4f, qPrintable(QString::number(culledLow)));
+
+        scene.materials.at(edited).doubleSided = true;
+        ChangeSet change;
+        change.add(Change::Material);
+        change.materials.insert(edited);
+        QVERIFY(frames.applyChangesInPlace(scene, change));
+        frames.renderFrame();
+        const std::vector<float> inPlace = frames.readImages().radiance;
+        float brightest = 0.0f;
+        for (std::size_t i = 0; i < inPlace.size(); i += 4) brightest = std::max(brightest, inPlace[i]);
+        QVERIFY2(brightest < 1e-4f, qPrintable(QString::number(brightest)));
+        frames.setScene(scene);
+        frames.renderFrame();
+        QVERIFY2(inPlace == frames.readImages().radiance, "the frame edited in place differs from a full rebuild");
     }
 };
 
