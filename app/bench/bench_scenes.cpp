@@ -29,8 +29,10 @@ MaterialId materialOf(const Scene& scene, const std::string& nodeName) {
     return scene.meshes.at(instance->mesh).primitives.front().material;
 }
 
-void hide(Scene& scene, const std::string& nodeName) {
-    if (const auto id = scene.findByName(nodeName)) scene.setVisible(*id, false);
+// Removed, not hidden: the scene written for Blender (--write-scenes) must hold what Glint renders,
+// and Blender's importer does not read Glint's visibility flag.
+void removeNode(Scene& scene, const std::string& nodeName) {
+    if (const auto id = scene.findByName(nodeName)) scene.removeLeaf(*id);
 }
 
 } // namespace
@@ -68,8 +70,8 @@ Mesh loadObjMesh(const std::filesystem::path& file, MaterialId material) {
 }
 
 Scene bunnyRoom(Scene room, Mesh bunny, int copies) {
-    hide(room, "short_block");
-    hide(room, "tall_block");
+    removeNode(room, "short_block");
+    removeNode(room, "tall_block");
     for (Primitive& p : bunny.primitives) p.material = materialOf(room, "floor");
     glm::vec3 low(std::numeric_limits<float>::max()), high(-std::numeric_limits<float>::max());
     for (const Primitive& p : bunny.primitives)

@@ -199,7 +199,12 @@ int runRendererSuite(const SuiteOptions& o) {
     std::fprintf(stderr, "glint: GL_RENDERER: %s\n", timer.glRenderer().c_str());
     if (o.throughput) {
         std::vector<ThroughputRow> rows;
-        for (const BenchScene& s : benchScenes(loaded.scene, o.bunny)) rows.push_back(measureThroughput(timer, s, o));
+        SaveOptions glbOnly;
+        glbOnly.writeProjectFile = false;
+        for (const BenchScene& s : benchScenes(loaded.scene, o.bunny)) {
+            if (o.writeScenes) saveScene(s.scene, dir / (s.name + ".glb"), glbOnly);
+            rows.push_back(measureThroughput(timer, s, o));
+        }
         writeThroughput(dir, rows, o, timer.glRenderer());
         printThroughput(rows, o);
     }

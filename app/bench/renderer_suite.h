@@ -4,7 +4,8 @@
 // plus the Cornell box's convergence (relMSE against its own converged image over render time), with
 // Blender Cycles' curve beside it when its CSV is given (app/bench/cycles/cornell_cycles.py).
 // Writes renderer_bench.csv/.json, glint_convergence.csv, glint_reference.exr and the chart
-// convergence.png/.svg into `out`; prints the tables.
+// convergence.png/.svg into `out`, with --write-scenes also each throughput scene as <name>.glb (for
+// app/bench/cycles/cornell_cycles.py --scene); prints the tables.
 #include "shader_suite.h"
 
 #include <string>
@@ -27,6 +28,7 @@ struct SuiteOptions {
     std::string cyclesCsv;                                  // cycles_convergence.csv; empty: none
     bool lambert = false;                                   // convergence study with specularFactor 0 everywhere
     bool throughput = true;
+    bool writeScenes = false;                               // each throughput scene as OUT/<name>.glb, for Cycles
     bool convergence = true;
 };
 

@@ -36,6 +36,8 @@ std::shared_ptr<SuiteCli> addRendererSuiteOptions(CLI::App& bench) {
                      "Suite shaders: read GLSL files from this copy of shaders/ before the embedded ones (default: none)");
     bench.add_flag("!--no-throughput", o.throughput, "Suite: skip the throughput scenes");
     bench.add_flag("!--no-convergence", o.convergence, "Suite: skip the convergence study");
+    bench.add_flag("--write-scenes", o.writeScenes,
+                   "Suite: also write each throughput scene as OUT/<name>.glb, to render it with Cycles (default: off)");
     return cli;
 }
 
