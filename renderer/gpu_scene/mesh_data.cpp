@@ -172,14 +172,16 @@ bool updateMeshEmission(MeshData& data, const Scene& scene, const std::map<Mater
     return markCulledTriangles(data.flat, scene, materialIndex);
 }
 
+bool culledFromBehind(const Material& m) {
+    return !m.doubleSided && m.emissiveFactor * m.emissiveStrength == glm::vec3(0.0f);
+}
+
 bool markCulledTriangles(bvh::FlatScene& flat, const Scene& scene, const std::map<MaterialId, int>& materialIndex) {
     std::vector<float> markOf; // by the renderer's material index; indices without a material: 0
     for (const auto& [id, index] : materialIndex) {
         if (!scene.materials.contains(id) || index < 0) continue;
-        const Material& m = scene.materials.at(id);
-        const glm::vec3 emission = m.emissiveFactor * m.emissiveStrength;
         if (markOf.size() <= static_cast<std::size_t>(index)) markOf.resize(static_cast<std::size_t>(index) + 1, 0.0f);
-        markOf[static_cast<std::size_t>(index)] = !m.doubleSided && std::max({emission.x, emission.y, emission.z}) <= 0.0f ? 1.0f : 0.0f;
+        markOf[static_cast<std::size_t>(index)] = culledFromBehind(scene.materials.at(id)) ? 1.0f : 0.0f;
     }
     bool changed = false;
     for (std::size_t slot = 0; slot < flat.triangleVertices.size(); ++slot) {

@@ -69,6 +69,11 @@ void updateMeshTransforms(MeshData& data, const Scene& scene, const std::map<Mat
 bool updateMeshEmission(MeshData& data, const Scene& scene, const std::map<MaterialId, int>& materialIndex,
                         const TextureSet* textures = nullptr);
 
+// Whether camera rays pass the back faces of a mesh with this material: single-sided and emitting
+// nothing (an emitter's back face shows as unlit instead). The HAS_SINGLE_SIDED variant and the
+// triangles' culling marks both follow it.
+bool culledFromBehind(const Material& m);
+
 // Marks each triangle slot whose material is single-sided and emits nothing, whose back face camera
 // rays pass (shaders/pathtrace/triangle_filter.glsl): w = 1 in the slot's first position texel, so
 // the filter reads the mark with the position the triangle test fetched, not the material. Returns

@@ -84,7 +84,7 @@ void addMeshMaterialFeatures(const Scene& scene, SceneFeatures& features) {
     for (const MaterialId id : meshMaterials(scene)) {
         const Material m = scene.materials.contains(id) ? scene.materials.at(id) : Material{};
         if (m.alphaMode != AlphaMode::Opaque) features.alpha = true;
-        if (!m.doubleSided && m.emissiveFactor * m.emissiveStrength == glm::vec3(0.0f)) features.singleSided = true;
+        if (culledFromBehind(m)) features.singleSided = true;
     }
 }
 
