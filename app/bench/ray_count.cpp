@@ -40,11 +40,8 @@ SurfaceHit surfaceAt(const Walk& w, const bvh::Ray& ray, const bvh::RayHit& hit)
     glm::mat3 localFromWorld;
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c) localFromWorld[c][r] = glm::uintBitsToFloat(instances[base + r][c]);
-    // The instance names its mesh by the absolute node index of the mesh's BVH root.
-    const std::uint32_t root = instances[base + 3].y;
-    const auto range = std::find_if(w.data.flat.meshes.begin(), w.data.flat.meshes.end(),
-                                    [root](const bvh::FlatMeshRange& m) { return m.rootNode == root; });
-    const bvh::MeshTriangles& mesh = w.data.bvhs.at(static_cast<std::size_t>(range - w.data.flat.meshes.begin())).triangles;
+    // The instance names its mesh by its index.
+    const bvh::MeshTriangles& mesh = w.data.bvhs.at(instances[base + 3].y).triangles;
     const glm::uvec3 t = mesh.triangles.at(static_cast<std::size_t>(hit.triangle));
     const glm::vec3 local = glm::cross(mesh.positions[t.y] - mesh.positions[t.x], mesh.positions[t.z] - mesh.positions[t.x]);
     glm::vec3 n = glm::normalize(glm::transpose(localFromWorld) * local);

@@ -97,13 +97,13 @@ void ScenePicker::retarget(const Scene& scene) {
         }
     }
     const bvh::TopLevel top = bvh::buildTopLevel(std::move(instances), meshRoots_);
-    bvh::replaceTopLevel(flat_, bvh::flattenTopLevel(top, flat_.meshes, flat_.meshNodeCount));
+    bvh::replaceTopLevel(flat_, bvh::flattenTopLevel(top, flat_.meshNodeCount));
 }
 
 PickResult ScenePicker::pick(const bvh::Ray& worldRay) const {
     PickResult result;
     float tMax = INFINITY;
-    if (flat_.topLevelRoot >= 0) {
+    if (flat_.topLevel >= 0) {
         const auto shapes = [this](std::uint32_t shape, const bvh::Ray& local, float& t) { return intersectShape(shapes_.at(shape), local, t); };
         const bvh::RayHit hit = bvh::intersectClosest(flat_, worldRay, tMax, shapes);
         if (hit.hit()) {

@@ -1,5 +1,6 @@
 #include "renderer/bvh/bvh_build.h"
 
+#include "renderer/bvh/box_grid.h"
 #include "renderer/bvh/huge_pages.h"
 #include "renderer/bvh/parallel_for.h"
 #include "renderer/bvh/sah_split.h"
@@ -31,20 +32,14 @@ struct RawNode {
     std::uint32_t count;
 };
 
-bool finite(const Aabb& box)
-{
-    return std::isfinite(box.lo.x) && std::isfinite(box.lo.y) && std::isfinite(box.lo.z) &&
-           std::isfinite(box.hi.x) && std::isfinite(box.hi.y) && std::isfinite(box.hi.z);
-}
-
-// Non-finite boxes become empty ones.
+// Non-finite boxes, and those beyond what a node grid can hold, become empty ones.
 std::vector<BuildItem> buildItems(std::span<const Aabb> boxes)
 {
     std::vector<BuildItem> items;
     items.reserve(boxes.size());
     adviseHugePages(items.data(), boxes.size() * sizeof(BuildItem));
     for (std::size_t i = 0; i < boxes.size(); ++i) {
-        const Aabb box = finite(boxes[i]) ? boxes[i] : Aabb{};
+        const Aabb box = withinGridReach(boxes[i]) ? boxes[i] : Aabb{};
         items.push_back(BuildItem{box.lo, static_cast<std::uint32_t>(i), box.hi, 0u});
     }
     return items;

@@ -5,30 +5,42 @@
 //
 // Texture buffers and the sampler uniforms that read them (set their units with glUniform1i):
 //
-//   uBvhNodeBounds        usamplerBuffer  GL_RGBA32UI  2 texels per node
-//   uBvhNodeLinks         usamplerBuffer  GL_RGBA32UI  1 texel per node
+//   uBvhNodes             usamplerBuffer  GL_RGBA32UI  1 texel per node
+//   uBvhLevels            usamplerBuffer  GL_RGBA32UI  2 texels per level (each mesh BVH, the top level)
 //   uBvhTrianglePositions samplerBuffer   GL_RGBA32F   3 texels per triangle slot
 //   uBvhTriangleVertices  usamplerBuffer  GL_RGBA32UI  1 texel per triangle slot
 //   uBvhInstances         usamplerBuffer  GL_RGBA32UI  4 texels per instance
-//   uBvhTopLevelRoot      int             index of the top-level root node; -1: no instances
+//   uBvhTopLevel          int             the top level's level index; -1: no instances
 //
-// Nodes (both levels share the node buffers). Mesh BVHs come first, one after another in the order
-// of FlatScene::meshes; the top level follows them, starting at node index topLevelRoot =
-// (number of mesh BVH nodes). Moving an object rewrites only the top-level tail of the two node
-// buffers and the instance buffer (flattenTopLevel()); the mesh part keeps its bytes.
+// Nodes (both levels share the node buffer). Mesh BVHs come first, one after another in the order
+// of FlatScene::meshes; the top level follows them, starting at node index meshNodeCount. Moving an
+// object rewrites only the top-level tail of the node buffer, the top level's two level texels and
+// the instance buffer (flattenTopLevel()); the mesh part keeps its bytes.
 //
-//   uBvhNodeBounds[2n + 0] = (min.x, min.y, min.z, first)   node n's box as float bits, in its
-//   uBvhNodeBounds[2n + 1] = (max.x, max.y, max.z, count)   level's space (mesh: the mesh's local
-//                            space; top: world), and its link: testing a child's box reads the
-//                            child's link with it, so the walk needs no fetch of its own for it
-//   uBvhNodeLinks[n]       = (first, count, 0, 0)            the same link, for the roots
+//   uBvhNodes[n] = (lo.x | hi.x << 16, lo.y | hi.y << 16, lo.z | hi.z << 16, link)
+//       The node's box on its level's grid (renderer/bvh/box_grid.h): 16-bit grid coordinates,
+//       lo rounded down and hi up, so the box a walk tests always holds the exact one. A box
+//       corner in the level's space is origin + float(q) * scale (the level texels below); scale
+//       is a power of two, so that sum is the only rounding and the CPU computes it to the bit.
+//       link = (first << 4) | count, packed, so testing a child's box reads the child's link too
+//       and a walk step fetches one texel per child:
 //       count == 0: an interior node; its two children are the nodes `first` and `first + 1`
-//                   (siblings are always adjacent, so one fetch range reads both children's boxes).
+//                   (siblings are always adjacent, so one fetch range reads both children).
 //       count > 0 : a leaf.
 //                   mesh level: triangle slots first .. first + count - 1 (count <= kMaxLeafTriangles)
 //                   top level : exactly one instance, count == 1, `first` is the instance index.
 //   All indices are absolute (already offset for the mesh's place in the buffers). A node's children
 //   always have larger indices than the node itself, so following links can never cycle.
+//
+// Levels: mesh i is level i (the order of FlatScene::meshes), the top level is level meshes.size().
+//   uBvhLevels[2l + 0] = (origin.x, origin.y, origin.z, root link)  origin as float bits: the
+//                        root's exact lower corner in the level's space (mesh: the mesh's local
+//                        space; top: world); root link packed as above
+//   uBvhLevels[2l + 1] = (scale.x, scale.y, scale.z, root)  scale as float bits, each a power of
+//                        two with origin + 65535 * scale >= the root's upper corner; root: the
+//                        root's absolute node index (a walk tests the top level's root box first)
+//   An empty mesh has origin 0, scale 1, a root link of 0 and its would-be root index (no instance
+//   may use it).
 //
 // Triangle slots: each mesh's triangles in BVH leaf order, meshes one after another.
 //   uBvhTrianglePositions[3s + k] = (vertex k of slot s: x, y, z, w) in mesh-local space, k = 0, 1, 2;
@@ -52,7 +64,7 @@
 //                           n.z*row2.xyz (the transpose of localFromWorld), then normalised.
 //   uBvhInstances[4i + 3] = (kind, target, objectId, flags)
 //       kind   : kInstanceMesh (0) or kInstanceShape (1)
-//       target : mesh: the absolute node index of that mesh's BVH root;
+//       target : mesh: the mesh's index in FlatScene::meshes, which is its level;
 //                shape: the shape's index in the renderer's shape table (the traversal calls the
 //                includer's hook for it; see shaders/bvh/traverse.glsl)
 //       objectId: the scene node id (for the object-id output and picking)
@@ -67,8 +79,8 @@
 
 namespace glint::bvh {
 
-inline constexpr int kNodeBoundsTexels = 2;
-inline constexpr int kNodeLinkTexels = 1;
+inline constexpr int kNodeTexels = 1;
+inline constexpr int kLevelTexels = 2;
 inline constexpr int kTrianglePositionTexels = 3;
 inline constexpr int kTriangleVertexTexels = 1;
 inline constexpr int kInstanceTexels = 4;
@@ -90,11 +102,11 @@ inline constexpr int kStackSize = 64;
 inline constexpr int kMaxTraversalSteps = 8192;
 
 // Names of the sampler uniforms, for the renderer's glGetUniformLocation calls.
-inline constexpr const char* kNodeBoundsUniform = "uBvhNodeBounds";
-inline constexpr const char* kNodeLinksUniform = "uBvhNodeLinks";
+inline constexpr const char* kNodesUniform = "uBvhNodes";
+inline constexpr const char* kLevelsUniform = "uBvhLevels";
 inline constexpr const char* kTrianglePositionsUniform = "uBvhTrianglePositions";
 inline constexpr const char* kTriangleVerticesUniform = "uBvhTriangleVertices";
 inline constexpr const char* kInstancesUniform = "uBvhInstances";
-inline constexpr const char* kTopLevelRootUniform = "uBvhTopLevelRoot";
+inline constexpr const char* kTopLevelUniform = "uBvhTopLevel";
 
 } // namespace glint::bvh

@@ -19,8 +19,8 @@ struct BufferSize {
 std::optional<std::string> checkTextureBufferSizes(const FlatScene& scene, std::int64_t maxTexels)
 {
     const BufferSize buffers[] = {
-        {kNodeBoundsUniform, scene.nodeBounds.size(), scene.nodeLinks.size(), "nodes"},
-        {kNodeLinksUniform, scene.nodeLinks.size(), scene.nodeLinks.size(), "nodes"},
+        {kNodesUniform, scene.nodes.size(), scene.nodes.size(), "nodes"},
+        {kLevelsUniform, scene.levels.size(), scene.levels.size() / kLevelTexels, "meshes and the top level"},
         {kTrianglePositionsUniform, scene.trianglePositions.size(), scene.triangleVertices.size(), "triangles"},
         {kTriangleVerticesUniform, scene.triangleVertices.size(), scene.triangleVertices.size(), "triangles"},
         {kInstancesUniform, scene.instances.size(), scene.instances.size() / kInstanceTexels, "instances"},

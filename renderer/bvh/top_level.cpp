@@ -1,5 +1,6 @@
 #include "renderer/bvh/top_level.h"
 
+#include "renderer/bvh/box_grid.h"
 #include "renderer/bvh/bvh_layout.h"
 #include "renderer/bvh/mesh_bvh.h"
 
@@ -10,8 +11,7 @@ namespace {
 
 bool hittable(const Aabb& box)
 {
-    return !box.empty() && std::isfinite(box.lo.x) && std::isfinite(box.lo.y) && std::isfinite(box.lo.z) &&
-           std::isfinite(box.hi.x) && std::isfinite(box.hi.y) && std::isfinite(box.hi.z);
+    return !box.empty() && withinGridReach(box);
 }
 
 Aabb localBounds(const Instance& instance, const std::vector<MeshBvh>& meshes)

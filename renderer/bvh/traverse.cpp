@@ -14,21 +14,24 @@ constexpr float kMissed = std::numeric_limits<float>::infinity();
 // touches (Ize, "Robust BVH Ray Traversal", JCGT 2013).
 constexpr float kFarWidening = 1.0f + 2.0f * 3.0f * std::numeric_limits<float>::epsilon();
 
+// A level's ray for box tests: the grid its node boxes are on comes with it.
 struct BoxRay {
     glm::vec3 origin;
     glm::vec3 inverseDirection;
+    BoxGrid grid;
 };
 
-BoxRay boxRay(const Ray& ray)
+BoxRay boxRay(const FlatScene& scene, std::uint32_t level, const Ray& ray)
 {
-    return {ray.origin, 1.0f / ray.direction};
+    return {ray.origin, 1.0f / ray.direction, levelGrid(scene, level)};
 }
 
 // Where the ray enters node's box within [0, tMax], or kMissed. A NaN slab constrains nothing.
 float boxEntry(const FlatScene& scene, std::uint32_t node, const BoxRay& ray, float tMax)
 {
-    const glm::vec3 t0 = (nodeCorner(scene, 2 * node) - ray.origin) * ray.inverseDirection;
-    const glm::vec3 t1 = (nodeCorner(scene, 2 * node + 1) - ray.origin) * ray.inverseDirection;
+    const Aabb box = nodeBox(scene, ray.grid, node);
+    const glm::vec3 t0 = (box.lo - ray.origin) * ray.inverseDirection;
+    const glm::vec3 t1 = (box.hi - ray.origin) * ray.inverseDirection;
     float nearT = 0.0f;
     float farT = tMax;
     for (int axis = 0; axis < 3; ++axis) {
@@ -68,9 +71,10 @@ void walkScene(const FlatScene& scene, const Ray& worldRay, float& tMax, OnTrian
 {
     TraversalCost unused;
     TraversalCost& counted = cost ? *cost : unused;
-    if (scene.topLevelRoot < 0) return;
-    const auto topRoot = static_cast<std::uint32_t>(scene.topLevelRoot);
-    const BoxRay worldBox = boxRay(worldRay);
+    if (scene.topLevel < 0) return;
+    const auto top = static_cast<std::uint32_t>(scene.topLevel);
+    const BoxRay worldBox = boxRay(scene, top, worldRay);
+    const std::uint32_t topRoot = levelRootNode(scene, top);
     const float rootNear = boxEntry(scene, topRoot, worldBox, tMax);
     if (rootNear == kMissed) return;
     std::uint32_t stackNode[kTraversalStack];
@@ -102,7 +106,7 @@ void walkScene(const FlatScene& scene, const Ray& worldRay, float& tMax, OnTrian
         node = -1;
         if (nodeNear > tMax) continue;
         ++counted.nodes;
-        const glm::uvec4 link = scene.nodeLinks[current];
+        const glm::uvec2 link = nodeLink(scene, current);
         if (link.y > 0 && instance >= 0) {
             for (std::uint32_t slot = link.x; slot < link.x + link.y; ++slot) {
                 TriangleHit hit;
@@ -124,9 +128,9 @@ void walkScene(const FlatScene& scene, const Ray& worldRay, float& tMax, OnTrian
             }
             // The mesh's root comes next without a box test of its own, as in the shader.
             meshMark = size;
-            node = info.y;
+            node = levelRootNode(scene, info.y);
             instance = link.x;
-            box = boxRay(local);
+            box = boxRay(scene, info.y, local);
             triangleRay = prepareWatertight(local);
             continue;
         }

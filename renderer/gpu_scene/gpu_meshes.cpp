@@ -10,7 +10,7 @@
 namespace glint::renderer {
 
 struct GpuMeshes::Buffers {
-    gl::TextureBuffer nodeBounds, nodeLinks, trianglePositions, triangleVertices, instances;
+    gl::TextureBuffer nodes, levels, trianglePositions, triangleVertices, instances;
     gl::TextureBuffer vertexNormals, emissiveTriangles, emissiveCdf;
 };
 
@@ -49,7 +49,7 @@ GpuMeshes::GpuMeshes(MeshData data) : data_(std::move(data)) {
     const bvh::FlatScene& flat = data_.flat;
     checkSizes(flat); // validated on the CPU already (validatedMeshData), off the GL thread
     buffers_ = std::make_unique<Buffers>(Buffers{
-        upload("uBvhNodeBounds", GL_RGBA32UI, flat.nodeBounds), upload("uBvhNodeLinks", GL_RGBA32UI, flat.nodeLinks),
+        upload("uBvhNodes", GL_RGBA32UI, flat.nodes), upload("uBvhLevels", GL_RGBA32UI, flat.levels),
         upload("uBvhTrianglePositions", GL_RGBA32F, flat.trianglePositions),
         upload("uBvhTriangleVertices", GL_RGBA32UI, flat.triangleVertices), upload("uBvhInstances", GL_RGBA32UI, flat.instances),
         upload("the vertex attributes", GL_RGBA32F, data_.vertexTexels),
@@ -64,14 +64,14 @@ void GpuMeshes::updateTransforms(const Scene& scene, const std::map<MaterialId, 
     const bool hadEmitters = !data_.lights.texels.empty();
     updateMeshTransforms(data_, scene, materialIndex, textures);
     // The mesh trees did not change (validated when they were prepared): only the top level is
-    // checked and rewritten, after the mesh nodes in the node buffers (glBufferSubData). Checking
-    // and re-sending every mesh node cost 100 ms per gizmo-drag frame on 1.1 M unique triangles.
+    // checked and rewritten, after the mesh nodes and levels in their buffers (glBufferSubData).
+    // Checking and re-sending every mesh node cost 100 ms per gizmo-drag frame on 1.1 M unique triangles.
     checkTopLevel(data_.flat);
     checkSizes(data_.flat);
     Buffers& b = *buffers_;
     const std::size_t meshNodes = data_.flat.meshNodeCount;
-    replaceTail(b.nodeBounds, "uBvhNodeBounds", GL_RGBA32UI, data_.flat.nodeBounds, bvh::kNodeBoundsTexels * meshNodes);
-    replaceTail(b.nodeLinks, "uBvhNodeLinks", GL_RGBA32UI, data_.flat.nodeLinks, meshNodes);
+    replaceTail(b.nodes, "uBvhNodes", GL_RGBA32UI, data_.flat.nodes, bvh::kNodeTexels * meshNodes);
+    replaceTail(b.levels, "uBvhLevels", GL_RGBA32UI, data_.flat.levels, bvh::kLevelTexels * data_.flat.meshes.size());
     replaceTail(b.instances, "uBvhInstances", GL_RGBA32UI, data_.flat.instances, 0);
     if (hadEmitters || !data_.lights.texels.empty()) {
         b.emissiveTriangles = upload("the emissive triangles", GL_RGBA32F, data_.lights.texels);
@@ -91,7 +91,7 @@ void GpuMeshes::updateEmission(const Scene& scene, const std::map<MaterialId, in
 
 void GpuMeshes::setCounts() {
     triangleCount_ = data_.flat.trianglePositions.size() / bvh::kTrianglePositionTexels;
-    topLevelRoot_ = data_.flat.topLevelRoot;
+    topLevel_ = data_.flat.topLevel;
     emissiveCount_ = data_.lights.count();
     emissivePower_ = data_.lights.totalPower;
 }
@@ -99,15 +99,15 @@ void GpuMeshes::setCounts() {
 void GpuMeshes::bind(const gl::ShaderProgram& program, GLuint firstUnit) const {
     if (!buffers_) return;
     const Buffers& b = *buffers_;
-    b.nodeBounds.bind(firstUnit + 0, program.uniform(bvh::kNodeBoundsUniform));
-    b.nodeLinks.bind(firstUnit + 1, program.uniform(bvh::kNodeLinksUniform));
+    b.nodes.bind(firstUnit + 0, program.uniform(bvh::kNodesUniform));
+    b.levels.bind(firstUnit + 1, program.uniform(bvh::kLevelsUniform));
     b.trianglePositions.bind(firstUnit + 2, program.uniform(bvh::kTrianglePositionsUniform));
     b.triangleVertices.bind(firstUnit + 3, program.uniform(bvh::kTriangleVerticesUniform));
     b.instances.bind(firstUnit + 4, program.uniform(bvh::kInstancesUniform));
     b.vertexNormals.bind(firstUnit + 5, program.uniform("uVertexNormals"));
     b.emissiveTriangles.bind(firstUnit + 6, program.uniform("uEmissiveTriangles"));
     b.emissiveCdf.bind(firstUnit + 7, program.uniform("uEmissiveCdf"));
-    glUniform1i(program.uniform(bvh::kTopLevelRootUniform), topLevelRoot_);
+    glUniform1i(program.uniform(bvh::kTopLevelUniform), topLevel_);
     glUniform1i(program.uniform("uEmissiveCount"), emissiveCount_);
     glUniform1f(program.uniform("uEmissivePower"), emissivePower_);
 }

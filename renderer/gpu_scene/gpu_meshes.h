@@ -42,7 +42,7 @@ private:
     MeshData data_;
     std::unique_ptr<Buffers> buffers_;
     std::size_t triangleCount_ = 0;
-    int topLevelRoot_ = -1;
+    int topLevel_ = -1;
     int emissiveCount_ = 0;
     float emissivePower_ = 0.0f;
 };

@@ -161,7 +161,7 @@ void updateMeshTransforms(MeshData& data, const Scene& scene, const std::map<Mat
     data.instances = meshInstances(scene, data.ids);
     if (data.instances.empty()) return;
     const bvh::TopLevel topLevel = bvh::buildTopLevel(data.instances, data.bvhs);
-    bvh::replaceTopLevel(data.flat, bvh::flattenTopLevel(topLevel, data.flat.meshes, data.flat.meshNodeCount));
+    bvh::replaceTopLevel(data.flat, bvh::flattenTopLevel(topLevel, data.flat.meshNodeCount));
     data.lights = emissiveTriangles(scene, data, materialIndex, textures);
 }
 

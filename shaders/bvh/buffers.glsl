@@ -1,11 +1,11 @@
 // The flattened two-level BVH: texture buffers and fetch helpers. Layout, texel by texel, in
 // renderer/bvh/bvh_layout.h (the contract with renderer/bvh/flatten.cpp).
-uniform usamplerBuffer uBvhNodeBounds;        // RGBA32UI, 2 texels per node: (min, first), (max, count)
-uniform usamplerBuffer uBvhNodeLinks;         // RGBA32UI, 1 texel per node: (first, count, 0, 0)
+uniform usamplerBuffer uBvhNodes;             // RGBA32UI, 1 texel per node: grid box (lo | hi << 16), link
+uniform usamplerBuffer uBvhLevels;            // RGBA32UI, 2 texels per level: (origin, root link), (scale, 0)
 uniform samplerBuffer uBvhTrianglePositions;  // RGBA32F, 3 texels per triangle slot
 uniform usamplerBuffer uBvhTriangleVertices;  // RGBA32UI, 1 texel per slot: (v0, v1, v2, material)
 uniform usamplerBuffer uBvhInstances;         // RGBA32UI, 4 texels per instance
-uniform int uBvhTopLevelRoot;                 // -1: no instances
+uniform int uBvhTopLevel;                     // the top level's level index; -1: no instances
 
 const int BVH_STACK_SIZE = 64;      // kStackSize: per level (the shared stack holds two levels)
 const int BVH_MAX_STEPS = 8192;     // kMaxTraversalSteps: over both levels, so a NaN ray ends
@@ -13,10 +13,22 @@ const uint BVH_INSTANCE_MESH = 0u;
 const uint BVH_INSTANCE_SHAPE = 1u;
 const uint BVH_INSTANCE_MIRRORED = 1u;
 
-uvec4 bvhNodeLink(int node) { return texelFetch(uBvhNodeLinks, node); }
+// A level's grid (renderer/bvh/box_grid.h: a node's box corner is origin + float(q) * scale), its
+// root's link and its root's node index.
+struct BvhLevel {
+    vec3 gridOrigin;
+    vec3 gridScale;
+    int root;
+    int rootNode;
+};
 
-// A node's link packed into one int, (first << 4) | count (renderer/bvh/bvh_layout.h, kMaxLinkFirst).
-int bvhPackLink(uint first, uint count) { return int((first << 4u) | count); }
+BvhLevel bvhLevel(int level) {
+    uvec4 origin = texelFetch(uBvhLevels, 2 * level);
+    uvec4 scale = texelFetch(uBvhLevels, 2 * level + 1);
+    return BvhLevel(uintBitsToFloat(origin.xyz), uintBitsToFloat(scale.xyz), int(origin.w), int(scale.w));
+}
+
+// Links are packed into one int, (first << 4) | count (renderer/bvh/bvh_layout.h, kMaxLinkFirst).
 int bvhLinkFirst(int link) { return link >> 4; }
 int bvhLinkCount(int link) { return link & 15; }
 

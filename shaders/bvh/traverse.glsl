@@ -51,13 +51,22 @@ void bvhLocalRay(int instance, vec3 origin, vec3 direction, out vec3 localOrigin
     }
 }
 
+// One level's ray, and the grid its node boxes are on.
+struct BvhLevelRay {
+    vec3 origin;
+    vec3 direction;
+    vec3 inverse;
+    vec3 gridOrigin;
+    vec3 gridScale;
+};
+
 // One walk over both levels with one stack: a top-level leaf (an instance) pushes its mesh's root
 // above the top-level entries and switches to the mesh-local ray; when the stack falls back to that
 // mark, the walk is at the top level again. Nearer child first; anyHit: stop at the first hit. The
 // node to visit next (the nearer child, a mesh's root) stays in the walk; only farther children are
 // pushed (run-time indexed stack accesses are gathers and scatters across llvmpipe's SIMD lanes).
-// Nodes are handled by their packed links, read with their boxes, so a step fetches its children's
-// boxes and nothing else.
+// Nodes are handled by their packed links, each in one texel with its grid box, so a step fetches
+// one texel per child and nothing else.
 //
 // Interior nodes and leaves take turns ("while-while", Aila and Laine 2009): bvhDescend walks
 // interior nodes until every lane stands at a leaf or has finished, then each lane at a leaf tests
@@ -74,9 +83,7 @@ struct BvhWalk {
     int size;       // stack entries
     int instance;   // the mesh instance being walked; -1 at the top level
     int meshMark;   // stack size below the mesh's entries
-    vec3 rayOrigin; // the current level's ray
-    vec3 rayDirection;
-    vec3 rayInverse;
+    BvhLevelRay ray; // the current level's
     int steps;
     int leaf;       // the packed link of the leaf the walk stands at; -1: none
 };
@@ -89,15 +96,13 @@ float bvhStackNear[BVH_TRAVERSAL_STACK];
 // Descends interior nodes, nearer child first, taking the next node from the stack where there is
 // none, until the walk stands at a leaf or has nothing left (or has run out of steps). A walk already
 // at a leaf stays there.
-void bvhDescend(inout BvhWalk walk, vec3 worldOrigin, vec3 worldDirection, vec3 worldInverse, float tMax) {
+void bvhDescend(inout BvhWalk walk, BvhLevelRay worldRay, float tMax) {
     while (walk.leaf < 0 && (walk.next >= 0 || walk.size > 0)) {
         if (++walk.steps > BVH_MAX_STEPS) break;
         if (walk.next < 0) {
             if (walk.instance >= 0 && walk.size == walk.meshMark) {
                 walk.instance = -1;
-                walk.rayOrigin = worldOrigin;
-                walk.rayDirection = worldDirection;
-                walk.rayInverse = worldInverse;
+                walk.ray = worldRay;
             }
             --walk.size;
             walk.next = bvhStackLink[walk.size];
@@ -114,8 +119,8 @@ void bvhDescend(inout BvhWalk walk, vec3 worldOrigin, vec3 worldDirection, vec3 
         int left = bvhLinkFirst(link);
         int leftLink;
         int rightLink;
-        float nearLeft = bvhBoxEntry(left, walk.rayOrigin, walk.rayInverse, tMax, leftLink);
-        float nearRight = bvhBoxEntry(left + 1, walk.rayOrigin, walk.rayInverse, tMax, rightLink);
+        float nearLeft = bvhBoxEntry(left, walk.ray.gridOrigin, walk.ray.gridScale, walk.ray.origin, walk.ray.inverse, tMax, leftLink);
+        float nearRight = bvhBoxEntry(left + 1, walk.ray.gridOrigin, walk.ray.gridScale, walk.ray.origin, walk.ray.inverse, tMax, rightLink);
         bool leftFirst = nearLeft <= nearRight || nearRight < 0.0;
         // The farther child waits on the stack; the nearer one is visited next, at once if a leaf.
         float farNear = leftFirst ? nearRight : nearLeft;
@@ -140,15 +145,16 @@ void bvhDescend(inout BvhWalk walk, vec3 worldOrigin, vec3 worldDirection, vec3 
 
 BvhHit bvhTraverse(vec3 origin, vec3 direction, float tMax, bool anyHit) {
     BvhHit hit = bvhNoHit(tMax);
-    if (uBvhTopLevelRoot < 0) return hit;
-    vec3 worldInverse = 1.0 / direction;
+    if (uBvhTopLevel < 0) return hit;
+    BvhLevel top = bvhLevel(uBvhTopLevel);
+    BvhLevelRay worldRay = BvhLevelRay(origin, direction, 1.0 / direction, top.gridOrigin, top.gridScale);
     int rootLink;
-    float rootNear = bvhBoxEntry(uBvhTopLevelRoot, origin, worldInverse, hit.t, rootLink);
+    float rootNear = bvhBoxEntry(top.rootNode, top.gridOrigin, top.gridScale, origin, worldRay.inverse, hit.t, rootLink);
     if (rootNear < 0.0) return hit;
-    BvhWalk walk = BvhWalk(rootLink, rootNear, 0, -1, 0, origin, direction, worldInverse, 0, -1);
+    BvhWalk walk = BvhWalk(rootLink, rootNear, 0, -1, 0, worldRay, 0, -1);
     BvhWatertightRay triangleRay = bvhPrepareWatertight(origin, direction);
     while (true) {
-        bvhDescend(walk, origin, direction, worldInverse, hit.t);
+        bvhDescend(walk, worldRay, hit.t);
         if (walk.leaf < 0) break; // nothing left, or out of steps
         if (walk.instance < 0) {
             int leafInstance = bvhLinkFirst(walk.leaf);
@@ -160,13 +166,11 @@ BvhHit bvhTraverse(vec3 origin, vec3 direction, float tMax, bool anyHit) {
             if (info.x == BVH_INSTANCE_MESH) {
                 // The mesh's root comes next without a box test of its own: the instance's box, just
                 // entered, bounds it, and the root's children are tested as usual.
-                uvec4 rootLink = bvhNodeLink(int(info.y));
+                BvhLevel mesh = bvhLevel(int(info.y));
                 walk.meshMark = walk.size;
-                walk.next = bvhPackLink(rootLink.x, rootLink.y);
+                walk.next = mesh.root;
                 walk.instance = leafInstance;
-                walk.rayOrigin = localOrigin;
-                walk.rayDirection = localDirection;
-                walk.rayInverse = 1.0 / localDirection;
+                walk.ray = BvhLevelRay(localOrigin, localDirection, 1.0 / localDirection, mesh.gridOrigin, mesh.gridScale);
                 triangleRay = bvhPrepareWatertight(localOrigin, localDirection);
             }
 #ifdef BVH_SHAPE_INSTANCES
@@ -180,7 +184,7 @@ BvhHit bvhTraverse(vec3 origin, vec3 direction, float tMax, bool anyHit) {
             }
 #endif
         }
-        bvhDescend(walk, origin, direction, worldInverse, hit.t); // into the mesh just entered
+        bvhDescend(walk, worldRay, hit.t); // into the mesh just entered
         if (walk.leaf < 0 || walk.instance < 0) continue; // a top-level leaf waits for the next pass
         int first = bvhLinkFirst(walk.leaf);
         int end = first + bvhLinkCount(walk.leaf);
@@ -191,7 +195,7 @@ BvhHit bvhTraverse(vec3 origin, vec3 direction, float tMax, bool anyHit) {
             if (bvhIntersectTriangle(triangleRay, bvhTrianglePosition(slot, 0), bvhTrianglePosition(slot, 1),
                                      bvhTrianglePosition(slot, 2), hit.t, tuv)) {
 #ifdef BVH_TRIANGLE_FILTER
-                if (!bvhAcceptTriangle(walk.instance, slot, tuv, walk.rayDirection)) continue;
+                if (!bvhAcceptTriangle(walk.instance, slot, tuv, walk.ray.direction)) continue;
 #endif
                 hit = BvhHit(tuv.x, tuv.y, tuv.z, walk.instance, slot);
                 if (anyHit) return hit;

@@ -69,10 +69,10 @@ private slots:
             renderer::PreparedScene there;
             std::thread worker([&] { there = prepare(); });
             worker.join();
-            QVERIFY(!here.meshes.flat.nodeBounds.empty());
+            QVERIFY(!here.meshes.flat.nodes.empty());
             const auto& a = here.meshes.flat;
             const auto& b = there.meshes.flat;
-            QVERIFY(a.nodeBounds == b.nodeBounds && a.nodeLinks == b.nodeLinks && a.topLevelRoot == b.topLevelRoot);
+            QVERIFY(a.nodes == b.nodes && a.levels == b.levels && a.topLevel == b.topLevel);
             QVERIFY(a.trianglePositions == b.trianglePositions && a.triangleVertices == b.triangleVertices && a.instances == b.instances);
             QVERIFY(here.meshes.vertexTexels == there.meshes.vertexTexels);
             QVERIFY(here.packed.shapes == there.packed.shapes && here.packed.materials == there.packed.materials &&

@@ -85,7 +85,7 @@ int main(int argc, char** argv) {
     const Flat flat = flatten(scene);
     const renderer::CameraSetup camera = renderer::resolveCamera(scene, "", size, size);
     std::printf("%s: %zu instances, %zu nodes (%u in mesh BVHs), %zu triangle slots\n", file.c_str(), flat.names.size(),
-                flat.scene.nodeLinks.size(), flat.scene.meshNodeCount, flat.scene.trianglePositions.size() / 3);
+                flat.scene.nodes.size(), flat.scene.meshNodeCount, flat.scene.trianglePositions.size() / 3);
     std::mt19937 random(1); // fixed: the figures repeat
     std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
     Tally primary, bounce, bounceMiss;

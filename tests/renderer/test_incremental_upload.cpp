@@ -62,11 +62,11 @@ void moveTo(Scene& scene, NodeId id, glm::vec3 position) {
 }
 
 void compareMeshData(const renderer::MeshData& a, const renderer::MeshData& b) {
-    QCOMPARE(a.flat.topLevelRoot, b.flat.topLevelRoot);
+    QCOMPARE(a.flat.topLevel, b.flat.topLevel);
     QCOMPARE(a.flat.meshNodeCount, b.flat.meshNodeCount);
     QVERIFY(sameBytes(a.flat.slotTriangle, b.flat.slotTriangle));
-    QVERIFY(sameBytes(a.flat.nodeBounds, b.flat.nodeBounds));
-    QVERIFY(sameBytes(a.flat.nodeLinks, b.flat.nodeLinks));
+    QVERIFY(sameBytes(a.flat.nodes, b.flat.nodes));
+    QVERIFY(sameBytes(a.flat.levels, b.flat.levels));
     QVERIFY(sameBytes(a.flat.instances, b.flat.instances));
     QVERIFY(sameBytes(a.flat.trianglePositions, b.flat.trianglePositions));
     QVERIFY(sameBytes(a.flat.triangleVertices, b.flat.triangleVertices));

@@ -98,8 +98,9 @@ TestScene makeScene(std::vector<MeshTriangles> meshes, std::vector<Placement> pl
 
 void setLink(FlatScene& scene, std::uint32_t node, std::uint32_t first, std::uint32_t count)
 {
-    scene.nodeLinks[node].x = scene.nodeBounds[2 * node].w = first;
-    scene.nodeLinks[node].y = scene.nodeBounds[2 * node + 1].w = count;
+    scene.nodes[node].w = packLink(glm::uvec2(first, count));
+    for (std::size_t mesh = 0; mesh < scene.meshes.size(); ++mesh)
+        if (scene.meshes[mesh].rootNode == node) scene.levels[kLevelTexels * mesh].w = scene.nodes[node].w;
 }
 
 Ray randomRayThrough(std::mt19937& rng, const Aabb& bounds)

@@ -12,6 +12,7 @@
 
 #include <bit>
 #include <cstring>
+#include <random>
 
 using namespace glint;
 using namespace glint::bvh;
@@ -27,9 +28,9 @@ bool sameBytes(const std::vector<T>& a, const std::vector<T>& b)
 
 bool sameBytes(const FlatScene& a, const FlatScene& b)
 {
-    return sameBytes(a.nodeBounds, b.nodeBounds) && sameBytes(a.nodeLinks, b.nodeLinks) &&
-           sameBytes(a.trianglePositions, b.trianglePositions) && sameBytes(a.triangleVertices, b.triangleVertices) &&
-           sameBytes(a.instances, b.instances) && a.topLevelRoot == b.topLevelRoot && sameBytes(a.slotTriangle, b.slotTriangle);
+    return sameBytes(a.nodes, b.nodes) && sameBytes(a.levels, b.levels) && sameBytes(a.trianglePositions, b.trianglePositions) &&
+           sameBytes(a.triangleVertices, b.triangleVertices) && sameBytes(a.instances, b.instances) && a.topLevel == b.topLevel &&
+           sameBytes(a.slotTriangle, b.slotTriangle);
 }
 
 TestScene bunnyScene(int threads = 1)
@@ -53,14 +54,14 @@ MeshTriangles copiesOfOneTriangle(int count)
 std::uint32_t someInteriorNode(const FlatScene& scene)
 {
     for (std::uint32_t n = 1; n < scene.meshNodeCount; ++n)
-        if (scene.nodeLinks[n].y == 0) return n;
+        if (nodeLink(scene, n).y == 0) return n;
     return 0;
 }
 
 std::uint32_t someLeaf(const FlatScene& scene, std::uint32_t after)
 {
     for (std::uint32_t n = after; n < scene.meshNodeCount; ++n)
-        if (scene.nodeLinks[n].y > 0) return n;
+        if (nodeLink(scene, n).y > 0) return n;
     return 0;
 }
 
@@ -95,7 +96,7 @@ private slots:
         const TestScene one = makeScene({bunny}, {{0, glm::mat4(1.0f)}}, 1);
         const TestScene four = makeScene({bunny}, {{0, glm::mat4(1.0f)}}, 4);
         const TestScene three = makeScene({bunny}, {{0, glm::mat4(1.0f)}}, 3);
-        QVERIFY(one.flat.nodeLinks.size() > 1000);
+        QVERIFY(one.flat.nodes.size() > 1000);
         QVERIFY(sameBytes(one.flat, four.flat));
         QVERIFY(sameBytes(one.flat, three.flat));
         QVERIFY(one.meshes[0].bvh == four.meshes[0].bvh);
@@ -160,34 +161,84 @@ private slots:
 
     void validationCatchesAChildBoxOutsideItsParent()
     {
+        // The root's first child shrunk to one grid point: its own children no longer fit in it.
         TestScene scene = bunnyScene();
-        const std::uint32_t child = scene.flat.nodeLinks[0].x;
-        scene.flat.nodeBounds[2 * child + 1].x = std::bit_cast<std::uint32_t>(nodeCorner(scene.flat, 2 * child + 1).x + 1.0f);
+        const std::uint32_t parent = nodeLink(scene.flat, 0).x;
+        QCOMPARE(nodeLink(scene.flat, parent).y, 0u);
+        const GridBox box = unpackGridBox(glm::uvec3(scene.flat.nodes[parent]));
+        const glm::uvec3 point = packGridBox(GridBox{box.lo, box.lo});
+        scene.flat.nodes[parent] = glm::uvec4(point, scene.flat.nodes[parent].w);
         const auto problem = validateFlatScene(scene.flat);
         QVERIFY(problem);
-        QCOMPARE(QString::fromStdString(*problem), QString("mesh 0: the box of node %1 is not inside the box of its parent 0").arg(child));
+        QCOMPARE(QString::fromStdString(*problem), QString("mesh 0: the box of node %1 is not inside the box of its parent %2")
+                                                       .arg(nodeLink(scene.flat, parent).x)
+                                                       .arg(parent));
     }
 
-    void validationCatchesBoundsCarryingAnotherLink()
+    void gridBoxesHoldTheirBoxesAndNoMore()
     {
-        // The shader reads a child's link from its bounds, the CPU from the link texel: they agree.
-        TestScene scene = bunnyScene();
-        const std::uint32_t node = someInteriorNode(scene.flat);
-        scene.flat.nodeBounds[2 * node].w += 2;
-        const auto problem = validateFlatScene(scene.flat);
-        QVERIFY(problem);
-        QCOMPARE(QString::fromStdString(*problem), QString("mesh 0: node %1's bounds carry another link than its link texel").arg(node));
+        // Roots around the origin, far from it and tiny, huge, and flat: every quantised box holds
+        // its box, and one grid step inwards on any side would cut into it.
+        const Aabb roots[] = {{{-1, -1, -1}, {1, 1, 1}},
+                              {{1000.0f, 1000.0f, -5e-4f}, {1000.001f, 1000.01f, 5e-4f}},
+                              {{-3e37f, -1.0f, 0.0f}, {5e37f, 1.0f, 0.0f}},
+                              {{0.1f, 0.1f, 0.1f}, {0.1f, 0.3f, 0.5f}}};
+        std::mt19937 rng(7u);
+        std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+        for (const Aabb& root : roots) {
+            const BoxGrid grid = gridAround(root);
+            QVERIFY(grid.origin == root.lo);
+            for (int i = 0; i < 2000; ++i) {
+                Aabb box;
+                for (int corner = 0; corner < 2; ++corner) {
+                    const glm::vec3 t{unit(rng), unit(rng), unit(rng)};
+                    box.grow(glm::clamp(root.lo + t * (root.hi - root.lo), root.lo, root.hi));
+                }
+                if (i == 0) box = root;
+                const std::optional<GridBox> q = quantize(grid, box);
+                QVERIFY(q);
+                QVERIFY(dequantize(grid, *q).contains(box));
+                for (int axis = 0; axis < 3; ++axis) {
+                    if (q->lo[axis] < kGridMax) QVERIFY(gridPoint(grid, q->lo + 1u)[axis] > box.lo[axis]);
+                    if (q->hi[axis] > 0) QVERIFY(gridPoint(grid, q->hi - 1u)[axis] < box.hi[axis]);
+                }
+                const GridBox unpacked = unpackGridBox(packGridBox(*q));
+                QVERIFY(unpacked.lo == q->lo && unpacked.hi == q->hi);
+            }
+        }
+        const BoxGrid unit1 = gridAround(roots[0]);
+        QVERIFY(!quantize(unit1, Aabb{{0, 0, 0}, {4, 0, 0}})); // the grid spans [-1, 3) on each axis
+        QVERIFY(quantize(unit1, Aabb{})->hi == glm::uvec3(0)); // empty: the origin point
+        QVERIFY(!withinGridReach(Aabb{{0, 0, 0}, {1e38f, 0, 0}}));
     }
 
-    void validationCatchesALinkBeyondWhatTheTraversalPacks()
+    void validationCatchesALevelThatDisagreesWithItsRoot()
     {
+        // The shader enters a mesh at its level texel's root link, the CPU at its root node: they agree.
         TestScene scene = bunnyScene();
-        const std::uint32_t leaf = someLeaf(scene.flat, 0);
-        setLink(scene.flat, leaf, kMaxLinkFirst, 1);
+        scene.flat.levels[0].w += 16;
         const auto problem = validateFlatScene(scene.flat);
         QVERIFY(problem);
-        QCOMPARE(QString::fromStdString(*problem),
-                 QString("mesh 0: node %1 links to index 134217728, beyond the 134217728 the traversal can address").arg(leaf));
+        QCOMPARE(*problem, std::string("mesh 0: its level texels and its root node 0 disagree"));
+    }
+
+    void validationCatchesAGridThatIsNotPowersOfTwo()
+    {
+        // A grid step that is not a power of two rounds its products differently on other hardware.
+        TestScene scene = bunnyScene();
+        const float scale = std::bit_cast<float>(scene.flat.levels[1].x);
+        scene.flat.levels[1].x = std::bit_cast<std::uint32_t>(scale * 1.5f);
+        const auto problem = validateFlatScene(scene.flat);
+        QVERIFY(problem);
+        QCOMPARE(*problem, std::string("mesh 0: its box grid is not a finite origin with power-of-two steps"));
+    }
+
+    void linksPastWhatTheTraversalPacksAreRefused()
+    {
+        QCOMPARE(checkLinkReach(kMaxLinkFirst, 1, 1), std::optional<std::string>{});
+        QCOMPARE(checkLinkReach(1, kMaxLinkFirst + 1, 1),
+                 std::optional<std::string>("the scene needs links to index 134217728, beyond the 134217728 the traversal can address"));
+        QVERIFY(checkLinkReach(1, 1, std::size_t{kMaxLinkFirst} * 2).has_value());
     }
 
     void validationCatchesATriangleReferencedTwice()
@@ -196,20 +247,20 @@ private slots:
         TestScene scene = makeScene({copiesOfOneTriangle(100)}, {{0, glm::mat4(1.0f)}});
         const std::uint32_t first = someLeaf(scene.flat, 1);
         const std::uint32_t second = someLeaf(scene.flat, first + 1);
-        setLink(scene.flat, second, scene.flat.nodeLinks[first].x, 1);
+        setLink(scene.flat, second, nodeLink(scene.flat, first).x, 1);
         const auto problem = validateFlatScene(scene.flat);
         QVERIFY(problem);
-        QVERIFY2(QString::fromStdString(*problem).contains(QString("triangle slot %1 is referenced twice").arg(scene.flat.nodeLinks[first].x)),
+        QVERIFY2(QString::fromStdString(*problem).contains(QString("triangle slot %1 is referenced twice").arg(nodeLink(scene.flat, first).x)),
                  problem->c_str());
     }
 
     void validationCatchesAnInstanceWithoutAMesh()
     {
         TestScene scene = bunnyScene();
-        scene.flat.instances[3].y = 1; // node 1 is not a mesh root
+        scene.flat.instances[3].y = 1; // the scene has one mesh
         const auto problem = validateFlatScene(scene.flat);
         QVERIFY(problem);
-        QCOMPARE(*problem, std::string("instance 0: node 1 is not the root of a mesh BVH"));
+        QCOMPARE(*problem, std::string("instance 0: mesh 1 does not exist or has no triangles"));
     }
 
     void sizeCheckNamesTheBufferThatDoesNotFit()
@@ -218,9 +269,9 @@ private slots:
         QCOMPARE(checkTextureBufferSizes(scene.flat, 134217728), std::optional<std::string>{});
         const auto problem = checkTextureBufferSizes(scene.flat, 65536);
         QVERIFY(problem);
-        const std::size_t nodes = scene.flat.nodeLinks.size();
-        const std::string expected = nodes * 2 > 65536
-            ? "BVH buffer uBvhNodeBounds needs " + std::to_string(2 * nodes) + " texels but GL_MAX_TEXTURE_BUFFER_SIZE is 65536 (" +
+        const std::size_t nodes = scene.flat.nodes.size();
+        const std::string expected = nodes > 65536
+            ? "BVH buffer uBvhNodes needs " + std::to_string(nodes) + " texels but GL_MAX_TEXTURE_BUFFER_SIZE is 65536 (" +
                   std::to_string(nodes) + " nodes)"
             : "BVH buffer uBvhTrianglePositions needs " + std::to_string(scene.flat.trianglePositions.size()) +
                   " texels but GL_MAX_TEXTURE_BUFFER_SIZE is 65536 (" + std::to_string(scene.flat.triangleVertices.size()) + " triangles)";
@@ -235,12 +286,12 @@ private slots:
         std::vector<Instance> moved = scene.topLevel.instances;
         moved[1].worldFromLocal = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -3.0f));
         const TopLevel top = buildTopLevel(moved, scene.meshes);
-        replaceTopLevel(scene.flat, flattenTopLevel(top, scene.flat.meshes, scene.flat.meshNodeCount));
+        replaceTopLevel(scene.flat, flattenTopLevel(top, scene.flat.meshNodeCount));
 
         QVERIFY(sameBytes(scene.flat, flattenScene(scene.meshes, top)));
         const std::size_t meshNodes = scene.flat.meshNodeCount;
-        QVERIFY(std::equal(before.nodeLinks.begin(), before.nodeLinks.begin() + meshNodes, scene.flat.nodeLinks.begin()));
-        QVERIFY(std::memcmp(before.nodeBounds.data(), scene.flat.nodeBounds.data(), 2 * meshNodes * sizeof(glm::vec4)) == 0);
+        QVERIFY(std::memcmp(before.nodes.data(), scene.flat.nodes.data(), meshNodes * sizeof(glm::uvec4)) == 0);
+        QVERIFY(std::memcmp(before.levels.data(), scene.flat.levels.data(), kLevelTexels * scene.flat.meshes.size() * sizeof(glm::uvec4)) == 0);
         QVERIFY(sameBytes(before.trianglePositions, scene.flat.trianglePositions));
         QVERIFY(!sameBytes(before.instances, scene.flat.instances));
         QCOMPARE(validateFlatScene(scene.flat), std::optional<std::string>{});

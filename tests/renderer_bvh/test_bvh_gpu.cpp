@@ -37,10 +37,10 @@ TestScene instancedBunnies()
 }
 
 struct GpuBuffers {
-    gl::TextureBuffer nodeBounds, nodeLinks, positions, vertices, instances;
+    gl::TextureBuffer nodes, levels, positions, vertices, instances;
     explicit GpuBuffers(const FlatScene& s)
-        : nodeBounds("BVH node bounds", GL_RGBA32UI, s.nodeBounds.data(), s.nodeBounds.size(), 16),
-          nodeLinks("BVH node links", GL_RGBA32UI, s.nodeLinks.data(), s.nodeLinks.size(), 16),
+        : nodes("BVH nodes", GL_RGBA32UI, s.nodes.data(), s.nodes.size(), 16),
+          levels("BVH levels", GL_RGBA32UI, s.levels.data(), s.levels.size(), 16),
           positions("BVH triangle positions", GL_RGBA32F, s.trianglePositions.data(), s.trianglePositions.size(), 16),
           vertices("BVH triangle vertices", GL_RGBA32UI, s.triangleVertices.data(), s.triangleVertices.size(), 16),
           instances("BVH instances", GL_RGBA32UI, s.instances.data(), s.instances.size(), 16)
@@ -48,8 +48,8 @@ struct GpuBuffers {
     }
     void bind(const gl::ShaderProgram& program) const
     {
-        nodeBounds.bind(0, program.uniform(kNodeBoundsUniform));
-        nodeLinks.bind(1, program.uniform(kNodeLinksUniform));
+        nodes.bind(0, program.uniform(kNodesUniform));
+        levels.bind(1, program.uniform(kLevelsUniform));
         positions.bind(2, program.uniform(kTrianglePositionsUniform));
         vertices.bind(3, program.uniform(kTriangleVerticesUniform));
         instances.bind(4, program.uniform(kInstancesUniform));
@@ -87,7 +87,7 @@ private slots:
         buffers.bind(program);
         originBuffer.bind(5, program.uniform("uRayOrigins"));
         directionBuffer.bind(6, program.uniform("uRayDirections"));
-        glUniform1i(program.uniform(kTopLevelRootUniform), scene.flat.topLevelRoot);
+        glUniform1i(program.uniform(kTopLevelUniform), scene.flat.topLevel);
         glUniform1i(program.uniform("uRayQueryWidth"), kSize);
         target.bindForDrawing();
         gl::FullscreenTriangle().draw();

@@ -110,9 +110,9 @@ private slots:
         TestScene scene = makeScene({loadBunny()}, {{0, glm::mat4(1.0f)}});
         // Every interior node points back at the root's children: validation refuses this; the
         // traversal still stops after kMaxTraversalSteps nodes.
-        const std::uint32_t rootChildren = scene.flat.nodeLinks[0].x;
+        const std::uint32_t rootChildren = nodeLink(scene.flat, 0).x;
         for (std::uint32_t n = 1; n < scene.flat.meshNodeCount; ++n)
-            if (scene.flat.nodeLinks[n].y == 0) setLink(scene.flat, n, rootChildren, 0);
+            if (nodeLink(scene.flat, n).y == 0) setLink(scene.flat, n, rootChildren, 0);
         QVERIFY(validateFlatScene(scene.flat).has_value());
         const Ray ray{{-0.02f, 0.1f, -1.0f}, {0.0f, 0.0f, 1.0f}};
         (void)intersectClosest(scene.flat, ray, kFar);
