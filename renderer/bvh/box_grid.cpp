@@ -19,10 +19,15 @@ float axisPoint(float origin, float scale, std::uint32_t q)
     return origin + static_cast<float>(q) * scale;
 }
 
-// The smallest power of two whose kGridMax steps from lo reach hi, as the float sum computes it.
+// The smallest power of two whose kGridMax steps from lo reach hi, as the float sum computes it,
+// and no finer than the floats there: one step then always moves a grid point, so quantize()'s
+// estimate is off by a step at most. (A flat axis at 2.5 had steps of 2^-126 that moved nothing,
+// and each box took 65,535 passes to round.)
 float axisScale(float lo, float hi)
 {
     int exponent = kMinScaleExponent;
+    const float largest = std::max(std::abs(lo), std::abs(hi));
+    if (largest > 0.0f) exponent = std::max(exponent, std::ilogb(largest) - 23); // its ulp
     const double step = (static_cast<double>(hi) - lo) / kGridMax;
     if (step > 0.0) exponent = std::max(exponent, std::ilogb(step));
     while (exponent < kMaxScaleExponent && axisPoint(lo, std::ldexp(1.0f, exponent), kGridMax) < hi) ++exponent;

@@ -11,6 +11,7 @@
 #include <QTest>
 
 #include <bit>
+#include <cmath>
 #include <cstring>
 #include <random>
 
@@ -182,7 +183,8 @@ private slots:
         const Aabb roots[] = {{{-1, -1, -1}, {1, 1, 1}},
                               {{1000.0f, 1000.0f, -5e-4f}, {1000.001f, 1000.01f, 5e-4f}},
                               {{-3e37f, -1.0f, 0.0f}, {5e37f, 1.0f, 0.0f}},
-                              {{0.1f, 0.1f, 0.1f}, {0.1f, 0.3f, 0.5f}}};
+                              {{0.1f, 0.1f, 0.1f}, {0.1f, 0.3f, 0.5f}},
+                              {{2.5f, -1000.0f, 0.0f}, {2.5f, -1000.0f, 1.0f}}};
         std::mt19937 rng(7u);
         std::uniform_real_distribution<float> unit(0.0f, 1.0f);
         for (const Aabb& root : roots) {
@@ -206,6 +208,11 @@ private slots:
                 QVERIFY(unpacked.lo == q->lo && unpacked.hi == q->hi);
             }
         }
+        // A flat axis away from the origin: one grid point holds it, and it rounds at once.
+        const BoxGrid flat = gridAround(roots[4]);
+        QVERIFY(flat.scale.x >= std::nextafter(2.5f, 3.0f) - 2.5f);
+        const GridBox flatBox = *quantize(flat, roots[4]);
+        QVERIFY(flatBox.lo.x == 0u && flatBox.hi.x == 0u && flatBox.lo.y == 0u && flatBox.hi.y == 0u);
         const BoxGrid unit1 = gridAround(roots[0]);
         QVERIFY(!quantize(unit1, Aabb{{0, 0, 0}, {4, 0, 0}})); // the grid spans [-1, 3) on each axis
         QVERIFY(quantize(unit1, Aabb{})->hi == glm::uvec3(0)); // empty: the origin point
