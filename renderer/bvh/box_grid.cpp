@@ -9,11 +9,6 @@ namespace {
 constexpr int kMinScaleExponent = -126; // the smallest normal float: q * scale stays exact
 constexpr int kMaxScaleExponent = 111;  // kGridMax * 2^111 is still finite
 
-bool finite(const glm::vec3& p)
-{
-    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-}
-
 float axisPoint(float origin, float scale, std::uint32_t q)
 {
     return origin + static_cast<float>(q) * scale;
@@ -63,7 +58,7 @@ bool withinGridReach(const Aabb& box)
 BoxGrid gridAround(const Aabb& root)
 {
     BoxGrid grid;
-    if (root.empty() || !finite(root.lo) || !finite(root.hi)) return grid;
+    if (root.empty() || !withinGridReach(root)) return grid;
     grid.origin = root.lo;
     for (int axis = 0; axis < 3; ++axis) grid.scale[axis] = axisScale(root.lo[axis], root.hi[axis]);
     return grid;
@@ -72,7 +67,7 @@ BoxGrid gridAround(const Aabb& root)
 std::optional<GridBox> quantize(const BoxGrid& grid, const Aabb& box)
 {
     if (box.empty()) return GridBox{};
-    if (!finite(box.lo) || !finite(box.hi)) return std::nullopt;
+    if (!withinGridReach(box)) return std::nullopt;
     GridBox out;
     for (int axis = 0; axis < 3; ++axis) {
         const auto q = quantizeAxis(grid.origin[axis], grid.scale[axis], box.lo[axis], box.hi[axis]);

@@ -31,12 +31,12 @@ struct GridBox {
     glm::uvec3 hi{0};
 };
 
-// The finest grid whose span holds `root`, with `root.lo` at q = 0; an empty or non-finite root
-// gets the unit grid at 0.
+// The finest grid whose span holds `root`, with `root.lo` at q = 0; an empty root, or one beyond
+// kGridReach (non-finite ones included), gets the unit grid at 0.
 BoxGrid gridAround(const Aabb& root);
 
-// `box` rounded outwards to the grid, or nullopt where it reaches beyond the grid's span. An empty
-// box becomes the grid's origin point.
+// `box` rounded outwards to the grid, or nullopt where it reaches beyond the grid's span or beyond
+// kGridReach. An empty box becomes the grid's origin point.
 std::optional<GridBox> quantize(const BoxGrid& grid, const Aabb& box);
 
 glm::vec3 gridPoint(const BoxGrid& grid, glm::uvec3 q);

@@ -37,11 +37,11 @@ struct Level {
     std::uint32_t maxLeaf;
 };
 
-using LeafCheck = std::function<Problem(std::uint32_t node, glm::uvec2 link)>;
+// `box`: the leaf's box as a walk tests it.
+using LeafCheck = std::function<Problem(std::uint32_t node, glm::uvec2 link, const Aabb& box)>;
 
-Problem checkGrid(const FlatScene& scene, const Level& level)
+Problem checkGrid(const FlatScene& scene, const Level& level, const BoxGrid& grid)
 {
-    const BoxGrid grid = levelGrid(scene, level.index);
     if (!withinGridReach(Aabb{grid.origin, grid.origin}) || !powerOfTwo(grid.scale.x) || !powerOfTwo(grid.scale.y) ||
         !powerOfTwo(grid.scale.z))
         return message(level.name, ": its box grid is not a finite origin with power-of-two steps");
@@ -56,8 +56,8 @@ Problem checkTree(const FlatScene& scene, const Level& level, const LeafCheck& c
 {
     if (level.root < level.firstNode || level.root >= level.endNode)
         return message(level.name, ": root node ", level.root, " is outside its nodes [", level.firstNode, ", ", level.endNode, ")");
-    if (Problem problem = checkGrid(scene, level)) return problem;
     const BoxGrid grid = levelGrid(scene, level.index);
+    if (Problem problem = checkGrid(scene, level, grid)) return problem;
     std::vector<std::pair<std::uint32_t, int>> pending{{level.root, 1}};
     while (!pending.empty()) {
         const auto [node, depth] = pending.back();
@@ -68,7 +68,7 @@ Problem checkTree(const FlatScene& scene, const Level& level, const LeafCheck& c
             if (link.y > level.maxLeaf) return message(level.name, ": leaf node ", node, " holds ", link.y, " items (at most ", level.maxLeaf, ")");
             if (link.x < level.firstItem || link.x + link.y > level.endItem || link.x + link.y < link.x)
                 return message(level.name, ": leaf node ", node, " references items outside [", level.firstItem, ", ", level.endItem, ")");
-            if (Problem problem = checkLeaf(node, link)) return problem;
+            if (Problem problem = checkLeaf(node, link, nodeBox(scene, grid, node))) return problem;
             continue;
         }
         if (link.x <= node || link.x + 1 >= level.endNode)
@@ -98,12 +98,9 @@ Problem checkMesh(const FlatScene& scene, std::size_t meshIndex, std::vector<boo
     const FlatMeshRange& mesh = scene.meshes[meshIndex];
     if (mesh.triangleCount == 0) return std::nullopt;
     const std::string name = message("mesh ", meshIndex);
-    const auto index = static_cast<std::uint32_t>(meshIndex);
-    const Level level{name.c_str(), index, mesh.rootNode, mesh.rootNode, mesh.rootNode + mesh.nodeCount,
+    const Level level{name.c_str(), static_cast<std::uint32_t>(meshIndex), mesh.rootNode, mesh.rootNode, mesh.rootNode + mesh.nodeCount,
                       mesh.firstSlot, mesh.firstSlot + mesh.triangleCount, kMaxLeafTriangles};
-    const BoxGrid grid = levelGrid(scene, index);
-    Problem problem = checkTree(scene, level, [&](std::uint32_t node, glm::uvec2 link) -> Problem {
-        const Aabb box = nodeBox(scene, grid, node);
+    Problem problem = checkTree(scene, level, [&](std::uint32_t node, glm::uvec2 link, const Aabb& box) -> Problem {
         for (std::uint32_t slot = link.x; slot < link.x + link.y; ++slot) {
             if (slotSeen[slot]) return message(name, ": triangle slot ", slot, " is referenced twice");
             slotSeen[slot] = true;
@@ -146,7 +143,7 @@ Problem checkTopLevel(const FlatScene& scene)
     std::vector<bool> seen(instanceCount, false);
     const Level level{"top level", static_cast<std::uint32_t>(scene.topLevel), scene.meshNodeCount, scene.meshNodeCount,
                       static_cast<std::uint32_t>(scene.nodes.size()), 0, instanceCount, 1};
-    Problem problem = checkTree(scene, level, [&](std::uint32_t, glm::uvec2 link) -> Problem {
+    Problem problem = checkTree(scene, level, [&](std::uint32_t, glm::uvec2 link, const Aabb&) -> Problem {
         if (seen[link.x]) return message("top level: instance ", link.x, " is referenced twice");
         seen[link.x] = true;
         return checkInstance(scene, link.x);

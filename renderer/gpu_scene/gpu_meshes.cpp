@@ -49,7 +49,7 @@ GpuMeshes::GpuMeshes(MeshData data) : data_(std::move(data)) {
     const bvh::FlatScene& flat = data_.flat;
     checkSizes(flat); // validated on the CPU already (validatedMeshData), off the GL thread
     buffers_ = std::make_unique<Buffers>(Buffers{
-        upload("uBvhNodes", GL_RGBA32UI, flat.nodes), upload("uBvhLevels", GL_RGBA32UI, flat.levels),
+        upload(bvh::kNodesUniform, GL_RGBA32UI, flat.nodes), upload(bvh::kLevelsUniform, GL_RGBA32UI, flat.levels),
         upload("uBvhTrianglePositions", GL_RGBA32F, flat.trianglePositions),
         upload("uBvhTriangleVertices", GL_RGBA32UI, flat.triangleVertices), upload("uBvhInstances", GL_RGBA32UI, flat.instances),
         upload("the vertex attributes", GL_RGBA32F, data_.vertexTexels),
@@ -70,8 +70,8 @@ void GpuMeshes::updateTransforms(const Scene& scene, const std::map<MaterialId, 
     checkSizes(data_.flat);
     Buffers& b = *buffers_;
     const std::size_t meshNodes = data_.flat.meshNodeCount;
-    replaceTail(b.nodes, "uBvhNodes", GL_RGBA32UI, data_.flat.nodes, bvh::kNodeTexels * meshNodes);
-    replaceTail(b.levels, "uBvhLevels", GL_RGBA32UI, data_.flat.levels, bvh::kLevelTexels * data_.flat.meshes.size());
+    replaceTail(b.nodes, bvh::kNodesUniform, GL_RGBA32UI, data_.flat.nodes, bvh::kNodeTexels * meshNodes);
+    replaceTail(b.levels, bvh::kLevelsUniform, GL_RGBA32UI, data_.flat.levels, bvh::kLevelTexels * data_.flat.meshes.size());
     replaceTail(b.instances, "uBvhInstances", GL_RGBA32UI, data_.flat.instances, 0);
     if (hadEmitters || !data_.lights.texels.empty()) {
         b.emissiveTriangles = upload("the emissive triangles", GL_RGBA32F, data_.lights.texels);

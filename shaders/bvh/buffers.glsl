@@ -1,7 +1,7 @@
 // The flattened two-level BVH: texture buffers and fetch helpers. Layout, texel by texel, in
 // renderer/bvh/bvh_layout.h (the contract with renderer/bvh/flatten.cpp).
 uniform usamplerBuffer uBvhNodes;             // RGBA32UI, 1 texel per node: grid box (lo | hi << 16), link
-uniform usamplerBuffer uBvhLevels;            // RGBA32UI, 2 texels per level: (origin, root link), (scale, 0)
+uniform usamplerBuffer uBvhLevels;            // RGBA32UI, 2 texels per level: (origin, root link), (scale, root)
 uniform samplerBuffer uBvhTrianglePositions;  // RGBA32F, 3 texels per triangle slot
 uniform usamplerBuffer uBvhTriangleVertices;  // RGBA32UI, 1 texel per slot: (v0, v1, v2, material)
 uniform usamplerBuffer uBvhInstances;         // RGBA32UI, 4 texels per instance
