@@ -285,7 +285,7 @@ struct FrameRenderer::State {
         const int n = t.stillMean.sampleCount();
         const int cap = settings.maxSamples > 0 ? settings.maxSamples : std::numeric_limits<int>::max();
         if (adaptive() && adaptiveTestDue(n, adaptiveMinSamples(settings.adaptive, cap)))
-            t.adaptive.test(t.stillMean.mean(), t.stillMean.next(), n, settings.adaptive.threshold);
+            t.adaptive.test(t.stillMean.mean(), t.stillMean.next(), n, settings.adaptive);
     }
     // Sample `index` of the still mean into `target`, but for stopped pixels where `culled`.
     void traceStillSample(const PathTraceSettings& pt, std::uint32_t index, const gl::RenderTarget& target, bool culled) {

@@ -2360,6 +2360,18 @@
         <source>Portal to</source>
         <translation>Portal zu</translation>
     </message>
+    <message>
+        <source>Adaptive goal</source>
+        <translation>Adaptives Ziel</translation>
+    </message>
+    <message>
+        <source>Even noise (as Cycles)</source>
+        <translation>Gleichmäßiges Rauschen (wie Cycles)</translation>
+    </message>
+    <message>
+        <source>Least mean error</source>
+        <translation>Geringster mittlerer Fehler</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::RecoveryBar</name>

@@ -2360,6 +2360,18 @@
         <source>Portal to</source>
         <translation>Portal hacia</translation>
     </message>
+    <message>
+        <source>Adaptive goal</source>
+        <translation>Objetivo adaptativo</translation>
+    </message>
+    <message>
+        <source>Even noise (as Cycles)</source>
+        <translation>Ruido uniforme (como Cycles)</translation>
+    </message>
+    <message>
+        <source>Least mean error</source>
+        <translation>Error medio mínimo</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::RecoveryBar</name>

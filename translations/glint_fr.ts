@@ -2360,6 +2360,18 @@
         <source>Portal to</source>
         <translation>Portail vers</translation>
     </message>
+    <message>
+        <source>Adaptive goal</source>
+        <translation>Objectif adaptatif</translation>
+    </message>
+    <message>
+        <source>Even noise (as Cycles)</source>
+        <translation>Bruit uniforme (comme Cycles)</translation>
+    </message>
+    <message>
+        <source>Least mean error</source>
+        <translation>Erreur moyenne minimale</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::RecoveryBar</name>

@@ -2360,6 +2360,18 @@
         <source>Portal to</source>
         <translation>Portale verso</translation>
     </message>
+    <message>
+        <source>Adaptive goal</source>
+        <translation>Obiettivo adattivo</translation>
+    </message>
+    <message>
+        <source>Even noise (as Cycles)</source>
+        <translation>Rumore uniforme (come Cycles)</translation>
+    </message>
+    <message>
+        <source>Least mean error</source>
+        <translation>Errore medio minimo</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::RecoveryBar</name>

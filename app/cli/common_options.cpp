@@ -69,8 +69,13 @@ void addCommonRenderOptions(CLI::App& cmd, CommonRenderOptions& o) {
         ->check(finiteIn(0.0, 1.0));
     cmd.add_option("--adaptive-min-spp", o.adaptiveMinSpp,
                    "Adaptive sampling: samples every pixel takes before its first test, 0 = automatic "
-                   "(16 / threshold^0.3) (default: the project's, 0)")
+                   "(even: 16 / threshold^0.3; mean: 16) (default: the project's, 0)")
         ->check(CLI::Range(0, 1 << 20));
+    cmd.add_option("--adaptive-goal", o.adaptiveGoal,
+                   "Adaptive sampling's goal: even (every pixel's noise below the threshold, as Cycles) or mean (the "
+                   "least mean error for the samples taken: an 8x8 tile stops once one more sample would lower its "
+                   "relMSE by less than threshold^2) (default: the project's, even)")
+        ->check(CLI::IsMember(std::vector<std::string>{adaptiveGoalName(AdaptiveGoal::Even), adaptiveGoalName(AdaptiveGoal::Mean)}));
     cmd.add_flag("--bloom-exr", o.bloomLinear, "Bloom the EXR's radiance too (default: off, EXR stays unbloomed)");
     cmd.add_flag("--require-gpu", o.requireGpu, "Fail instead of falling back to software rendering (default: off)");
     cmd.add_flag("--strict", o.strict, "Treat warnings as failures (default: off)");

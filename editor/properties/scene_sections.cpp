@@ -200,6 +200,10 @@ PropertyForm* makeRenderForm(Document& document, const Report& report, QWidget* 
         PropertyForm::tr("Adaptive minimum samples (0 = automatic)"), 0, 1 << 20,
         [&scene] { return scene.settings.render.adaptive.minSamples; },
         [edit](int v) { edit([&](ProjectSettings& s) { s.render.adaptive.minSamples = v; }, 0); });
+    form->addChoice(
+        PropertyForm::tr("Adaptive goal"), {PropertyForm::tr("Even noise (as Cycles)"), PropertyForm::tr("Least mean error")},
+        [&scene] { return static_cast<int>(scene.settings.render.adaptive.goal); },
+        [edit](int i) { edit([&](ProjectSettings& s) { s.render.adaptive.goal = static_cast<AdaptiveGoal>(i); }, 0); });
     form->addFloat(
         PropertyForm::tr("Motion blur shutter (frames, 0 = off)"), 0.0, 1.0, 2, [&scene] { return double(scene.settings.render.shutter); },
         [edit](double v, std::uint64_t i) { edit([&](ProjectSettings& s) { s.render.shutter = float(v); }, i); });

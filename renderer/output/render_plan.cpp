@@ -108,6 +108,7 @@ RenderPlan planRender(const Scene& scene, const std::filesystem::path& sceneFile
     r.motionSeconds = frameSeconds;
     r.adaptive.threshold = o.adaptiveThreshold.value_or(project.adaptive.threshold);
     r.adaptive.minSamples = o.adaptiveMinSpp.value_or(project.adaptive.minSamples);
+    r.adaptive.goal = o.adaptiveGoal ? parseAdaptiveGoal(*o.adaptiveGoal).value_or(AdaptiveGoal::Even) : project.adaptive.goal;
 
     const Tonemapper tonemapper = r.tonemapper.value_or(project.tonemapper);
     // The camera's own exposure is part of what the PNG shows and what `glint encode` applies to EXRs.
@@ -132,6 +133,7 @@ RenderPlan planRender(const Scene& scene, const std::filesystem::path& sceneFile
     if (r.adaptive.threshold > 0.0f && traitsOf(r.configuration).accumulate) { // as bloom; the minimum as resolved
         plan.metadata["adaptiveThreshold"] = shortest(r.adaptive.threshold);
         plan.metadata["adaptiveMinSpp"] = std::to_string(adaptiveMinSamples(r.adaptive, r.spp));
+        if (r.adaptive.goal != AdaptiveGoal::Even) plan.metadata["adaptiveGoal"] = adaptiveGoalName(r.adaptive.goal); // as bloom
     }
     if (const Fog& fog = scene.settings.fog; fog.enabled()) // as bloom: only when on
         plan.metadata["fog"] = "density=" + shortest(fog.density) + " color=" + shortest(fog.color.x) + "," +

@@ -38,6 +38,7 @@ struct RenderOverrides {
     std::optional<float> shutter;       // motion blur, frames the shutter is open (0 off to 1); unset: the project's
     std::optional<float> adaptiveThreshold; // adaptive sampling's noise threshold, 0 (off) to 1; unset: the project's
     std::optional<int> adaptiveMinSpp;      // samples before its first test, 0 = automatic; unset: the project's
+    std::optional<std::string> adaptiveGoal; // "even" or "mean" (scene/core/settings.h); unset: the project's
 };
 
 struct RenderPlan {

@@ -25,9 +25,10 @@ gl::Texture makeStopTexture(int width, int height) {
 } // namespace
 
 int adaptiveMinSamples(const AdaptiveSampling& settings, int spp) {
-    const int automatic = settings.threshold > 0.0f
-                              ? static_cast<int>(std::ceil(16.0 / std::pow(double(settings.threshold), 0.3)))
-                              : spp;
+    // Mean's thresholds are far below Even's for the same image (its rule divides by n), so Cycles'
+    // formula would hold every tile to hundreds of samples; its estimate needs only a few.
+    const auto cyclesMinimum = [&] { return static_cast<int>(std::ceil(16.0 / std::pow(double(settings.threshold), 0.3))); };
+    const int automatic = settings.threshold <= 0.0f ? spp : settings.goal == AdaptiveGoal::Mean ? 16 : cyclesMinimum();
     const int wanted = settings.minSamples > 0 ? settings.minSamples : automatic;
     return std::clamp(wanted, std::min(2, spp), std::max(spp, 1));
 }
@@ -75,10 +76,10 @@ void AdaptiveSamplingPass::reset(const PixelRect& traced) {
     stopped_ = 0;
 }
 
-void AdaptiveSamplingPass::test(const gl::RenderTarget& mean, const gl::RenderTarget& next, int samples, float threshold) {
+void AdaptiveSamplingPass::test(const gl::RenderTarget& mean, const gl::RenderTarget& next, int samples, const AdaptiveSampling& settings) {
     if (samples < 2 || allStopped()) return;
     const SavedDepthState depth = SavedDepthState::current();
-    markConvergedTiles(mean, samples, threshold);
+    markConvergedTiles(mean, samples, settings);
     static_assert(radianceSquaredAttachment == 7);
     const gl::ShaderProgram& program = programs_.get(
         {"fullscreen.vert.glsl", "passes/adaptive_test.frag.glsl", {}, {"out0", "out1", "out2", "out3", "out4", "out5", "out6", "out7"}});
@@ -102,15 +103,18 @@ void AdaptiveSamplingPass::test(const gl::RenderTarget& mean, const gl::RenderTa
     depth.restore();
 }
 
-// The first stage: tiles_ holds 1 where a tile's pixels have all converged. Every tile is tested
-// (the caller's scissor counts full-size pixels, not tiles); the second stage reads the traced ones.
-void AdaptiveSamplingPass::markConvergedTiles(const gl::RenderTarget& mean, int samples, float threshold) {
-    const gl::ShaderProgram& program = programs_.get({"fullscreen.vert.glsl", "passes/adaptive_tiles.frag.glsl", {}, {"outTile"}});
+// The first stage: tiles_ holds 1 where a tile has converged by the goal's rule. Every tile is
+// tested (the caller's scissor counts full-size pixels, not tiles); the second stage reads the
+// traced ones.
+void AdaptiveSamplingPass::markConvergedTiles(const gl::RenderTarget& mean, int samples, const AdaptiveSampling& settings) {
+    gl::Defines defines;
+    if (settings.goal == AdaptiveGoal::Mean) defines["GOAL_MEAN"] = "";
+    const gl::ShaderProgram& program = programs_.get({"fullscreen.vert.glsl", "passes/adaptive_tiles.frag.glsl", defines, {"outTile"}});
     program.use();
     mean.bindTexture(0, 0, program.uniform("uMeanRadiance"));
     mean.bindTexture(radianceSquaredAttachment, 1, program.uniform("uMeanRadianceSquared"));
     glUniform1f(program.uniform("uSampleCount"), static_cast<float>(samples));
-    glUniform1f(program.uniform("uThreshold"), threshold);
+    glUniform1f(program.uniform("uThreshold"), settings.threshold);
     glUniform2i(program.uniform("uImageSize"), width_, height_);
     bindStopTexture(stops_.get(), 2, program);
     const GLboolean scissored = glIsEnabled(GL_SCISSOR_TEST);

@@ -28,8 +28,8 @@ inline constexpr int adaptiveTile = 8;
 // `rect` grown to whole tiles, clipped to the width x height image.
 PixelRect alignedToTiles(const PixelRect& rect, int width, int height);
 
-// Samples before the first test: the setting's, else Cycles' automatic 16 / threshold^0.3, at
-// least 2 (one sample has no variance) and at most `spp`.
+// Samples before the first test: the setting's, else automatic (Even: Cycles' 16 / threshold^0.3;
+// Mean: 16), at least 2 (one sample has no variance) and at most `spp`.
 int adaptiveMinSamples(const AdaptiveSampling& settings, int spp);
 // Whether the test runs once the mean holds `samples`: at the minimum, then every 4 samples.
 bool adaptiveTestDue(int samples, int minSamples);
@@ -41,10 +41,11 @@ public:
     GLuint stopTexture() const { return stops_.get(); }
     // Every pixel samples again; `traced` pixels are counted as sampling.
     void reset(const PixelRect& traced);
-    // Stops the pixels whose `mean` (an accumulation buffer of `samples` samples) has converged
-    // and copies their mean into `next` (the accumulation's other target, which has the stops
-    // attached). Draws into the traced pixels only when the caller's scissor is set.
-    void test(const gl::RenderTarget& mean, const gl::RenderTarget& next, int samples, float threshold);
+    // Stops the pixels whose `mean` (an accumulation buffer of `samples` samples) has converged by
+    // the settings' goal and threshold, and copies their mean into `next` (the accumulation's other
+    // target, which has the stops attached). Draws into the traced pixels only when the caller's
+    // scissor is set.
+    void test(const gl::RenderTarget& mean, const gl::RenderTarget& next, int samples, const AdaptiveSampling& settings);
     bool anyStopped() const { return stopped_ > 0; }
     bool allStopped() const { return stopped_ >= traced_; }
     int stoppedPixels() const { return stopped_; }
@@ -53,7 +54,7 @@ public:
     std::vector<float> sampleCounts(int samples) const;
 
 private:
-    void markConvergedTiles(const gl::RenderTarget& mean, int samples, float threshold);
+    void markConvergedTiles(const gl::RenderTarget& mean, int samples, const AdaptiveSampling& settings);
 
     gl::ProgramCache& programs_;
     gl::FullscreenTriangle triangle_;

@@ -6,7 +6,9 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <string_view>
 
 namespace glint {
 
@@ -63,14 +65,32 @@ struct BloomParameters {
     friend bool operator==(const BloomParameters&, const BloomParameters&) = default;
 };
 
+// What adaptive sampling stops tiles for (docs/CLI.md, "Adaptive sampling"):
+// - Even: every pixel's noise below the threshold (Cycles' rule); the noise ends even over the image.
+// - Mean: the least mean relMSE for the samples taken; a tile stops once one more sample would
+//   lower its relMSE by less than threshold^2, so tiles end with samples in proportion to the
+//   standard deviation of their relative noise (Neyman allocation).
+enum class AdaptiveGoal { Even, Mean };
+
+// The goals' names, one spelling everywhere: the project file, `--adaptive-goal` and EXR metadata.
+constexpr const char* adaptiveGoalName(AdaptiveGoal goal) { return goal == AdaptiveGoal::Mean ? "mean" : "even"; }
+inline std::optional<AdaptiveGoal> parseAdaptiveGoal(std::string_view name) {
+    if (name == adaptiveGoalName(AdaptiveGoal::Even)) return AdaptiveGoal::Even;
+    if (name == adaptiveGoalName(AdaptiveGoal::Mean)) return AdaptiveGoal::Mean;
+    return std::nullopt;
+}
+
 // Adaptive sampling of stills (Accumulate and Reference; docs/CLI.md, "Adaptive sampling"):
-// pixels stop taking samples, by tiles of 8x8, once the standard error of every mean in the tile,
-// summed over R, G and B, is below threshold x sqrt(R + G + B of that mean). A tile decides from
-// its own pixels alone, so a region or a shard renders the pixels of the whole image. threshold 0:
-// off (every pixel takes every sample).
+// pixels stop taking samples by tiles of 8x8, by the goal's rule: Even, once the standard error of
+// every mean in the tile, summed over R, G and B, is below threshold x sqrt(R + G + B of that
+// mean); Mean, once sqrt(a) / n < threshold, a being the tile's relative variance per sample (the
+// mean over its pixels and channels of the sample variance over mean^2 + 0.01) and n its samples.
+// A tile decides from its own pixels alone, so a region or a shard renders the pixels of the whole
+// image. threshold 0: off (every pixel takes every sample).
 struct AdaptiveSampling {
     float threshold = 0.0f; // 0 (off) or above 0, at most 1; Cycles' default noise threshold is 0.01
-    int minSamples = 0;     // samples before the first test; 0: automatic, 16 / threshold^0.3 as Cycles
+    int minSamples = 0;     // samples before the first test; 0: automatic (Even: 16 / threshold^0.3 as Cycles; Mean: 16)
+    AdaptiveGoal goal = AdaptiveGoal::Even;
     friend bool operator==(const AdaptiveSampling&, const AdaptiveSampling&) = default;
 };
 

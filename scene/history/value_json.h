@@ -158,7 +158,9 @@ GLINT_JSON_TYPE_WITH_DEFAULT(TaaParameters, blend, clip, clipGamma, perceptualBl
 GLINT_JSON_TYPE_WITH_DEFAULT(SvgfParameters, iterations, alpha, momentsAlpha, sigmaLuminance,
                                                 sigmaNormal, sigmaDepth, fireflyRatio)
 GLINT_JSON_TYPE_WITH_DEFAULT(BloomParameters, strength, radius)
-GLINT_JSON_TYPE_WITH_DEFAULT(AdaptiveSampling, threshold, minSamples)
+NLOHMANN_JSON_SERIALIZE_ENUM(AdaptiveGoal, {{AdaptiveGoal::Even, "even"}, {AdaptiveGoal::Mean, "mean"}})
+// With defaults: command logs written before the adaptive goal existed still replay.
+GLINT_JSON_TYPE_WITH_DEFAULT(AdaptiveSampling, threshold, minSamples, goal)
 // With defaults: command logs written before the reconstruction parameters, motion blur and
 // adaptive sampling existed still replay.
 GLINT_JSON_TYPE_WITH_DEFAULT(RenderSettings, configuration, width, height, spp, bounces, seed,

@@ -1,5 +1,6 @@
 // Adaptive sampling at the command line (docs/CLI.md, "Adaptive sampling"): the project's
-// render.adaptive drives `glint render`, --adaptive-threshold and --adaptive-min-spp override it,
+// render.adaptive drives `glint render`, --adaptive-threshold, --adaptive-min-spp and
+// --adaptive-goal override it,
 // the EXR's `samples` AOV holds each pixel's sample count and the header records the settings
 // (hashed, so --resume re-renders when they change); bad values are usage errors naming the option.
 #include "cli_runner.h"
@@ -68,6 +69,30 @@ private slots:
         QCOMPARE(runGlint(QStringList{"render", scene, "--out", later, "--adaptive-min-spp", "16"} + kSmall).exitCode, 0);
         const std::vector<float> laterSamples = channel(probeImage(later), "samples");
         QCOMPARE(*std::min_element(laterSamples.begin(), laterSamples.end()), 16.0f);
+
+        // --adaptive-goal mean changes the rule (its thresholds are far smaller), is recorded and
+        // hashed; the project's goal applies where the option is left out.
+        const QString mean = dir.filePath("mean.exr");
+        QCOMPARE(runGlint(QStringList{"render", scene, "--out", mean, "--adaptive-goal", "mean", "--adaptive-threshold", "0.02"} + kSmall)
+                     .exitCode,
+                 0);
+        const ProbedImage meanImage = probeImage(mean);
+        QCOMPARE(glintAttr(meanImage, "adaptiveGoal"), QString("mean"));
+        QVERIFY(glintAttr(image, "adaptiveGoal").isEmpty()); // even, the default, is not written
+        QCOMPARE(glintAttr(meanImage, "adaptiveMinSpp"), QString("4")); // the project's
+        const std::vector<float> meanSamples = channel(meanImage, "samples");
+        const float meanFewest = *std::min_element(meanSamples.begin(), meanSamples.end());
+        QVERIFY2(meanFewest >= 4.0f && meanFewest < *std::max_element(meanSamples.begin(), meanSamples.end()),
+                 "tiles stop at different counts, none before the minimum");
+        QVERIFY(meanSamples != samples); // another rule
+        const QString meanScene =
+            cornellWithProject(dir, R"({"glint": 1, "render": {"adaptive": {"threshold": 0.02, "minSpp": 4, "goal": "mean"}}})");
+        const QString fromProject = dir.filePath("from_project.exr");
+        QCOMPARE(runGlint(QStringList{"render", meanScene, "--out", fromProject} + kSmall).exitCode, 0);
+        const ProbedImage fromProjectImage = probeImage(fromProject);
+        QCOMPARE(glintAttr(fromProjectImage, "adaptiveGoal"), QString("mean"));
+        QCOMPARE(glintAttr(fromProjectImage, "settingsHash"), glintAttr(meanImage, "settingsHash"));
+        QCOMPARE(channel(fromProjectImage, "samples"), meanSamples);
     }
 
     void badValuesAreUsageErrors() {
@@ -77,6 +102,9 @@ private slots:
         const CliResult minimum = runGlint({"render", kCornell, "--out", "x.exr", "--adaptive-min-spp", "-1"});
         QCOMPARE(minimum.exitCode, 2);
         QVERIFY2(minimum.err.contains("--adaptive-min-spp"), qPrintable(minimum.err));
+        const CliResult goal = runGlint({"render", kCornell, "--out", "x.exr", "--adaptive-goal", "median"});
+        QCOMPARE(goal.exitCode, 2);
+        QVERIFY2(goal.err.contains("--adaptive-goal"), qPrintable(goal.err));
         QTemporaryDir dir;
         const CliResult realTime = runGlint({"render", kCornell, "--out", dir.filePath("rt.exr"), "--aovs", "samples", "--config",
                                              "full", "--size", "8x8", "--spp", "1"});

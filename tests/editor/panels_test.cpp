@@ -252,6 +252,14 @@ void PanelsTest::undoLabelsSayWhatHappened() {
     tonemapper->setCurrentIndex(2);
     emit tonemapper->activated(2);
     QCOMPARE(lastLabel(), QString("Change tonemapper"));
+    auto* goal = fieldNamed<QComboBox>(scene, "Adaptive goal");
+    QVERIFY(goal);
+    goal->setCurrentIndex(1);
+    emit goal->activated(1);
+    QCOMPARE(lastLabel(), QString("Change adaptive sampling"));
+    QVERIFY(document.scene().settings.render.adaptive.goal == AdaptiveGoal::Mean);
+    document.undo();
+    QVERIFY(document.scene().settings.render.adaptive.goal == AdaptiveGoal::Even);
     // A node's fields: a light's colour, a material's roughness.
     PropertiesPanel properties(document, false);
     document.setSelection({nodeNamed(document, "left_wall_red")});

@@ -193,7 +193,7 @@ private slots:
     void everyRenderSettingSurvivesTheLog() {
         ProjectSettings settings;
         settings.render.shutter = 0.5f;
-        settings.render.adaptive = {.threshold = 0.02f, .minSamples = 48};
+        settings.render.adaptive = {.threshold = 0.02f, .minSamples = 48, .goal = AdaptiveGoal::Mean};
         settings.render.bloom.strength = 0.25f;
         const nlohmann::json written = commandToJson(SetProjectSettings(settings));
         Scene scene;

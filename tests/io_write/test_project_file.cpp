@@ -22,7 +22,7 @@ ProjectFile sampleProject()
     p.settings.render.tonemapper = Tonemapper::PbrNeutral;
     p.settings.render.bloom = {.strength = 0.25f, .radius = 0.1f};
     p.settings.render.shutter = 0.5f;
-    p.settings.render.adaptive = {.threshold = 0.02f, .minSamples = 48};
+    p.settings.render.adaptive = {.threshold = 0.02f, .minSamples = 48, .goal = AdaptiveGoal::Mean};
     p.settings.environment = {.file = "studio.hdr", .color = {0.1f, 0.2f, 0.3f}, .intensity = 1.5f, .rotationDegrees = 33.3f};
     p.settings.timeline = {.start = 0.5, .end = 10.1, .fpsNumerator = 24000, .fpsDenominator = 1001};
     p.settings.output = {.path = "frames/shot_####.exr", .aovs = "none", .passes = "light,Vector", .codec = "prores"};
@@ -185,6 +185,7 @@ private slots:
         row("clamp -1", R"({"glint": 1, "render": {"clamp": -1}})", "bad-value: key 'render.clamp' must be 0 (off) or a positive number");
         row("shutter 2", R"({"glint": 1, "render": {"shutter": 2}})", "bad-value: key 'render.shutter' must be a fraction of a frame from 0 (off) to 1");
         row("adaptive threshold 2", R"({"glint": 1, "render": {"adaptive": {"threshold": 2}}})", "bad-value: key 'render.adaptive.threshold' must be a number from 0 (off) to 1");
+        row("adaptive goal median", R"({"glint": 1, "render": {"adaptive": {"goal": "median"}}})", "bad-value: key 'render.adaptive.goal' must be one of even, mean, not 'median'");
         row("adaptive minSpp -1", R"({"glint": 1, "render": {"adaptive": {"minSpp": -1}}})", "bad-value: key 'render.adaptive.minSpp' must be an integer from 0 (automatic) to 1048576");
         row("intensity -5", R"({"glint": 1, "environment": {"intensity": -5}})", "bad-value: key 'environment.intensity' must be a number of at least 0");
         row("colour -1", R"({"glint": 1, "environment": {"color": [0, -1, 0]}})", "bad-value: key 'environment.color' must be 3 numbers of at least 0");

@@ -6,7 +6,7 @@
 //   ground converges in a few samples (the sun is sampled directly) but costs whole paths like any
 //   pixel, while the shade under the roof is lit only by bounced light and stays noisy.
 //   bench_adaptive REF.exr [--scene cornell|shelter] [--reference-spp 4096] [--size 128] [--bounces 4]
-//       [--uniform 16,32,...] [--thresholds 0.04,...]
+//       [--uniform 16,32,...] [--thresholds 0.04,...] [--goal even|mean]
 //       [--cap 1024] [--min-spp 0] [--runs 3] [--csv OUT.csv] [--chart OUT.png] [--from-csv IN.csv]
 // --from-csv: no renders; the table, the times to each target and the chart from an earlier --csv.
 // REF.exr: a converged render of the same scene, size and bounces, rendered first (seed 1000,
@@ -42,6 +42,7 @@ struct Options {
     int size = 128, bounces = 4, cap = 1024, minSpp = 0, runs = 3, referenceSpp = 4096;
     std::vector<int> uniform = {16, 32, 64, 128, 256, 512, 1024};
     std::vector<double> thresholds = {0.08, 0.04, 0.02, 0.01, 0.005};
+    AdaptiveGoal goal = AdaptiveGoal::Even;
 };
 
 template <class T> std::vector<T> parseList(const char* text) {
@@ -71,6 +72,11 @@ Options parse(int argc, char** argv) {
         else if (!std::strcmp(argv[i], "--runs")) o.runs = std::atoi(next());
         else if (!std::strcmp(argv[i], "--uniform")) o.uniform = parseList<int>(next());
         else if (!std::strcmp(argv[i], "--thresholds")) o.thresholds = parseList<double>(next());
+        else if (!std::strcmp(argv[i], "--goal")) {
+            const auto goal = parseAdaptiveGoal(next());
+            if (!goal) std::exit(2);
+            o.goal = *goal;
+        }
         else if (!std::strcmp(argv[i], "--csv")) o.csv = next();
         else if (!std::strcmp(argv[i], "--chart")) o.chart = next();
         else if (!std::strcmp(argv[i], "--from-csv")) o.fromCsv = next();
@@ -131,7 +137,7 @@ std::vector<float> referenceImage(const Options& o, const Scene& scene) {
 }
 
 struct Point {
-    std::string mode;      // "uniform" or "adaptive"
+    std::string mode;      // "uniform", "adaptive" (goal even) or "mean" (goal mean)
     double threshold = 0.0;
     int spp = 0;           // uniform: spp; adaptive: the cap
     double meanSpp = 0.0;  // samples per pixel taken, on average
@@ -166,14 +172,15 @@ Point measure(renderer::OfflineRenderer& renderer, const Scene& scene, const Opt
     request.width = request.height = o.size;
     request.bounces = o.bounces;
     request.spp = spp;
-    request.adaptive = {.threshold = float(threshold), .minSamples = o.minSpp};
+    request.adaptive = {.threshold = float(threshold), .minSamples = o.minSpp, .goal = o.goal};
     std::vector<double> times;
     renderer::RenderOutput out;
     for (int run = 0; run < o.runs; ++run) {
         out = renderer.render(scene, request);
         times.push_back(out.timings.renderMs);
     }
-    Point p{threshold > 0.0 ? "adaptive" : "uniform", threshold, spp, 0.0, median(times), 0.0, 0.0, 0.0};
+    const char* mode = threshold <= 0.0 ? "uniform" : o.goal == AdaptiveGoal::Mean ? "mean" : "adaptive";
+    Point p{mode, threshold, spp, 0.0, median(times), 0.0, 0.0, 0.0};
     double total = 0.0;
     for (const float c : out.sampleCounts) total += c;
     p.meanSpp = total / double(std::max<std::size_t>(1, out.sampleCounts.size()));

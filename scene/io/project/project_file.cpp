@@ -214,8 +214,12 @@ void readBloom(ObjectReader& r, BloomParameters& b)
                   "a fraction of the image height above 0, at most 1");
 }
 
+constexpr std::array<std::pair<const char*, AdaptiveGoal>, 2> kAdaptiveGoalNames{
+    {{adaptiveGoalName(AdaptiveGoal::Even), AdaptiveGoal::Even}, {adaptiveGoalName(AdaptiveGoal::Mean), AdaptiveGoal::Mean}}};
+
 void readAdaptive(ObjectReader& r, AdaptiveSampling& a)
 {
+    r.readEnum("goal", a.goal, kAdaptiveGoalNames);
     r.readChecked("threshold", a.threshold, [](float v) { return v >= 0.0f && v <= 1.0f; }, "a number from 0 (off) to 1");
     r.readChecked("minSpp", a.minSamples, [](int v) { return inRange(v, 0, kMaxProjectSpp); },
                   "an integer from 0 (automatic) to " + std::to_string(kMaxProjectSpp));
@@ -352,6 +356,7 @@ json adaptiveJson(const AdaptiveSampling& a)
     json j = json::object();
     if (a.threshold != d.threshold) j["threshold"] = jsonFloat(a.threshold);
     if (a.minSamples != d.minSamples) j["minSpp"] = a.minSamples;
+    if (a.goal != d.goal) j["goal"] = enumName(a.goal, kAdaptiveGoalNames);
     return j;
 }
 
