@@ -220,10 +220,11 @@ void drawChart(const Options& o, const std::vector<Point>& uniform, const std::v
         return c;
     };
     const std::string svg = o.chart.substr(0, o.chart.rfind('.')) + ".svg";
+    const std::string goal = adaptive.empty() || adaptive.front().mode == "adaptive" ? "adaptive" : "adaptive, goal " + adaptive.front().mode;
     bench::writeSpeedAccuracyChart({curve("uniform: relMSE", uniform, &Point::relMse),
-                                    curve("adaptive: relMSE", adaptive, &Point::relMse),
+                                    curve(goal + ": relMSE", adaptive, &Point::relMse),
                                     curve("uniform: worst 8x8 tile", uniform, &Point::worstTile),
-                                    curve("adaptive: worst 8x8 tile", adaptive, &Point::worstTile)},
+                                    curve(goal + ": worst 8x8 tile", adaptive, &Point::worstTile)},
                                    o.scene + ", " + std::to_string(o.size) + "x" + std::to_string(o.size) + ", " +
                                        std::to_string(o.bounces) + " bounces, adaptive capped at " + std::to_string(o.cap) +
                                        " spp: relMSE against render time",

@@ -5,12 +5,12 @@ Usage (Blender 3.4 and python3-numpy from Debian, headless):
       --scene resources/scenes/cornell_box/cornell_box.gltf --out OUT_DIR \
       [--size 512x512] [--bounces 4] [--samples 1,2,4,8,16,32,64] [--reference-samples 1024] \
       [--threads 2] [--seed 0] [--materials imported|diffuse] [--emission-sides gltf|both] \
-      [--reference-exr EXR]
+      [--reference-exr EXR] [--adaptive-threshold T]
 
 The scene comes in through Blender's own glTF importer with its default options (the light-unit
 convention Glint follows, docs/LIGHTS.md), so this also checks that Blender opens Glint's files.
 Settings match `glint render`: the same bounce limit for every kind of bounce, a 1-pixel box pixel
-filter, no denoiser, no adaptive sampling, no clamping, no light threshold, the 'Standard' view
+filter, no denoiser, no adaptive sampling (unless asked for), no clamping, no light threshold, the 'Standard' view
 transform (the EXR holds linear scene radiance either way), black world (a glTF carries none).
 Emission follows Glint's sides (docs/LIGHTS.md): a single-sided glTF material (Blender's importer
 turns on backface culling for it, which Cycles ignores) emits from its front face only, a
@@ -23,7 +23,9 @@ the reference (rendered with seed + 1) as docs/CLI.md defines it (mean over pixe
 (x - r)^2 / (r^2 + 0.01)); cpu_seconds the process CPU time of all threads (the steadier figure on a
 shared machine); worst_share the share of the relMSE held by the worst 0.1 % of pixels (fireflies
 put it there); the last row is the reference itself. `--reference-exr` judges against an existing
-reference (another seed's run of this script) instead of rendering one.
+reference (another seed's run of this script) instead of rendering one. `--adaptive-threshold T`
+turns on Cycles' adaptive sampling with noise threshold T (automatic minimum samples): each
+`--samples` count is then the cap, and the reference is still rendered without it.
 """
 import numpy
 
@@ -49,6 +51,8 @@ def parse_args():
     p.add_argument("--threads", type=int, default=2)
     p.add_argument("--seed", type=int, default=0)
     p.add_argument("--reference-exr", help="an existing reference (32-bit EXR of the same size) instead of rendering one")
+    p.add_argument("--adaptive-threshold", type=float, default=0.0,
+                   help="Cycles' adaptive sampling with this noise threshold (0: off); --samples are then caps")
     p.add_argument("--emission-sides", choices=["gltf", "both"], default="gltf",
                    help="gltf: single-sided materials emit from their front face only, as in Glint")
     p.add_argument("--materials", choices=["imported", "diffuse"], default="imported",
@@ -192,6 +196,10 @@ def main():
         front_face_emission_only()
     configure(scene, args)
     out = os.path.abspath(args.out)
+    if args.adaptive_threshold > 0.0:
+        scene.cycles.use_adaptive_sampling = True
+        scene.cycles.adaptive_threshold = args.adaptive_threshold
+        scene.cycles.adaptive_min_samples = 0  # automatic
     render(scene, 1, os.path.join(out, "cycles_warmup.exr"))  # first sync and BVH build: not timed
     counts = [int(s) for s in args.samples.split(",")]
     times = {n: render(scene, n, os.path.join(out, "cycles_%dspp.exr" % n)) for n in counts}
@@ -200,6 +208,7 @@ def main():
     else:
         reference_path = os.path.join(out, "cycles_reference.exr")
         scene.cycles.seed = args.seed + 1  # independent of the runs it judges
+        scene.cycles.use_adaptive_sampling = False
         reference_seconds, reference_cpu = render(scene, args.reference_samples, reference_path)
     reference = read_rgb(reference_path)
     with open(os.path.join(out, "cycles_convergence.csv"), "w") as csv:
