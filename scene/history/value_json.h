@@ -158,7 +158,8 @@ GLINT_JSON_TYPE_WITH_DEFAULT(TaaParameters, blend, clip, clipGamma, perceptualBl
 GLINT_JSON_TYPE_WITH_DEFAULT(SvgfParameters, iterations, alpha, momentsAlpha, sigmaLuminance,
                                                 sigmaNormal, sigmaDepth, fireflyRatio)
 GLINT_JSON_TYPE_WITH_DEFAULT(BloomParameters, strength, radius)
-NLOHMANN_JSON_SERIALIZE_ENUM(AdaptiveGoal, {{AdaptiveGoal::Even, "even"}, {AdaptiveGoal::Mean, "mean"}})
+NLOHMANN_JSON_SERIALIZE_ENUM(AdaptiveGoal, {{AdaptiveGoal::Even, adaptiveGoalName(AdaptiveGoal::Even)},
+                                            {AdaptiveGoal::Mean, adaptiveGoalName(AdaptiveGoal::Mean)}})
 // With defaults: command logs written before the adaptive goal existed still replay.
 GLINT_JSON_TYPE_WITH_DEFAULT(AdaptiveSampling, threshold, minSamples, goal)
 // With defaults: command logs written before the reconstruction parameters, motion blur and
