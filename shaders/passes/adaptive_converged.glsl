@@ -10,7 +10,8 @@ vec3 sampleVariance(vec3 mean, vec3 meanSquared, float n) {
 // is below the threshold times the square root of the mean's R + G + B (Cycles' normalisation, so
 // dark pixels need a smaller absolute error). NaN or Inf: not converged.
 bool converged(vec3 mean, vec3 meanSquared, float n, float threshold) {
-    // The sample variance over n, the variance of the mean, in one division.
+    // The sample variance over n, the variance of the mean, in one division: not through
+    // sampleVariance, whose extra rounding could move a stop and change Even's renders.
     vec3 standardError = sqrt(max(meanSquared - mean * mean, vec3(0.0)) / (n - 1.0));
     float error = (standardError.r + standardError.g + standardError.b) / (1.0e-4 + sqrt(max(mean.r + mean.g + mean.b, 0.0)));
     return error < threshold;

@@ -73,8 +73,12 @@ Options parse(int argc, char** argv) {
         else if (!std::strcmp(argv[i], "--uniform")) o.uniform = parseList<int>(next());
         else if (!std::strcmp(argv[i], "--thresholds")) o.thresholds = parseList<double>(next());
         else if (!std::strcmp(argv[i], "--goal")) {
-            const auto goal = parseAdaptiveGoal(next());
-            if (!goal) std::exit(2);
+            const char* name = next();
+            const auto goal = parseAdaptiveGoal(name);
+            if (!goal) {
+                std::fprintf(stderr, "bench_adaptive: unknown goal %s (even, mean)\n", name);
+                std::exit(2);
+            }
             o.goal = *goal;
         }
         else if (!std::strcmp(argv[i], "--csv")) o.csv = next();
