@@ -117,7 +117,7 @@ EncodedTexture encodeForGltf(const QString& path, const QByteArray& bytes, bool 
     };
     const std::span<const std::uint8_t> raw(reinterpret_cast<const std::uint8_t*>(bytes.constData()), std::size_t(bytes.size()));
     if (const std::string why = headerLimitError(raw, raw.size(), 4, sizeof(float), DecodeLimits{}); !why.empty()) refuse(why);
-    OIIO::Filesystem::IOMemReader reader(bytes.constData(), std::size_t(bytes.size()));
+    BoundedMemReader reader(bytes.constData(), std::size_t(bytes.size()));
     // OpenImageIO picks its reader by the file's extension; the bytes decide whether it reads.
     OIIO::ImageBuf image(path.toStdString(), 0, 0, nullptr, nullptr, &reader);
     if (image.spec().width > 0)

@@ -42,11 +42,11 @@ EnvironmentImage readEnvironment(OIIO::ImageInput& input, const std::string& nam
     const std::size_t pixels = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height);
     image.rgb.resize(pixels * 3);
     if (spec.nchannels >= 3) { // channels 0..2 straight into the image
-        if (!input.read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, image.rgb.data()))
+        if (!readConvertedPixels(input, 3, OIIO::TypeDesc::FLOAT, image.rgb.data(), 3 * sizeof(float)))
             throw FileError(name, "environment-unreadable", "cannot decode the environment image: " + input.geterror());
     } else { // grey, or grey and alpha: the grey on all three
         std::vector<float> grey(pixels);
-        if (!input.read_image(0, 0, 0, 1, OIIO::TypeDesc::FLOAT, grey.data()))
+        if (!readConvertedPixels(input, 1, OIIO::TypeDesc::FLOAT, grey.data(), sizeof(float)))
             throw FileError(name, "environment-unreadable", "cannot decode the environment image: " + input.geterror());
         for (std::size_t i = 0; i < pixels; ++i) image.rgb[i * 3] = image.rgb[i * 3 + 1] = image.rgb[i * 3 + 2] = grey[i];
     }
@@ -80,13 +80,12 @@ EnvironmentImage loadEnvironmentImage(const std::filesystem::path& file, const D
 }
 
 EnvironmentImage decodeEnvironmentImage(std::span<const std::uint8_t> encoded, const std::string& name, const DecodeLimits& limits) {
-    const char* format = memoryImageName(encoded);
-    if (!format) throw FileError(name, "environment-unreadable", "cannot read the environment image: not a PNG, JPEG, HDR, EXR or TIFF file");
+    if (!memoryImageName(encoded))
+        throw FileError(name, "environment-unreadable", "cannot read the environment image: not a PNG, JPEG, HDR, EXR or TIFF file");
     checkHeader(encoded, encoded.size(), name, limits);
-    OIIO::Filesystem::IOMemReader reader(encoded.data(), encoded.size());
-    auto input = OIIO::ImageInput::open(format, nullptr, &reader);
-    if (!input) throw FileError(name, "environment-unreadable", "cannot read the environment image: " + OIIO::geterror());
-    return readEnvironment(*input, name, limits);
+    const MemoryImage opened = openImageFromMemory(encoded);
+    if (!opened.input) throw FileError(name, "environment-unreadable", "cannot read the environment image: " + opened.error);
+    return readEnvironment(*opened.input, name, limits);
 }
 
 } // namespace glint::renderer

@@ -209,6 +209,69 @@ private slots:
         }
     }
 
+    // OpenImageIO 2.4's IOMemReader reads before its buffer at an offset between -size and 0; a
+    // corrupt OpenEXR offset table (the seed below) asked for -1.
+    void boundedReaderReadsNothingOutsideItsBuffer()
+    {
+        const std::string bytes = "abcdefgh";
+        BoundedMemReader reader(bytes.data(), bytes.size());
+        char out[4] = {};
+        QCOMPARE(reader.pread(out, 4, -1), std::size_t(0));
+        QCOMPARE(reader.pread(out, 4, -3), std::size_t(0));
+        QCOMPARE(reader.pread(out, 4, 8), std::size_t(0));
+        QCOMPARE(reader.pread(out, 4, 6), std::size_t(2));
+        QCOMPARE(std::string(out, 2), std::string("gh"));
+        QCOMPARE(reader.pread(out, 4, 0), std::size_t(4));
+        QCOMPARE(std::string(out, 4), std::string("abcd"));
+        QVERIFY(reader.seek(-1));
+        QCOMPARE(reader.read(out, 4), std::size_t(0));
+    }
+
+    void exrWithAnOffsetBeforeTheFileIsRefused()
+    {
+        const std::vector<std::uint8_t> bytes = readAll(kBombs / "crash-exr-offset-before-buffer.exr");
+        QVERIFY(!bytes.empty());
+        const OiioImageDecoder decoder;
+        const DecodedImage<float> image = decoder.decodeFloat(bytes, {});
+        QVERIFY(!image.ok());
+        QVERIFY2(QString::fromStdString(image.error).contains("OpenEXR"), image.error.c_str());
+    }
+
+    // Only the reader the signature names sees the bytes, and its complaint is the error.
+    void aBrokenFileGetsItsReadersComplaint()
+    {
+        std::vector<std::uint8_t> png = readAll(kSwatches);
+        png.resize(40); // the signature and IHDR, then nothing
+        const OiioImageDecoder decoder;
+        const DecodedImage<std::uint8_t> image = decoder.decode8(png, {});
+        QVERIFY(!image.ok());
+        QVERIFY2(QString::fromStdString(image.error).contains("PNG"), image.error.c_str());
+        const MemoryImage opened = openImageFromMemory(bytesOf("GIF89a"));
+        QVERIFY(!opened.input);
+        QCOMPARE(QString::fromStdString(opened.error), QStringLiteral("not a PNG, JPEG, HDR, EXR or TIFF file"));
+    }
+
+    // Glint converts the values as stored itself (OpenImageIO 2.4 converts through a 64 MiB
+    // buffer): the same floats and bytes as OpenImageIO's own conversion, for every stored type.
+    void convertedPixelsEqualOpenImageIOsConversion()
+    {
+        for (const char* name : {"rgba16.png", "grey.jpg", "greyalpha.png", "piz.exr", "tiled.exr", "float.tif", "strip.hdr"}) {
+            const std::vector<std::uint8_t> bytes = readAll(kBombs / name);
+            for (const OIIO::TypeDesc type : {OIIO::TypeDesc::FLOAT, OIIO::TypeDesc::UINT8}) {
+                MemoryImage ours = openImageFromMemory(bytes);
+                MemoryImage theirs = openImageFromMemory(bytes);
+                QVERIFY2(ours.input && theirs.input, name);
+                const OIIO::ImageSpec& spec = ours.input->spec();
+                const int channels = std::min(spec.nchannels, 4);
+                const std::size_t size = std::size_t(spec.width) * std::size_t(spec.height) * 4 * type.size();
+                std::vector<std::uint8_t> a(size, 7), b(size, 7);
+                QVERIFY2(readConvertedPixels(*ours.input, channels, type, a.data(), 4 * type.size()), name);
+                QVERIFY2(theirs.input->read_image(0, 0, 0, channels, type, b.data(), OIIO::stride_t(4 * type.size())), name);
+                QVERIFY2(a == b, name);
+            }
+        }
+    }
+
     void refusesGarbage()
     {
         const OiioImageDecoder decoder;

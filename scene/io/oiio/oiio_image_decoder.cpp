@@ -4,7 +4,9 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <cstddef>
 #include <memory>
+#include <vector>
 
 namespace glint {
 
@@ -28,22 +30,51 @@ const char* memoryImageName(std::span<const std::uint8_t> b)
     return nullptr;
 }
 
-namespace {
-
-struct OpenedImage {
-    std::unique_ptr<OIIO::Filesystem::IOMemReader> reader;
-    std::unique_ptr<OIIO::ImageInput> input;
-};
-
-OpenedImage openFromMemory(std::span<const std::uint8_t> encoded)
+std::size_t BoundedMemReader::pread(void* buf, std::size_t size, std::int64_t offset)
 {
-    OpenedImage opened;
+    const auto length = static_cast<std::int64_t>(buffer().size());
+    if (offset < 0 || offset >= length) return 0;
+    return IOMemReader::pread(buf, std::min(size, static_cast<std::size_t>(length - offset)), offset);
+}
+
+MemoryImage openImageFromMemory(std::span<const std::uint8_t> encoded)
+{
+    MemoryImage opened;
     const char* name = memoryImageName(encoded);
-    if (!name) return opened;
-    opened.reader = std::make_unique<OIIO::Filesystem::IOMemReader>(encoded.data(), encoded.size());
-    opened.input = OIIO::ImageInput::open(name, nullptr, opened.reader.get());
+    if (!name) {
+        opened.error = "not a PNG, JPEG, HDR, EXR or TIFF file";
+        return opened;
+    }
+    // Created by the bare extension, OpenImageIO returns that reader unopened and tries no other.
+    std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::create(OIIO::Filesystem::extension(name, false));
+    if (!input) {
+        opened.error = OIIO::geterror();
+        return opened;
+    }
+    opened.bytes = std::make_unique<BoundedMemReader>(encoded.data(), encoded.size());
+    OIIO::ImageSpec spec;
+    if (!input->set_ioproxy(opened.bytes.get()) || !input->open(name, spec)) {
+        opened.error = input->geterror();
+        if (opened.error.empty()) opened.error = "not an image OpenImageIO can read";
+        return opened;
+    }
+    opened.input = std::move(input);
     return opened;
 }
+
+bool readConvertedPixels(OIIO::ImageInput& input, int channels, OIIO::TypeDesc type, void* out, std::size_t pixelStride)
+{
+    const OIIO::ImageSpec& spec = input.spec();
+    if (!spec.channelformats.empty()) // values stored in several types: OpenImageIO converts each
+        return input.read_image(0, 0, 0, channels, type, out, static_cast<OIIO::stride_t>(pixelStride));
+    std::vector<std::byte> stored(static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height) *
+                                  static_cast<std::size_t>(channels) * spec.format.size());
+    if (!input.read_image(0, 0, 0, channels, OIIO::TypeDesc::UNKNOWN, stored.data())) return false;
+    return OIIO::convert_image(channels, spec.width, spec.height, 1, stored.data(), spec.format, OIIO::AutoStride, OIIO::AutoStride,
+                               OIIO::AutoStride, out, type, static_cast<OIIO::stride_t>(pixelStride), OIIO::AutoStride, OIIO::AutoStride);
+}
+
+namespace {
 
 template <class T>
 DecodedImage<T> decode(std::span<const std::uint8_t> encoded, const DecodeLimits& limits, OIIO::TypeDesc type)
@@ -53,9 +84,9 @@ DecodedImage<T> decode(std::span<const std::uint8_t> encoded, const DecodeLimits
     // declared size when OpenImageIO opens it, OpenEXR an attribute's declared size.
     out.error = headerLimitError(encoded, encoded.size(), 4, sizeof(T), limits);
     if (!out.error.empty()) return out;
-    OpenedImage opened = openFromMemory(encoded);
+    MemoryImage opened = openImageFromMemory(encoded);
     if (!opened.input) {
-        out.error = "not an image OpenImageIO can read";
+        out.error = opened.error;
         return out;
     }
     const OIIO::ImageSpec& spec = opened.input->spec();
@@ -67,7 +98,7 @@ DecodedImage<T> decode(std::span<const std::uint8_t> encoded, const DecodeLimits
     out.height = spec.height;
     out.rgba.assign(pixels * 4, spec.nchannels >= 4 ? T(0) : type == OIIO::TypeDesc::FLOAT ? T(1) : T(255));
     const int channels = std::min(spec.nchannels, 4);
-    if (!opened.input->read_image(0, 0, 0, channels, type, out.rgba.data(), 4 * sizeof(T))) {
+    if (!readConvertedPixels(*opened.input, channels, type, out.rgba.data(), 4 * sizeof(T))) {
         out.error = opened.input->geterror();
         out.rgba.clear();
         return out;
@@ -103,7 +134,7 @@ std::optional<ImageSize> OiioImageDecoder::probe(std::span<const std::uint8_t> e
     // Read without OpenImageIO where Glint's probe can: opening may allocate for the declared size.
     if (auto size = probeImageHeader(encoded)) return size;
     if (!imageHeaderProblem(encoded, encoded.size()).empty()) return std::nullopt;
-    OpenedImage opened = openFromMemory(encoded);
+    MemoryImage opened = openImageFromMemory(encoded);
     if (!opened.input) return std::nullopt;
     return ImageSize{opened.input->spec().width, opened.input->spec().height};
 }
