@@ -169,9 +169,10 @@ void addRenderCommand(CLI::App& app, Action& action) {
                                            "to the scene's folder; a '#' pattern there renders the animation)")
         ->check(CLI::Validator(rejection([](const std::string& v) { renderer::imageFormatFor(v); }), "FILE", "image"));
     cmd->add_option("--aovs", options->aovs, "EXR layers: all, none, or a list of albedo,normal,depth,id,variance,"
-                                             "bvh_cost (default: all = every layer but variance and bvh_cost; "
-                                             "bvh_cost: BVH nodes visited + primitives tested by the camera "
-                                             "rays, mean per pixel, stills and per-frame renders only)")
+                                             "bvh_cost,samples (default: all = every layer but variance, bvh_cost "
+                                             "and samples; bvh_cost: BVH nodes visited + primitives tested by the "
+                                             "camera rays, mean per pixel, stills and per-frame renders only; "
+                                             "samples: each pixel's sample count, Accumulate and Reference only)")
         ->check(CLI::Validator(rejection([](const std::string& v) { renderer::parseAovList(v); }), "LIST", "aovs"));
     cmd->add_option("--passes", options->passes, "EXR render passes: all, none, light, or a list of DiffDir,DiffInd,"
                                                  "GlossDir,GlossInd,Emit,Env,Vector (any case). The light passes sum "
