@@ -19,6 +19,17 @@ struct ImageSize {
 // image library and without decoding pixels: enough to refuse a header claiming 65535x65535.
 std::optional<ImageSize> probeImageHeader(std::span<const std::uint8_t> bytes);
 
+// The tile of a tiled OpenEXR file's first part, for which OpenEXR allocates a buffer on opening
+// whatever the image's size: its size in pixels, its channels and their widest value in bytes.
+// None for other files or where the header does not say.
+struct ExrTileShape {
+    std::int64_t width = 0;
+    std::int64_t height = 0;
+    std::int64_t channels = 0;
+    std::size_t bytesPerValue = 0;
+};
+std::optional<ExrTileShape> probeExrTile(std::span<const std::uint8_t> bytes);
+
 struct DecodeLimits {
     std::uint64_t maxPixels = 16384ull * 16384ull;
     std::uint64_t maxBytes = 1ull << 31; // of the decoded pixels: width x height x channels x bytes per value
@@ -44,7 +55,8 @@ std::string chunkLimitError(std::int64_t chunkWidth, std::int64_t chunkHeight, s
                             const DecodeLimits& limits);
 
 // Why an image file may not be opened, from its first bytes (`header`) and its size: the size
-// probeImageHeader reads beyond the limits (one channel assumed), or an imageHeaderProblem. So an
+// probeImageHeader reads beyond the limits (one channel assumed), an OpenEXR tile beyond them
+// (probeExrTile), or an imageHeaderProblem. So an
 // image bomb is refused before an image library opens it: some allocate for the declared size on
 // opening (libjpeg for a progressive JPEG's coefficients, libpng for a chunk, OpenEXR for its
 // attributes). Empty when neither applies.

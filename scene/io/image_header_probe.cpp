@@ -82,28 +82,41 @@ std::optional<ImageSize> probeHdr(Bytes b)
     return sizeIfPositive(width, height);
 }
 
-// Attributes (name\0 type\0 size data) up to an empty name; dataWindow is a box2i (xMin yMin xMax yMax).
-std::optional<ImageSize> probeExr(Bytes b)
+// Calls visit(name, type, value) for each attribute (name\0 type\0 size data) of an OpenEXR file's
+// first header, up to the empty name that ends it, while it lies whole in `b` and until visit
+// returns true.
+template <class Visit>
+void forEachExrAttribute(Bytes b, Visit visit)
 {
     std::size_t at = 8;
     while (at < b.size() && b[at] != 0) {
         const auto nameEnd = std::find(b.begin() + static_cast<std::ptrdiff_t>(at), b.end(), 0);
         const auto typeEnd = nameEnd == b.end() ? b.end() : std::find(nameEnd + 1, b.end(), 0);
-        if (typeEnd == b.end()) return std::nullopt;
-        const std::string name(b.begin() + static_cast<std::ptrdiff_t>(at), nameEnd);
+        if (typeEnd == b.end()) return;
+        const std::string_view name(reinterpret_cast<const char*>(&b[at]), static_cast<std::size_t>(nameEnd - b.begin()) - at);
+        const std::string_view type(reinterpret_cast<const char*>(&*(nameEnd + 1)), static_cast<std::size_t>(typeEnd - nameEnd - 1));
         const std::size_t sizeAt = static_cast<std::size_t>(typeEnd - b.begin()) + 1;
-        if (sizeAt + 4 > b.size()) return std::nullopt;
+        if (sizeAt + 4 > b.size()) return;
         const std::int64_t size = littleEndian32(b, sizeAt);
         const std::size_t dataAt = sizeAt + 4;
-        if (size < 0 || dataAt + static_cast<std::size_t>(size) > b.size()) return std::nullopt;
-        if (name == "dataWindow" && size == 16) {
-            const std::int64_t width = std::int64_t(littleEndian32(b, dataAt + 8)) - littleEndian32(b, dataAt) + 1;
-            const std::int64_t height = std::int64_t(littleEndian32(b, dataAt + 12)) - littleEndian32(b, dataAt + 4) + 1;
-            return sizeIfPositive(width, height);
-        }
+        if (size < 0 || dataAt + static_cast<std::size_t>(size) > b.size()) return;
+        if (visit(name, type, b.subspan(dataAt, static_cast<std::size_t>(size)))) return;
         at = dataAt + static_cast<std::size_t>(size);
     }
-    return std::nullopt;
+}
+
+// dataWindow is a box2i (xMin yMin xMax yMax).
+std::optional<ImageSize> probeExr(Bytes b)
+{
+    std::optional<ImageSize> found;
+    forEachExrAttribute(b, [&](std::string_view name, std::string_view, Bytes value) {
+        if (name != "dataWindow" || value.size() != 16) return false;
+        const std::int64_t width = std::int64_t(littleEndian32(value, 8)) - littleEndian32(value, 0) + 1;
+        const std::int64_t height = std::int64_t(littleEndian32(value, 12)) - littleEndian32(value, 4) + 1;
+        found = sizeIfPositive(width, height);
+        return true;
+    });
+    return found;
 }
 
 } // namespace
@@ -248,6 +261,36 @@ std::optional<ImageSize> probeImageHeader(std::span<const std::uint8_t> bytes)
     if (startsWith(bytes, "#?RADIANCE") || startsWith(bytes, "#?RGBE")) return probeHdr(bytes);
     if (startsWith(bytes, "\x76\x2f\x31\x01")) return probeExr(bytes);
     return std::nullopt;
+}
+
+// "tiles" is a tiledesc (x size, y size, mode); "channels" a chlist: per channel its name, then the
+// pixel type (0 uint, 1 half, 2 float), linear flag, 3 reserved bytes and the x and y sampling, up
+// to an empty name.
+std::optional<ExrTileShape> probeExrTile(std::span<const std::uint8_t> bytes)
+{
+    if (!startsWith(bytes, "\x76\x2f\x31\x01")) return std::nullopt;
+    std::optional<ExrTileShape> tile;
+    std::int64_t channels = 0;
+    std::size_t widest = 0;
+    forEachExrAttribute(bytes, [&](std::string_view name, std::string_view type, Bytes value) {
+        if (name == "tiles" && type == "tiledesc" && value.size() >= 8)
+            tile = ExrTileShape{std::uint32_t(littleEndian32(value, 0)), std::uint32_t(littleEndian32(value, 4)), 0, 0};
+        if (name == "channels" && type == "chlist")
+            for (std::size_t at = 0; at < value.size() && value[at] != 0;) {
+                const auto nameEnd = std::find(value.begin() + static_cast<std::ptrdiff_t>(at), value.end(), 0);
+                const std::size_t typeAt = static_cast<std::size_t>(nameEnd - value.begin()) + 1;
+                if (typeAt + 16 > value.size()) break;
+                ++channels;
+                widest = std::max<std::size_t>(widest, littleEndian32(value, typeAt) == 1 ? 2 : 4);
+                at = typeAt + 16;
+            }
+        return false;
+    });
+    if (tile) {
+        tile->channels = channels;
+        tile->bytesPerValue = widest;
+    }
+    return tile;
 }
 
 } // namespace glint

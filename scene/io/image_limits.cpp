@@ -45,6 +45,11 @@ std::string headerLimitError(std::span<const std::uint8_t> header, std::uint64_t
                              std::size_t bytesPerValue, const DecodeLimits& limits)
 {
     if (std::string problem = imageHeaderProblem(header, fileSize); !problem.empty()) return problem;
+    if (const std::optional<ExrTileShape> tile = probeExrTile(header))
+        if (std::string error = chunkLimitError(tile->width, tile->height, std::max<std::int64_t>(tile->channels, 1),
+                                                std::max(bytesPerValue, tile->bytesPerValue), limits);
+            !error.empty())
+            return error;
     const std::optional<ImageSize> size = probeImageHeader(header);
     return size ? decodeLimitError(size->width, size->height, 1, decodedChannels, bytesPerValue, limits) : std::string();
 }

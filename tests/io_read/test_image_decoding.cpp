@@ -172,6 +172,29 @@ private slots:
         QVERIFY(!decoder.decodeFloat(bytes, {}).ok());
     }
 
+    // OpenEXR allocates a buffer for one tile when it opens a tiled file, whatever the image's size:
+    // a 16x16 image declaring tiles of 47112x2048 made it ask for 578 MB (fuzz_image_decode). The
+    // tile is held to the limits on the header, before OpenImageIO opens the file.
+    void exrTileBeyondTheLimitsIsRefusedBeforeOpening()
+    {
+        const std::vector<std::uint8_t> bytes = readAll(kBombs / "crash-exr-tile-47112x2048.exr");
+        QVERIFY(!bytes.empty());
+        QCOMPARE(probeImageHeader(bytes), std::optional(ImageSize{16, 16}));
+        const std::optional<ExrTileShape> tile = probeExrTile(bytes);
+        QVERIFY(tile);
+        QCOMPARE(tile->width, std::int64_t(47112));
+        QCOMPARE(tile->height, std::int64_t(2048));
+        QCOMPARE(tile->channels, std::int64_t(3));
+        QCOMPARE(tile->bytesPerValue, std::size_t(2)); // half
+        DecodeLimits limits;
+        limits.maxBytes = 64u << 20;
+        const OiioImageDecoder decoder;
+        QCOMPARE(QString::fromStdString(decoder.decodeFloat(bytes, limits).error),
+                 QStringLiteral("the image declares tiles or strips of 47112x2048 pixels x 3 channels (1105 MiB decoded), more than the limit of 64 MiB"));
+        QVERIFY(!probeExrTile(readAll(kBombs / "piz.exr"))); // scanlines: no tile
+        QCOMPARE(probeExrTile(readAll(kBombs / "tiled.exr"))->width, std::int64_t(8));
+    }
+
     // Valid files pass the header checks and decode: the one in the test data, and OpenEXR's
     // layouts written here (scanline ZIP, PIZ and DWAB, tiled, 23 channels, string attributes).
     void validImagesPassTheHeaderChecks()
