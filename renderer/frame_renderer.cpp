@@ -5,6 +5,7 @@
 #include "renderer/passes/accumulate_pass.h"
 #include "renderer/passes/adaptive_sampling.h"
 #include "renderer/passes/mean_denoise_pass.h"
+#include "renderer/passes/selection_outline_pass.h"
 #include "renderer/passes/motion_pass.h"
 #include "renderer/passes/reconstruction.h"
 #include "renderer/passes/reconstruction_parameters.h"
@@ -193,6 +194,7 @@ struct FrameRenderer::State {
     MeanDenoisePass previewDenoise{programs};
     BloomPass bloom{programs};
     BloomPass previewBloom{programs};
+    SelectionOutlinePass outline{programs};
     std::unique_ptr<FrameTargets> targets;
     std::unique_ptr<PreviewTargets> preview;
     std::unique_ptr<RenderPassTargets> passTargets;
@@ -220,6 +222,7 @@ struct FrameRenderer::State {
     std::uint32_t frameSampleIndex = 0; // real-time frames' sample counter: decorrelates frames
     const gl::RenderTarget* result = nullptr; // linear radiance of the last frame (attachment 0)
     bool previewShown = false;  // no full-resolution result yet: the preview stands for the picture
+    std::uint64_t shownIdsVersion = 0; // counts changes of shownGBuffer()'s object ids (the selection outline keeps its mask)
     int nextRow = 0;            // banded Accumulate: the first row of the sample in progress not traced
     FrameWork lastWork;
     int denoisedSamples = 0; // the still mean's sample count when it was last filtered; 0: not since it changed
@@ -330,6 +333,7 @@ struct FrameRenderer::State {
     const gl::RenderTarget& denoisedMean(bool exact);
     const gl::RenderTarget& shown(bool exact);
     const gl::RenderTarget& shownPreview();
+    const gl::RenderTarget* shownGBuffer() const;
     void beginRegion();
     void endRegion();
 };
@@ -376,6 +380,7 @@ void FrameRenderer::State::renderAccumulated() {
         denoisedSamples = 0;
     }
     pictureChanged = false;
+    const int samplesBefore = t.stillMean.sampleCount();
     const int limit = settings.maxSamples > 0 ? settings.maxSamples : std::numeric_limits<int>::max();
     if (wantsPreview()) {
         renderPreview();
@@ -389,6 +394,7 @@ void FrameRenderer::State::renderAccumulated() {
         }
     }
     if (t.stillMean.sampleCount() > 0) previewShown = false;
+    if (samplesBefore == 0 && t.stillMean.sampleCount() > 0) ++shownIdsVersion; // the mean keeps its first sample's ids
     result = t.stillMean.sampleCount() > 0 ? &t.stillMean.mean() : nullptr;
 }
 
@@ -406,6 +412,7 @@ void FrameRenderer::State::renderPreview() {
     pathTrace.render(*gpu, camera, pathTraceSettings(), 0, preview->sample);
     preview->mean.add(preview->sample);
     previewShown = true;
+    ++shownIdsVersion;
     lastWork.previewRows = height;
 }
 
@@ -444,6 +451,7 @@ void FrameRenderer::State::renderRealTime() {
     const int spp = framesSpp(settings);
     const PathTraceSettings pt = pathTraceSettings();
     if (spp > 1) t.frameMean.reset();
+    ++shownIdsVersion;
     lastWork.rows = spp * tracedPixels().height;
     for (int i = 0; i < spp; ++i) {
         pathTrace.render(*gpu, camera, pt, frameSampleIndex++, t.sample);
@@ -555,6 +563,14 @@ const gl::RenderTarget& FrameRenderer::State::shown(bool exact) {
 const gl::RenderTarget& FrameRenderer::State::shownPreview() {
     if (!denoising()) return preview->mean.mean();
     return previewDenoise.execute(preview->mean.mean(), 1);
+}
+
+// The G-buffer whose first hits drawTo() shows (its object ids, depth, normals): the preview's, the
+// still mean's (the first sample's ids and depths), or this frame's; null when nothing is shown.
+const gl::RenderTarget* FrameRenderer::State::shownGBuffer() const {
+    if (!result) return previewShown && preview ? &preview->mean.mean() : nullptr;
+    if (traitsOf(settings.configuration).accumulate) return &targets->stillMean.mean();
+    return framesSpp(settings) > 1 ? &targets->frameMean.mean() : &targets->sample;
 }
 
 FrameRenderer::FrameRenderer() : state_(std::make_unique<State>()) {}
@@ -734,6 +750,16 @@ bool FrameRenderer::drawTo(unsigned int framebuffer, int width, int height) {
     return true;
 }
 
+void FrameRenderer::drawOutline(unsigned int framebuffer, int width, int height, const std::vector<NodeId>& nodes) {
+    State& s = *state_;
+    const gl::RenderTarget* gbuffer = s.shownGBuffer();
+    if (!gbuffer || nodes.empty()) return;
+    CallerGlState guard;
+    std::vector<std::uint32_t> ids;
+    for (const NodeId node : nodes) ids.push_back(node.value);
+    s.outline.draw(*gbuffer, s.shownIdsVersion, std::move(ids), framebuffer, width, height);
+}
+
 FrameImages FrameRenderer::readImages() {
     State& s = *state_;
     FrameImages out;
@@ -750,8 +776,8 @@ FrameImages FrameRenderer::readImages() {
                      s.settings.tonemapper.value_or(s.document().settings.render.tonemapper), t.display);
     out.tonemapped = topDown(t.display.readRgba8(0), out.width, out.height, 4);
     out.radiance = topDown((s.settings.bloomLinear ? bloomed : shown).readRgba(0), out.width, out.height, 4);
+    readGBuffer(*s.shownGBuffer(), out);
     if (traitsOf(s.settings.configuration).accumulate) {
-        readGBuffer(t.stillMean.mean(), out);
         const int samples = t.stillMean.sampleCount();
         out.sampleCounts = s.adaptive() ? topDown(t.adaptive.sampleCounts(samples), out.width, out.height, 1, 1)
                                         : std::vector<float>(std::size_t(out.width) * std::size_t(out.height), float(samples));
@@ -759,7 +785,6 @@ FrameImages FrameRenderer::readImages() {
                                       samples, out.sampleCounts);
         if (s.renderingPasses() && s.passTargets) s.readRenderPasses(out);
     } else {
-        readGBuffer(framesSpp(s.settings) > 1 ? t.frameMean.mean() : t.sample, out);
         out.motion = topDown(t.reconstruction.motion().readRgba(0), out.width, out.height, 2);
     }
     return out;

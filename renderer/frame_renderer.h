@@ -170,6 +170,11 @@ public:
     // Tonemaps the last frame into `framebuffer` (any id, 0 included) scaled to width x height.
     // False, drawing nothing, while no frame of the current scene has been rendered yet.
     bool drawTo(unsigned int framebuffer, int width, int height);
+    // Outlines the objects `nodes` (any order) over what drawTo() drew into `framebuffer`
+    // at width x height, along the edges of their pixels as the shown image's first hits see them:
+    // the preview's, the accumulated mean's or this frame's (renderer/passes/selection_outline_pass.h).
+    // Display only. Draws nothing while drawTo() would draw nothing.
+    void drawOutline(unsigned int framebuffer, int width, int height, const std::vector<NodeId>& nodes);
     FrameImages readImages();
 
     // Samples in the running mean behind the current frame; 0 as soon as the picture changed (scene,

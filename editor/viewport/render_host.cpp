@@ -243,7 +243,10 @@ void RenderHost::paintWhilePreparing(const ViewRequest& request, unsigned int fr
     stats_.stage = ViewStage::Preparing;
     readBack_ = QImage();
     // A scene uploaded but not yet rendered has no image to show: the preview stands in.
-    if (showPrevious_ && renderer_->hasScene() && renderer_->drawTo(framebuffer, request.width, request.height)) return;
+    if (showPrevious_ && renderer_->hasScene() && renderer_->drawTo(framebuffer, request.width, request.height)) {
+        renderer_->drawOutline(framebuffer, request.width, request.height, outlinedNodes());
+        return;
+    }
     paintPreview(request, framebuffer);
 }
 
@@ -269,8 +272,21 @@ void RenderHost::paintTraced(const ViewRequest& request, unsigned int framebuffe
     configure(request);
     if (stats_.error.isEmpty() && wantsSamples()) renderSlice(lastMoving_);
     renderer_->drawTo(framebuffer, request.width, request.height);
+    renderer_->drawOutline(framebuffer, request.width, request.height, outlinedNodes());
     readBack_ = showsReadBack(request.mode) ? debugImage(renderer_->readImages(), request.mode) : QImage();
     noteStage(request);
+}
+
+// The selected nodes and what they hold: selecting a group outlines its objects.
+std::vector<NodeId> RenderHost::outlinedNodes() const {
+    const Scene& scene = document_.scene();
+    std::vector<NodeId> nodes;
+    for (const NodeId selected : document_.selection())
+        if (scene.contains(selected)) {
+            const std::vector<NodeId> subtree = scene.subtree(selected);
+            nodes.insert(nodes.end(), subtree.begin(), subtree.end());
+        }
+    return nodes;
 }
 
 void RenderHost::configure(const ViewRequest& request) {

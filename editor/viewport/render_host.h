@@ -141,6 +141,7 @@ private:
     void paintWhilePreparing(const ViewRequest& request, unsigned int framebuffer);
     void paintPreview(const ViewRequest& request, unsigned int framebuffer);
     void paintTraced(const ViewRequest& request, unsigned int framebuffer);
+    std::vector<NodeId> outlinedNodes() const;
     void configure(const ViewRequest& request);
     void renderSlice(bool moving);
     bool wantsSamples() const;

@@ -2,6 +2,7 @@
 
 #include "renderer/gl/gl_objects.h"
 #include "renderer/gl/program_cache.h"
+#include "renderer/passes/selection_outline_pass.h"
 #include "renderer/gpu_scene/visibility.h"
 #include "scene/geometry/geometry.h"
 
@@ -143,7 +144,7 @@ void PreviewPass::draw(const Scene& scene, unsigned int framebuffer, const Previ
         if (!geometry || geometry->indexCount == 0) continue;
         const glm::mat4 world = scene.worldFromNode(id);
         const glm::mat3 normal = glm::transpose(glm::inverse(glm::mat3(world)));
-        const glm::vec3 colour = id == view.highlight ? glm::vec3(1.0f, 0.62f, 0.16f) : (wire ? glm::vec3(0.85f) : glm::vec3(0.75f));
+        const glm::vec3 colour = id == view.highlight ? selectionColour : (wire ? glm::vec3(0.85f) : glm::vec3(0.75f));
         glUniformMatrix4fv(program.uniform("uWorldFromLocal"), 1, GL_FALSE, &world[0][0]);
         glUniformMatrix3fv(program.uniform("uNormalFromLocal"), 1, GL_FALSE, &normal[0][0]);
         glUniform3fv(program.uniform("uColor"), 1, &colour[0]);

@@ -14,6 +14,8 @@
 // Where the pixel's object moved, or no sample near it saw a reflection, zw = xy (surface motion).
 // Meaningful only where the G-buffer carries the lobe split (SVGF's configurations; elsewhere the
 // distance reads 1 and nothing reads zw).
+#include "common/sorted_ids.glsl"
+
 uniform sampler2D uNormalDepth;
 uniform sampler2D uObjectId;
 uniform sampler2D uSpecularRadiance; // a: reflection distance, 0 where the sample saw no reflection
@@ -35,18 +37,7 @@ uniform int uMovedCount;
 out vec4 outMotion;
 
 // The record of `id` among the moved instances, or -1.
-int movedIndex(float id) {
-    int low = 0;
-    int high = uMovedCount - 1;
-    while (low <= high) {
-        int middle = (low + high) / 2;
-        float at = texelFetch(uMoved, middle * MOVED_TEXELS).x;
-        if (abs(at - id) < 0.5) return middle;
-        if (at < id) low = middle + 1;
-        else high = middle - 1;
-    }
-    return -1;
-}
+int movedIndex(float id) { return sortedIdIndex(uMoved, uMovedCount, MOVED_TEXELS, id); }
 
 bool moved(float id) { return movedIndex(id) >= 0; }
 

@@ -171,6 +171,67 @@ private slots:
         QVERIFY(h_->frames.readImages().radiance == h_->reference.readImages().radiance);
     }
 
+    // Tolerance: exact bytes. The outline of the selection over the drawn image at twice the
+    // image's size: an output pixel takes the selection colour exactly where the object's mask (its
+    // first hits' ids, readImages().objectId) differs one output pixel away, and keeps drawTo()'s
+    // byte everywhere else; no node, nothing drawn. Drawn again unchanged (the kept line), and after
+    // the camera moved (a new picture: the line follows the object).
+    void outlinesTheSelectedObjectsEdgesAndNothingElse() {
+        const RoomScene room = makeRoom();
+        h_->frames.setSettings(settingsFor(renderer::Configuration::Accumulate));
+        h_->frames.setScene(room.scene);
+        h_->frame(cameraAt(room.scene, 0.0f));
+        const int size = 2 * imageSize;
+        GLuint texture = 0, target = 0;
+        glGenTextures(1, &texture);
+        glBindTexture(GL_TEXTURE_2D, texture);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, size, size, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+        glGenFramebuffers(1, &target);
+        glBindFramebuffer(GL_FRAMEBUFFER, target);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
+        const auto read = [&] {
+            std::vector<unsigned char> pixels(std::size_t(size) * std::size_t(size) * 4);
+            glBindFramebuffer(GL_READ_FRAMEBUFFER, target);
+            glReadPixels(0, 0, size, size, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+            return pixels;
+        };
+        const auto checkOutline = [&]() -> int { // edge pixels; -1 after a failure
+            if (!h_->frames.drawTo(target, size, size)) return -1;
+            const std::vector<unsigned char> plain = read();
+            h_->frames.drawOutline(target, size, size, {});
+            if (read() != plain) return -1;
+            h_->frames.drawOutline(target, size, size, {room.occluder, NodeId{9999}});
+            const std::vector<unsigned char> outlined = read();
+            const std::vector<float> ids = h_->frames.readImages().objectId; // top-down
+            const auto inside = [&](int x, int y) { // output pixel, rows bottom-up, clamped as the shader
+                const int ix = std::clamp(x / 2, 0, imageSize - 1), iy = std::clamp(y / 2, 0, imageSize - 1);
+                return ids[std::size_t(imageSize - 1 - iy) * imageSize + std::size_t(ix)] == float(room.occluder.value);
+            };
+            const unsigned char colour[3] = {255, 158, 41}; // renderer::selectionColour in 8 bits
+            int edges = 0;
+            for (int y = 0; y < size; ++y)
+                for (int x = 0; x < size; ++x) {
+                    const bool here = inside(x, y);
+                    const bool edge = inside(x + 1, y) != here || inside(x - 1, y) != here || inside(x, y + 1) != here || inside(x, y - 1) != here;
+                    const std::size_t at = (std::size_t(y) * std::size_t(size) + std::size_t(x)) * 4;
+                    for (std::size_t c = 0; c < 3; ++c)
+                        if (outlined[at + c] != (edge ? colour[c] : plain[at + c])) {
+                            qWarning("pixel (%d, %d) channel %zu: %d", x, y, c, outlined[at + c]);
+                            return -1;
+                        }
+                    edges += edge;
+                }
+            return edges;
+        };
+        const int edges = checkOutline();
+        QVERIFY2(edges > 4 * 20, "the box's outline is drawn"); // the box spans about 7 x 12 image pixels
+        QCOMPARE(checkOutline(), edges);
+        h_->frame(cameraAt(room.scene, 0.3f));
+        QVERIFY(checkOutline() > 4 * 20);
+        glDeleteFramebuffers(1, &target);
+        glDeleteTextures(1, &texture);
+    }
+
     // Tolerance: exact sizes and stages. With a preview divisor the first frame after a change is a
     // low-resolution sample that drawTo() shows until the first full-resolution one is whole.
     void previewStandsInUntilTheFirstSample() {
