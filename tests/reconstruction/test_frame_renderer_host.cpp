@@ -12,6 +12,37 @@
 using namespace glint;
 using namespace glint::test;
 
+namespace {
+
+// A host's RGBA8 framebuffer of size x size, deleted with it.
+struct HostFramebuffer {
+    explicit HostFramebuffer(int side) : size(side) {
+        glGenTextures(1, &texture);
+        glBindTexture(GL_TEXTURE_2D, texture);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, size, size, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+        glGenFramebuffers(1, &framebuffer);
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
+    }
+    ~HostFramebuffer() {
+        glDeleteFramebuffers(1, &framebuffer);
+        glDeleteTextures(1, &texture);
+    }
+    HostFramebuffer(const HostFramebuffer&) = delete;
+    HostFramebuffer& operator=(const HostFramebuffer&) = delete;
+    std::vector<unsigned char> read() const { // rows bottom-up
+        std::vector<unsigned char> pixels(std::size_t(size) * std::size_t(size) * 4);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
+        glReadPixels(0, 0, size, size, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+        return pixels;
+    }
+    int size;
+    GLuint texture = 0;
+    GLuint framebuffer = 0;
+};
+
+} // namespace
+
 class TestFrameRendererHost : public QObject {
     Q_OBJECT
     std::unique_ptr<Harness> h_;
@@ -26,14 +57,10 @@ private slots:
         h_->frames.setScene(room.scene);
         h_->frame(cameraAt(room.scene, 0.0f));
 
-        GLuint texture = 0, target = 0, other = 0;
-        glGenTextures(1, &texture);
-        glBindTexture(GL_TEXTURE_2D, texture);
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, imageSize, imageSize, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-        glGenFramebuffers(1, &target);
-        glBindFramebuffer(GL_FRAMEBUFFER, target);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
+        const HostFramebuffer host(imageSize);
+        const GLuint target = host.framebuffer;
         QCOMPARE(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
+        GLuint other = 0;
         glGenFramebuffers(1, &other);
         glBindFramebuffer(GL_FRAMEBUFFER, other); // the host's current binding, not the target
         glViewport(3, 4, 5, 6);
@@ -57,9 +84,7 @@ private slots:
         glBindVertexArray(0);
         glDeleteVertexArrays(1, &vertexArray);
 
-        std::vector<unsigned char> pixels(static_cast<std::size_t>(imageSize * imageSize * 4));
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, target);
-        glReadPixels(0, 0, imageSize, imageSize, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+        const std::vector<unsigned char> pixels = host.read();
         const auto expected = h_->frames.readImages().tonemapped; // top-down
         for (int y = 0; y < imageSize; ++y)
             for (int x = 0; x < imageSize * 4; ++x)
@@ -67,9 +92,7 @@ private slots:
                          expected[static_cast<std::size_t>(y * imageSize * 4 + x)]);
         glDisable(GL_DEPTH_TEST);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        glDeleteFramebuffers(1, &target);
         glDeleteFramebuffers(1, &other);
-        glDeleteTextures(1, &texture);
     }
 
     // Tolerance: exact sample counts; radiance unchanged by exposure (applied only when drawn).
@@ -182,19 +205,9 @@ private slots:
         h_->frames.setScene(room.scene);
         h_->frame(cameraAt(room.scene, 0.0f));
         const int size = 2 * imageSize;
-        GLuint texture = 0, target = 0;
-        glGenTextures(1, &texture);
-        glBindTexture(GL_TEXTURE_2D, texture);
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, size, size, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-        glGenFramebuffers(1, &target);
-        glBindFramebuffer(GL_FRAMEBUFFER, target);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
-        const auto read = [&] {
-            std::vector<unsigned char> pixels(std::size_t(size) * std::size_t(size) * 4);
-            glBindFramebuffer(GL_READ_FRAMEBUFFER, target);
-            glReadPixels(0, 0, size, size, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
-            return pixels;
-        };
+        const HostFramebuffer host(size);
+        const GLuint target = host.framebuffer;
+        const auto read = [&] { return host.read(); };
         const auto checkOutline = [&]() -> int { // edge pixels; -1 after a failure
             if (!h_->frames.drawTo(target, size, size)) return -1;
             const std::vector<unsigned char> plain = read();
@@ -228,8 +241,6 @@ private slots:
         QCOMPARE(checkOutline(), edges);
         h_->frame(cameraAt(room.scene, 0.3f));
         QVERIFY(checkOutline() > 4 * 20);
-        glDeleteFramebuffers(1, &target);
-        glDeleteTextures(1, &texture);
     }
 
     // Tolerance: exact sizes and stages. With a preview divisor the first frame after a change is a
