@@ -80,9 +80,7 @@ EnvironmentImage loadEnvironmentImage(const std::filesystem::path& file, const D
 }
 
 EnvironmentImage decodeEnvironmentImage(std::span<const std::uint8_t> encoded, const std::string& name, const DecodeLimits& limits) {
-    if (!memoryImageName(encoded))
-        throw FileError(name, "environment-unreadable", "cannot read the environment image: not a PNG, JPEG, HDR, EXR or TIFF file");
-    checkHeader(encoded, encoded.size(), name, limits);
+    checkHeader(encoded, encoded.size(), name, limits); // refuses bombs of the formats it knows, passes the rest
     const MemoryImage opened = openImageFromMemory(encoded);
     if (!opened.input) throw FileError(name, "environment-unreadable", "cannot read the environment image: " + opened.error);
     return readEnvironment(*opened.input, name, limits);
