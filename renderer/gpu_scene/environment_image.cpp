@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <fstream>
+#include <iterator>
+#include <string_view>
 
 namespace glint::renderer {
 namespace {
@@ -73,6 +75,14 @@ EnvironmentImage loadEnvironmentImage(const std::filesystem::path& file, const D
         std::error_code ec;
         const std::uintmax_t size = std::filesystem::file_size(file, ec);
         checkHeader(header, ec ? header.size() : size, file.string(), limits);
+        // A JPEG is opened as textures are, from memory and without its metadata: OpenImageIO 2.4
+        // reads past the end of a broken IPTC block (jpegWithoutMetadata).
+        if (memoryImageName(header) == std::string_view("memory.jpg")) {
+            in.clear();
+            in.seekg(0);
+            const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+            return decodeEnvironmentImage(bytes, file.string(), limits);
+        }
     }
     auto input = OIIO::ImageInput::open(file.string());
     if (!input) throw FileError(file.string(), "environment-unreadable", "cannot read the environment image: " + OIIO::geterror());

@@ -19,16 +19,17 @@ struct ImageSize {
 // image library and without decoding pixels: enough to refuse a header claiming 65535x65535.
 std::optional<ImageSize> probeImageHeader(std::span<const std::uint8_t> bytes);
 
-// The tile of a tiled OpenEXR file's first part, for which OpenEXR allocates a buffer on opening
-// whatever the image's size: its size in pixels, its channels and their widest value in bytes.
-// None for other files or where the header does not say.
-struct ExrTileShape {
+// The chunk of an OpenEXR file's first part, for which OpenEXR allocates its buffers on opening
+// whatever the image's size: a tiled file's tile, or a scanline file's width by the lines its
+// compression packs in one chunk (1 to 256). Its size in pixels, its channels and their widest value
+// in bytes. None for other files or where the header does not say.
+struct ExrChunkShape {
     std::int64_t width = 0;
     std::int64_t height = 0;
     std::int64_t channels = 0;
     std::size_t bytesPerValue = 0;
 };
-std::optional<ExrTileShape> probeExrTile(std::span<const std::uint8_t> bytes);
+std::optional<ExrChunkShape> probeExrChunk(std::span<const std::uint8_t> bytes);
 
 struct DecodeLimits {
     std::uint64_t maxPixels = 16384ull * 16384ull;
@@ -55,8 +56,8 @@ std::string chunkLimitError(std::int64_t chunkWidth, std::int64_t chunkHeight, s
                             const DecodeLimits& limits);
 
 // Why an image file may not be opened, from its first bytes (`header`) and its size: the size
-// probeImageHeader reads beyond the limits (one channel assumed), an OpenEXR tile beyond them
-// (probeExrTile), or an imageHeaderProblem. So an
+// probeImageHeader reads beyond the limits (one channel assumed), an OpenEXR chunk beyond them
+// (probeExrChunk), or an imageHeaderProblem. So an
 // image bomb is refused before an image library opens it: some allocate for the declared size on
 // opening (libjpeg for a progressive JPEG's coefficients, libpng for a chunk, OpenEXR for its
 // attributes). Empty when neither applies.

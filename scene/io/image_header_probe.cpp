@@ -2,6 +2,7 @@
 // checks every offset against the buffer, so truncated or hostile headers give "unknown", never a read
 // past the end.
 #include "image_decoder.h"
+#include "jpeg_segments.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -44,28 +45,17 @@ bool isStartOfFrame(std::uint8_t marker)
     return marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC;
 }
 
-// The marker segments up to the first start-of-frame: precision, height, width. Markers are found
-// as libjpeg finds them (anything before a 0xFF is skipped, then fill bytes), so that a frame
-// header behind garbage is read here too: libjpeg allocates for its size on opening.
+// The first start-of-frame segment: precision, height, width. Its segment is found as libjpeg finds
+// it (jpegSegments), so that a frame header behind garbage is read here too: libjpeg allocates for
+// its size on opening.
 std::optional<ImageSize> probeJpeg(Bytes b)
 {
-    std::size_t at = 2;
-    while (true) {
-        while (at < b.size() && b[at] != 0xFF) ++at;
-        while (at < b.size() && b[at] == 0xFF) ++at;
-        if (at >= b.size()) return std::nullopt;
-        const std::uint8_t marker = b[at++]; // `at` is now at the segment's length
-        if (marker == 0x00 || marker == 0x01 || (marker >= 0xD0 && marker <= 0xD8)) continue; // no segment
-        if (marker == 0xD9 || marker == 0xDA) return std::nullopt; // the end, or a scan before any frame
-        if (at + 2 > b.size()) return std::nullopt;
-        const std::size_t length = bigEndian16(b, at);
-        if (isStartOfFrame(marker)) {
-            if (at + 7 > b.size()) return std::nullopt;
-            return sizeIfPositive(bigEndian16(b, at + 5), bigEndian16(b, at + 3));
-        }
-        if (length < 2) return std::nullopt;
-        at += length;
+    for (const JpegSegment& segment : jpegSegments(b).segments) {
+        if (segment.marker == 0xDA) return std::nullopt; // a scan before any frame
+        if (isStartOfFrame(segment.marker))
+            return segment.begin + 9 > b.size() ? std::nullopt : sizeIfPositive(bigEndian16(b, segment.begin + 7), bigEndian16(b, segment.begin + 5));
     }
+    return std::nullopt;
 }
 
 // Text header lines up to an empty line, then "-Y height +X width".
@@ -105,16 +95,21 @@ void forEachExrAttribute(Bytes b, Visit visit)
     }
 }
 
-// dataWindow is a box2i (xMin yMin xMax yMax).
+// dataWindow is a box2i (xMin yMin xMax yMax). OpenEXR reads every attribute of a header in turn,
+// a later one of a name replacing an earlier: so does each probe here.
+std::optional<ImageSize> exrDataWindowSize(Bytes value)
+{
+    const std::int64_t width = std::int64_t(littleEndian32(value, 8)) - littleEndian32(value, 0) + 1;
+    const std::int64_t height = std::int64_t(littleEndian32(value, 12)) - littleEndian32(value, 4) + 1;
+    return sizeIfPositive(width, height);
+}
+
 std::optional<ImageSize> probeExr(Bytes b)
 {
     std::optional<ImageSize> found;
     forEachExrAttribute(b, [&](std::string_view name, std::string_view, Bytes value) {
-        if (name != "dataWindow" || value.size() != 16) return false;
-        const std::int64_t width = std::int64_t(littleEndian32(value, 8)) - littleEndian32(value, 0) + 1;
-        const std::int64_t height = std::int64_t(littleEndian32(value, 12)) - littleEndian32(value, 4) + 1;
-        found = sizeIfPositive(width, height);
-        return true;
+        if (name == "dataWindow" && value.size() == 16) found = exrDataWindowSize(value);
+        return false;
     });
     return found;
 }
@@ -207,7 +202,7 @@ std::string imageHeaderProblem(std::span<const std::uint8_t> b, std::uint64_t fi
     const bool multipart = (b[5] & 0x10) != 0; // version flags: bit 12
     std::size_t at = 8;
     std::int64_t width = 0, height = 0, tileWidth = 0, tileHeight = 0;
-    std::uint8_t compression = 0;
+    std::uint8_t compression = 3; // OpenEXR's default, ZIP
     const auto chunksProblem = [&]() -> std::string {
         if (width <= 0 || height <= 0) return {};
         const std::int64_t chunks = tileWidth > 0 && tileHeight > 0
@@ -221,7 +216,7 @@ std::string imageHeaderProblem(std::span<const std::uint8_t> b, std::uint64_t fi
         if (b[at] == 0) { // the end of a header; a multi-part file's list of headers ends with an empty one
             if (std::string problem = chunksProblem(); !problem.empty()) return problem;
             width = height = tileWidth = tileHeight = 0;
-            compression = 0;
+            compression = 3;
             if (!multipart || ++at >= b.size() || b[at] == 0) return {};
             continue;
         }
@@ -265,17 +260,23 @@ std::optional<ImageSize> probeImageHeader(std::span<const std::uint8_t> bytes)
 
 // "tiles" is a tiledesc (x size, y size, mode); "channels" a chlist: per channel its name, then the
 // pixel type (0 uint, 1 half, 2 float), linear flag, 3 reserved bytes and the x and y sampling, up
-// to an empty name.
-std::optional<ExrTileShape> probeExrTile(std::span<const std::uint8_t> bytes)
+// to an empty name. Without a compression attribute OpenEXR's default, ZIP, applies.
+std::optional<ExrChunkShape> probeExrChunk(std::span<const std::uint8_t> bytes)
 {
     if (!startsWith(bytes, "\x76\x2f\x31\x01")) return std::nullopt;
-    std::optional<ExrTileShape> tile;
+    std::optional<ExrChunkShape> tile;
+    std::optional<ImageSize> window;
+    std::uint8_t compression = 3;
     std::int64_t channels = 0;
     std::size_t widest = 0;
     forEachExrAttribute(bytes, [&](std::string_view name, std::string_view type, Bytes value) {
         if (name == "tiles" && type == "tiledesc" && value.size() >= 8)
-            tile = ExrTileShape{std::uint32_t(littleEndian32(value, 0)), std::uint32_t(littleEndian32(value, 4)), 0, 0};
-        if (name == "channels" && type == "chlist")
+            tile = ExrChunkShape{std::uint32_t(littleEndian32(value, 0)), std::uint32_t(littleEndian32(value, 4)), 0, 0};
+        if (name == "dataWindow" && type == "box2i" && value.size() == 16) window = exrDataWindowSize(value);
+        if (name == "compression" && type == "compression" && value.size() == 1) compression = value[0];
+        if (name == "channels" && type == "chlist") {
+            channels = 0;
+            widest = 0;
             for (std::size_t at = 0; at < value.size() && value[at] != 0;) {
                 const auto nameEnd = std::find(value.begin() + static_cast<std::ptrdiff_t>(at), value.end(), 0);
                 const std::size_t typeAt = static_cast<std::size_t>(nameEnd - value.begin()) + 1;
@@ -284,13 +285,16 @@ std::optional<ExrTileShape> probeExrTile(std::span<const std::uint8_t> bytes)
                 widest = std::max<std::size_t>(widest, littleEndian32(value, typeAt) == 1 ? 2 : 4);
                 at = typeAt + 16;
             }
+        }
         return false;
     });
-    if (tile) {
-        tile->channels = channels;
-        tile->bytesPerValue = widest;
+    std::optional<ExrChunkShape> chunk = tile;
+    if (!chunk && window) chunk = ExrChunkShape{window->width, exrLinesPerChunk(compression), 0, 0};
+    if (chunk) {
+        chunk->channels = channels;
+        chunk->bytesPerValue = widest;
     }
-    return tile;
+    return chunk;
 }
 
 } // namespace glint

@@ -45,9 +45,9 @@ std::string headerLimitError(std::span<const std::uint8_t> header, std::uint64_t
                              std::size_t bytesPerValue, const DecodeLimits& limits)
 {
     if (std::string problem = imageHeaderProblem(header, fileSize); !problem.empty()) return problem;
-    if (const std::optional<ExrTileShape> tile = probeExrTile(header))
-        if (std::string error = chunkLimitError(tile->width, tile->height, std::max<std::int64_t>(tile->channels, 1),
-                                                std::max(bytesPerValue, tile->bytesPerValue), limits);
+    if (const std::optional<ExrChunkShape> chunk = probeExrChunk(header))
+        if (std::string error = chunkLimitError(chunk->width, chunk->height, std::max<std::int64_t>(chunk->channels, 1),
+                                                std::max(bytesPerValue, chunk->bytesPerValue), limits);
             !error.empty())
             return error;
     const std::optional<ImageSize> size = probeImageHeader(header);

@@ -1,5 +1,6 @@
 // Image headers probed without a library, and OpenImageIO decoding from memory with its caps.
 #include "scene/io/image_decoder.h"
+#include "scene/io/jpeg_segments.h"
 #include "scene/io/oiio/oiio_image_decoder.h"
 
 #include "io_read_helpers.h"
@@ -153,6 +154,8 @@ private slots:
                                           << "the image declares 65500x65500 pixels, more than the limit of 268435456 pixels";
         QTest::newRow("jpeg frame after garbage") << "crash-jpeg-frame-after-garbage.jpg"
                                                   << "the image declares 65500x65500 pixels, more than the limit of 268435456 pixels";
+        QTest::newRow("jpeg frame after an empty app1") << "crash-jpeg-frame-after-empty-app1.jpg"
+                                                        << "the image declares 65500x65500 pixels, more than the limit of 268435456 pixels";
         QTest::newRow("exr attribute size") << "crash-exr-attribute-size-bomb.exr" << "declares";
         QTest::newRow("exr channel list") << "crash-exr-channel-list-overrun.exr" << "the OpenEXR attribute 'channels' (chlist) does not end where it says";
         QTest::newRow("tiff strip") << "crash-tiff-strip-taller-than-image.tif"
@@ -172,15 +175,15 @@ private slots:
         QVERIFY(!decoder.decodeFloat(bytes, {}).ok());
     }
 
-    // OpenEXR allocates a buffer for one tile when it opens a tiled file, whatever the image's size:
-    // a 16x16 image declaring tiles of 47112x2048 made it ask for 578 MB (fuzz_image_decode). The
-    // tile is held to the limits on the header, before OpenImageIO opens the file.
+    // OpenEXR allocates a buffer for one chunk when it opens a file, whatever the image's size: a
+    // 16x16 image declaring tiles of 47112x2048 made it ask for 578 MB (fuzz_image_decode). The
+    // chunk is held to the limits on the header, before OpenImageIO opens the file.
     void exrTileBeyondTheLimitsIsRefusedBeforeOpening()
     {
         const std::vector<std::uint8_t> bytes = readAll(kBombs / "crash-exr-tile-47112x2048.exr");
         QVERIFY(!bytes.empty());
         QCOMPARE(probeImageHeader(bytes), std::optional(ImageSize{16, 16}));
-        const std::optional<ExrTileShape> tile = probeExrTile(bytes);
+        const std::optional<ExrChunkShape> tile = probeExrChunk(bytes);
         QVERIFY(tile);
         QCOMPARE(tile->width, std::int64_t(47112));
         QCOMPARE(tile->height, std::int64_t(2048));
@@ -191,8 +194,42 @@ private slots:
         const OiioImageDecoder decoder;
         QCOMPARE(QString::fromStdString(decoder.decodeFloat(bytes, limits).error),
                  QStringLiteral("the image declares tiles or strips of 47112x2048 pixels x 3 channels (1105 MiB decoded), more than the limit of 64 MiB"));
-        QVERIFY(!probeExrTile(readAll(kBombs / "piz.exr"))); // scanlines: no tile
-        QCOMPARE(probeExrTile(readAll(kBombs / "tiled.exr"))->width, std::int64_t(8));
+        QCOMPARE(probeExrChunk(readAll(kBombs / "tiled.exr"))->width, std::int64_t(8));
+        const std::optional<ExrChunkShape> scanlines = probeExrChunk(readAll(kBombs / "piz.exr")); // 4 wide, 32 lines a chunk
+        QVERIFY(scanlines);
+        QCOMPARE(scanlines->width, std::int64_t(4));
+        QCOMPARE(scanlines->height, std::int64_t(32));
+    }
+
+    // A scanline file's chunk is its width by its compression's lines (16 for ZIP, OpenEXR's default
+    // without the attribute; 32 for DWAA). These 4-line files repeat dataWindow, and OpenEXR takes
+    // the last: 16,187,396 and 7,995,396 pixels wide, for which it asked for 2 GB on opening
+    // (fuzz_image_decode). The probes take the last value too.
+    void exrChunkOfTheLastDataWindowIsHeldToTheLimits_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<int>("width");
+        QTest::addColumn<int>("lines");
+        QTest::newRow("zip by default") << "crash-exr-second-data-window-16187396-wide.exr" << 16187396 << 16;
+        QTest::newRow("dwaa") << "crash-exr-second-data-window-dwaa.exr" << 7995396 << 32;
+    }
+    void exrChunkOfTheLastDataWindowIsHeldToTheLimits()
+    {
+        QFETCH(QString, file);
+        QFETCH(int, width);
+        QFETCH(int, lines);
+        const std::vector<std::uint8_t> bytes = readAll(kBombs / file.toStdString());
+        QCOMPARE(probeImageHeader(bytes), std::optional(ImageSize{width, 4}));
+        const std::optional<ExrChunkShape> chunk = probeExrChunk(bytes);
+        QVERIFY(chunk);
+        QCOMPARE(chunk->width, std::int64_t(width));
+        QCOMPARE(chunk->height, std::int64_t(lines));
+        QCOMPARE(chunk->channels, std::int64_t(4));
+        DecodeLimits limits;
+        limits.maxBytes = 64u << 20;
+        const QString error = QString::fromStdString(OiioImageDecoder().decode8(bytes, limits).error);
+        QVERIFY2(error.startsWith(QStringLiteral("the image declares tiles or strips of %1x%2 pixels x 4 channels").arg(width).arg(lines)),
+                 qPrintable(error));
     }
 
     // Valid files pass the header checks and decode: the one in the test data, and OpenEXR's
@@ -258,6 +295,67 @@ private slots:
         const DecodedImage<float> image = decoder.decodeFloat(bytes, {});
         QVERIFY(!image.ok());
         QVERIFY2(QString::fromStdString(image.error).contains("OpenEXR"), image.error.c_str());
+    }
+
+    // OpenImageIO 2.4 parses a JPEG's metadata while it opens the file, and its IPTC parser reads
+    // past the end of a broken segment (the seed below, found by fuzz_image_decode). Glint opens a
+    // JPEG without its metadata: none of it reaches the spec, and the pixels are OpenImageIO's own.
+    void jpegIsOpenedWithoutItsMetadata()
+    {
+        const fs::path file = kBombs / "metadata.jpg"; // 8x8, with Exif, IPTC and a comment
+        const MemoryImage ours = openImageFromMemory(readAll(file));
+        const std::unique_ptr<OIIO::ImageInput> theirs = OIIO::ImageInput::open(file.string());
+        QVERIFY(ours.input && theirs);
+        QVERIFY(theirs->spec().find_attribute("IPTC:Caption") && theirs->spec().find_attribute("Exif:ExifVersion") &&
+                theirs->spec().find_attribute("ImageDescription"));
+        for (const OIIO::ParamValue& attribute : ours.input->spec().extra_attribs) {
+            const std::string name = attribute.name().string();
+            QVERIFY2(!name.starts_with("Exif:") && !name.starts_with("IPTC:") && name != "ImageDescription", name.c_str());
+        }
+        QCOMPARE(ours.input->spec().width, 8);
+        std::vector<std::uint8_t> a(8 * 8 * 3), b(8 * 8 * 3, 1);
+        QVERIFY(ours.input->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, a.data()));
+        QVERIFY(theirs->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, b.data()));
+        QVERIFY(a == b);
+
+        // Their pixels are whole: only their metadata is broken (an IPTC block before the first scan, and one after it).
+        for (const char* name : {"crash-jpeg-iptc-past-its-segment.jpg", "crash-jpeg-iptc-after-a-scan.jpg"}) {
+            const DecodedImage<std::uint8_t> broken = OiioImageDecoder().decode8(readAll(kBombs / name), {});
+            QVERIFY2(broken.ok(), (name + (": " + broken.error)).c_str());
+            QCOMPARE(broken.width, 8);
+        }
+    }
+
+    // Segments are found as libjpeg finds them, scans' entropy-coded data included (a stuffed 0xFF00
+    // and a restart marker are data; metadata may follow a scan in a progressive file). The metadata
+    // segments go; the rest stays byte for byte, bar garbage and fill bytes between segments.
+    void jpegWithoutMetadataKeepsEverythingElse()
+    {
+        const std::vector<std::uint8_t> soi = {0xFF, 0xD8}, jfif = {0xFF, 0xE0, 0, 4, 'J', 'F'}, garbage = {0x12, 0x34},
+                                         exif = {0xFF, 0xE1, 0, 4, 'E', 'x'}, comment = {0xFF, 0xFE, 0, 3, 'c'},
+                                         adobe = {0xFF, 0xEE, 0, 3, 'A'}, fill = {0xFF}, table = {0xFF, 0xDB, 0, 3, 7},
+                                         restart = {0xFF, 0xD0}, iptc = {0xFF, 0xED, 0, 3, 'P'},
+                                         scan = {0xFF, 0xDA, 0, 3, 1, 0x55, 0xFF, 0x00, 0x66, 0xFF, 0xD0, 0x77},
+                                         lastScan = {0xFF, 0xDA, 0, 3, 2, 0x88}, eoi = {0xFF, 0xD9, 0xAB};
+        std::vector<std::uint8_t> file, expected;
+        for (const auto* part : {&soi, &jfif, &garbage, &exif, &comment, &adobe, &fill, &table, &restart, &iptc, &scan, &fill, &exif,
+                                 &table, &lastScan, &eoi})
+            file.insert(file.end(), part->begin(), part->end());
+        for (const auto* part : {&soi, &jfif, &adobe, &table, &scan, &table, &lastScan, &eoi}) expected.insert(expected.end(), part->begin(), part->end());
+        QCOMPARE(jpegWithoutMetadata(file), expected);
+        // A length less than 2 ends the segment after its length field, as libjpeg reads on there (a
+        // frame behind such a segment was a 1 GB allocation the probe did not see).
+        std::vector<std::uint8_t> broken = soi;
+        for (const auto* part : {&exif, &table, &table}) broken.insert(broken.end(), part->begin(), part->end());
+        broken[5] = 0; // Exif's length
+        broken[5 + exif.size()] = 1; // the first table's
+        expected = soi;
+        for (const std::uint8_t b : {0xFF, 0xDB, 0, 1}) expected.push_back(b);
+        expected.insert(expected.end(), table.begin(), table.end());
+        QCOMPARE(jpegWithoutMetadata(broken), expected);
+        std::vector<std::uint8_t> hidden = jpegHeader(65500, 65500);
+        hidden.insert(hidden.begin() + 2, {0xFF, 0xE1, 0, 0, 'E', 'x', 'i', 'f'});
+        QCOMPARE(probeImageHeader(hidden), std::optional(ImageSize{65500, 65500}));
     }
 
     // Only the reader the signature names sees the bytes, and its complaint is the error.

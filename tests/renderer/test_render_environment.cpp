@@ -15,8 +15,11 @@
 #include <QTest>
 
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <memory>
 #include <string>
+#include <vector>
 
 using namespace glint;
 using namespace glint::test;
@@ -109,6 +112,22 @@ private slots:
                 QCOMPARE(e.file(), seeds + name);
                 QVERIFY2(e.message().find("more than the limit") != std::string::npos, e.what());
             }
+        }
+    }
+
+    // A JPEG environment is read as textures are, from memory without its metadata: these files'
+    // broken IPTC blocks made OpenImageIO 2.4 read past a buffer (found by fuzz_image_decode). Their
+    // pixels are whole, and load as the in-memory path decodes them.
+    void jpegEnvironmentsLoadWithoutTheirMetadata() {
+        const std::string seeds = GLINT_TEST_DATA_DIR "/../fuzz/seeds/image_decode/";
+        for (const std::string name : {"crash-jpeg-iptc-past-its-segment.jpg", "crash-jpeg-iptc-after-a-scan.jpg", "metadata.jpg"}) {
+            const renderer::EnvironmentImage loaded = renderer::loadEnvironmentImage(seeds + name);
+            std::ifstream in(seeds + name, std::ios::binary);
+            const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+            const renderer::EnvironmentImage decoded = renderer::decodeEnvironmentImage(bytes, name);
+            QCOMPARE(loaded.width, 8);
+            QCOMPARE(loaded.height, 8);
+            QVERIFY2(loaded.rgb == decoded.rgb, name.c_str());
         }
     }
 

@@ -1,11 +1,14 @@
 #include "oiio_image_decoder.h"
 
+#include "scene/io/jpeg_segments.h"
+
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cstddef>
 #include <memory>
+#include <string_view>
 #include <vector>
 
 namespace glint {
@@ -50,6 +53,10 @@ MemoryImage openImageFromMemory(std::span<const std::uint8_t> encoded)
     if (!input) {
         opened.error = OIIO::geterror();
         return opened;
+    }
+    if (name == std::string_view("memory.jpg")) {
+        opened.jpeg = jpegWithoutMetadata(encoded);
+        encoded = opened.jpeg;
     }
     opened.bytes = std::make_unique<BoundedMemReader>(encoded.data(), encoded.size());
     OIIO::ImageSpec spec;
