@@ -50,12 +50,10 @@ bool isStartOfFrame(std::uint8_t marker)
 // its size on opening.
 std::optional<ImageSize> probeJpeg(Bytes b)
 {
-    for (const JpegSegment& segment : jpegSegments(b).segments) {
-        if (segment.marker == 0xDA) return std::nullopt; // a scan before any frame
+    for (const JpegSegment& segment : jpegSegments(b, JpegWalk::ToTheFirstScan).segments)
         if (isStartOfFrame(segment.marker))
             return segment.begin + 9 > b.size() ? std::nullopt : sizeIfPositive(bigEndian16(b, segment.begin + 7), bigEndian16(b, segment.begin + 5));
-    }
-    return std::nullopt;
+    return std::nullopt; // none before the first scan
 }
 
 // Text header lines up to an empty line, then "-Y height +X width".

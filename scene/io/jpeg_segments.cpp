@@ -30,7 +30,7 @@ std::size_t scanDataEnd(std::span<const std::uint8_t> b, std::size_t at)
 
 } // namespace
 
-JpegLayout jpegSegments(std::span<const std::uint8_t> b)
+JpegLayout jpegSegments(std::span<const std::uint8_t> b, JpegWalk walk)
 {
     JpegLayout layout;
     std::size_t at = 2;
@@ -41,7 +41,7 @@ JpegLayout jpegSegments(std::span<const std::uint8_t> b)
         const std::size_t begin = at - 1;
         const std::uint8_t marker = b[at++]; // `at` is now at the segment's length
         if (carriesNoSegment(marker)) continue;
-        if (marker == 0xD9 || at + 2 > b.size()) { // the end, or a length cut short
+        if (marker == 0xD9 || at + 2 > b.size() || (marker == 0xDA && walk == JpegWalk::ToTheFirstScan)) { // the end, a length cut short
             layout.unwalked = begin;
             return layout;
         }
@@ -58,7 +58,7 @@ JpegLayout jpegSegments(std::span<const std::uint8_t> b)
 
 std::vector<std::uint8_t> jpegWithoutMetadata(std::span<const std::uint8_t> bytes)
 {
-    const JpegLayout layout = jpegSegments(bytes);
+    const JpegLayout layout = jpegSegments(bytes, JpegWalk::WholeFile);
     std::vector<std::uint8_t> kept(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(std::min<std::size_t>(2, bytes.size())));
     kept.reserve(bytes.size());
     for (const JpegSegment& segment : layout.segments)

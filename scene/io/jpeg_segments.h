@@ -15,14 +15,19 @@ struct JpegSegment {
 
 struct JpegLayout {
     std::vector<JpegSegment> segments;
-    std::size_t unwalked = 0; // where the walk stopped: the end-of-image marker, a length cut short, the file's end
+    // Where the walk stopped: the end-of-image marker, a length cut short, the file's end, or
+    // (JpegWalk::ToTheFirstScan) that scan's marker.
+    std::size_t unwalked = 0;
 };
+
+enum class JpegWalk { ToTheFirstScan, WholeFile };
 
 // Every segment after the start-of-image marker. Between segments anything before a 0xFF is
 // skipped, then fill bytes, as libjpeg does; markers that carry no segment (restarts, TEM, a stray
 // 0xFF00) are skipped too. A segment whose length is less than 2 ends after its length field. A
 // scan's entropy-coded data runs to the next marker that is not a stuffed 0xFF00 or a restart.
-JpegLayout jpegSegments(std::span<const std::uint8_t> bytes);
+// ToTheFirstScan stops at the first scan's marker (where the headers end: no need to read on).
+JpegLayout jpegSegments(std::span<const std::uint8_t> bytes, JpegWalk walk);
 
 // The same file without its metadata segments: Exif and XMP (APP1), ICC profiles (APP2), IPTC
 // (APP13) and every other APPn but JFIF (APP0) and Adobe (APP14, which says how the colours are
