@@ -41,7 +41,8 @@ JpegLayout jpegSegments(std::span<const std::uint8_t> b, JpegWalk walk)
         const std::size_t begin = at - 1;
         const std::uint8_t marker = b[at++]; // `at` is now at the segment's length
         if (carriesNoSegment(marker)) continue;
-        if (marker == 0xD9 || at + 2 > b.size() || (marker == 0xDA && walk == JpegWalk::ToTheFirstScan)) { // the end, a length cut short
+        // The end, a length cut short, or the first scan where the walk stops there.
+        if (marker == 0xD9 || at + 2 > b.size() || (marker == 0xDA && walk == JpegWalk::ToTheFirstScan)) {
             layout.unwalked = begin;
             return layout;
         }
