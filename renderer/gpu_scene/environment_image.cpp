@@ -68,21 +68,22 @@ void checkHeader(std::span<const std::uint8_t> header, std::uint64_t fileSize, c
 
 EnvironmentImage loadEnvironmentImage(const std::filesystem::path& file, const DecodeLimits& limits) {
     {
-        std::vector<std::uint8_t> header(256 * 1024); // JPEG's frame header may follow large metadata segments
+        std::vector<std::uint8_t> header(256 * 1024); // an OpenEXR header may hold large attributes
         std::ifstream in(file, std::ios::binary);
         in.read(reinterpret_cast<char*>(header.data()), static_cast<std::streamsize>(header.size()));
         header.resize(static_cast<std::size_t>(in.gcount()));
-        std::error_code ec;
-        const std::uintmax_t size = std::filesystem::file_size(file, ec);
-        checkHeader(header, ec ? header.size() : size, file.string(), limits);
         // A JPEG is opened as textures are, from memory and without its metadata: OpenImageIO 2.4
-        // reads past the end of a broken IPTC block (jpegWithoutMetadata).
+        // reads past the end of a broken IPTC block (jpegWithoutMetadata). The memory path checks
+        // the whole file's header.
         if (memoryImageName(header) == std::string_view("memory.jpg")) {
             in.clear();
             in.seekg(0);
             const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
             return decodeEnvironmentImage(bytes, file.string(), limits);
         }
+        std::error_code ec;
+        const std::uintmax_t size = std::filesystem::file_size(file, ec);
+        checkHeader(header, ec ? header.size() : size, file.string(), limits);
     }
     auto input = OIIO::ImageInput::open(file.string());
     if (!input) throw FileError(file.string(), "environment-unreadable", "cannot read the environment image: " + OIIO::geterror());
