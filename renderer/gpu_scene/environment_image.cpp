@@ -10,8 +10,7 @@
 
 #include <algorithm>
 #include <fstream>
-#include <iterator>
-#include <string_view>
+#include <utility>
 
 namespace glint::renderer {
 namespace {
@@ -67,27 +66,38 @@ void checkHeader(std::span<const std::uint8_t> header, std::uint64_t fileSize, c
 } // namespace
 
 EnvironmentImage loadEnvironmentImage(const std::filesystem::path& file, const DecodeLimits& limits) {
-    {
-        std::vector<std::uint8_t> header(256 * 1024); // an OpenEXR header may hold large attributes
-        std::ifstream in(file, std::ios::binary);
-        in.read(reinterpret_cast<char*>(header.data()), static_cast<std::streamsize>(header.size()));
-        header.resize(static_cast<std::size_t>(in.gcount()));
-        // A JPEG is opened as textures are, from memory and without its metadata: OpenImageIO 2.4
-        // reads past the end of a broken IPTC block (jpegWithoutMetadata). The memory path checks
-        // the whole file's header.
-        if (memoryImageName(header) == std::string_view("memory.jpg")) {
-            in.clear();
-            in.seekg(0);
-            const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-            return decodeEnvironmentImage(bytes, file.string(), limits);
-        }
-        std::error_code ec;
-        const std::uintmax_t size = std::filesystem::file_size(file, ec);
-        checkHeader(header, ec ? header.size() : size, file.string(), limits);
+    const std::string name = file.string();
+    std::ifstream in(file, std::ios::binary);
+    std::vector<std::uint8_t> header(256 * 1024);
+    in.read(reinterpret_cast<char*>(header.data()), static_cast<std::streamsize>(header.size()));
+    header.resize(static_cast<std::size_t>(in.gcount()));
+    std::error_code ec;
+    const std::uintmax_t size = std::filesystem::file_size(file, ec);
+    const bool wholeFileRead = ec || size <= header.size();
+    if (!memoryImageName(header)) { // a format Glint does not sniff (.tga, .dds, ...): OpenImageIO opens it by name
+        checkHeader(header, wholeFileRead ? header.size() : size, name, limits);
+        auto input = OIIO::ImageInput::open(name);
+        if (!input) throw FileError(name, "environment-unreadable", "cannot read the environment image: " + OIIO::geterror());
+        return readEnvironment(*input, name, limits);
     }
-    auto input = OIIO::ImageInput::open(file.string());
-    if (!input) throw FileError(file.string(), "environment-unreadable", "cannot read the environment image: " + OIIO::geterror());
-    return readEnvironment(*input, file.string(), limits);
+    // The formats Glint knows are decoded from memory, as textures are, so the memory path checks the
+    // whole header: an OpenEXR header may run past the first bytes (and declare a second, larger data
+    // window there), and a JPEG is opened without its metadata (OpenImageIO 2.4 reads past the end
+    // of a broken IPTC block: jpegWithoutMetadata). A bomb the first bytes show is refused before the
+    // rest is read.
+    std::vector<std::uint8_t> bytes = std::move(header);
+    if (!wholeFileRead) {
+        checkHeader(bytes, size, name, limits);
+        if (size > 2 * limits.maxBytes)
+            throw FileError(name, "environment-too-large",
+                            "cannot read the environment image: the file holds " + std::to_string(size) + " bytes, more than twice the " +
+                                std::to_string(limits.maxBytes) + " bytes an environment may decode to");
+        const std::size_t read = bytes.size();
+        bytes.resize(size);
+        in.read(reinterpret_cast<char*>(bytes.data() + read), static_cast<std::streamsize>(size - read));
+        bytes.resize(read + static_cast<std::size_t>(in.gcount()));
+    }
+    return decodeEnvironmentImage(bytes, name, limits);
 }
 
 EnvironmentImage decodeEnvironmentImage(std::span<const std::uint8_t> encoded, const std::string& name, const DecodeLimits& limits) {

@@ -131,6 +131,54 @@ private slots:
         }
     }
 
+    // An OpenEXR header longer than the first bytes Glint reads before opening a file: fuzz_image_decode's
+    // seed with a second data window 7,995,396 pixels wide (DWAA, 32 lines a chunk), behind a 300 KiB
+    // comment. OpenEXR takes the last data window and allocated a 3.9 GB chunk buffer for it; the
+    // whole header is checked now, and the file refused before OpenEXR opens it.
+    void longOpenExrHeadersAreCheckedWhole() {
+        std::ifstream in(GLINT_TEST_DATA_DIR "/../fuzz/seeds/image_decode/crash-exr-second-data-window-dwaa.exr", std::ios::binary);
+        std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        using namespace std::string_literals; // names and types end in a zero byte
+        const std::string dataWindow = "dataWindow\0box2i\0"s;
+        const std::size_t second = bytes.find(dataWindow, bytes.find(dataWindow) + 1);
+        QVERIFY(second != std::string::npos);
+        const std::uint32_t commentBytes = 300 * 1024;
+        std::string comment = "comments\0string\0"s;
+        for (int shift = 0; shift < 32; shift += 8) comment += char((commentBytes >> shift) & 0xFFu);
+        comment += std::string(commentBytes, 'x');
+        bytes.insert(second, comment);
+        QTemporaryDir dir;
+        const std::string file = dir.filePath("long-header.exr").toStdString();
+        std::ofstream(file, std::ios::binary) << bytes;
+        try {
+            renderer::loadEnvironmentImage(file);
+            QFAIL("a long header's second data window was not seen");
+        } catch (const FileError& e) {
+            QCOMPARE(e.code(), std::string("environment-too-large"));
+            QCOMPARE(e.file(), file);
+            QVERIFY2(e.message().find("7995396x32 pixels") != std::string::npos, e.what());
+        }
+    }
+
+    // A file Glint reads whole is held to twice the decode limit first: here 1 MiB, and a Radiance
+    // header of 8 x 4 pixels with 2 MiB and one byte of data behind it.
+    void environmentFilesBeyondTwiceTheLimitAreRefusedByTheirSize() {
+        QTemporaryDir dir;
+        const std::string file = dir.filePath("padded.hdr").toStdString();
+        std::string bytes = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 4 +X 8\n";
+        bytes.resize(2 * 1024 * 1024 + 1, '\x7f');
+        std::ofstream(file, std::ios::binary) << bytes;
+        DecodeLimits limits;
+        limits.maxBytes = 1024 * 1024;
+        try {
+            renderer::loadEnvironmentImage(file, limits);
+            QFAIL("a file beyond twice the limit was read");
+        } catch (const FileError& e) {
+            QCOMPARE(e.code(), std::string("environment-too-large"));
+            QVERIFY2(e.message().find("the file holds 2097153 bytes, more than twice the 1048576 bytes") != std::string::npos, e.what());
+        }
+    }
+
     void orientationFollowsTheContract_data() {
         QTest::addColumn<float>("x");
         QTest::addColumn<float>("y");
