@@ -169,7 +169,7 @@ RayHit intersectClosest(const FlatScene& scene, const Ray& worldRay, float tMax,
     return result;
 }
 
-bool occluded(const FlatScene& scene, const Ray& worldRay, float tMax, const ShapeIntersector& shapes)
+bool occluded(const FlatScene& scene, const Ray& worldRay, float tMax, const ShapeIntersector& shapes, TraversalCost* cost)
 {
     bool blocked = false;
     walkScene(
@@ -177,7 +177,8 @@ bool occluded(const FlatScene& scene, const Ray& worldRay, float tMax, const Sha
         [&](std::uint32_t, std::uint32_t shape, const Ray& local) {
             float limit = tMax;
             return blocked = shapes && shapes(shape, local, limit);
-        });
+        },
+        cost);
     return blocked;
 }
 

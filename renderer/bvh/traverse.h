@@ -24,7 +24,8 @@ struct TraversalCost {
 RayHit intersectClosest(const FlatScene& scene, const Ray& worldRay, float tMax,
                         const ShapeIntersector& shapes = nullptr, TraversalCost* cost = nullptr);
 
-// Any hit with 0 < t < tMax (shadow rays).
-bool occluded(const FlatScene& scene, const Ray& worldRay, float tMax, const ShapeIntersector& shapes = nullptr);
+// Any hit with 0 < t < tMax (shadow rays). `cost`, when given, is added to.
+bool occluded(const FlatScene& scene, const Ray& worldRay, float tMax, const ShapeIntersector& shapes = nullptr,
+              TraversalCost* cost = nullptr);
 
 } // namespace glint::bvh

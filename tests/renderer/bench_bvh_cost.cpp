@@ -4,10 +4,10 @@
 // BVH heat map counts (nodes visited over both levels + primitives tested). Prints the mean and
 // the largest cost per ray class and per surface the bounce starts on.
 // Usage: bench_bvh_cost [SCENE] [size] [bounce rays per pixel]  (default: the Cornell box, 128, 4)
+#include "twin_scene.h"
+
 #include "renderer/bvh/bvh_layout.h"
-#include "renderer/bvh/mesh_bvh.h"
 #include "renderer/bvh/ray_offset.h"
-#include "renderer/bvh/top_level.h"
 #include "renderer/bvh/traverse.h"
 #include "renderer/gpu_scene/camera_setup.h"
 #include "scene/io/scene_io.h"
@@ -41,33 +41,6 @@ struct Tally {
     }
 };
 
-struct Flat {
-    bvh::FlatScene scene;
-    std::vector<std::string> names; // per instance
-};
-
-Flat flatten(const Scene& scene) {
-    Flat out;
-    std::vector<bvh::MeshBvh> meshes;
-    std::map<MeshId, std::uint32_t> index;
-    std::vector<bvh::Instance> instances;
-    for (const NodeId id : scene.depthFirst()) {
-        const Node& node = scene.at(id);
-        const auto* instance = node.get<MeshInstance>();
-        if (!instance) continue;
-        auto [it, fresh] = index.try_emplace(instance->mesh, std::uint32_t(meshes.size()));
-        if (fresh)
-            meshes.push_back(bvh::buildMeshBvh(bvh::trianglesFromMesh(scene.meshes.at(instance->mesh), [](MaterialId) { return 0u; }),
-                                               bvh::BuildOptions{}));
-        instances.push_back({scene.worldFromNode(id), bvh::kInstanceMesh, it->second, id.value, {}});
-    }
-    const bvh::TopLevel top = bvh::buildTopLevel(std::move(instances), meshes);
-    out.scene = bvh::flattenScene(meshes, top);
-    for (std::size_t i = 0; i < out.scene.instances.size() / bvh::kInstanceTexels; ++i)
-        out.names.push_back(scene.at(NodeId{out.scene.instances[bvh::kInstanceTexels * i + 3].z}).name);
-    return out;
-}
-
 glm::vec3 hitNormal(const bvh::FlatScene& s, const bvh::RayHit& hit, const Scene& scene) {
     const auto p = [&](int k) { return glm::vec3(s.trianglePositions[bvh::kTrianglePositionTexels * std::size_t(hit.slot) + std::size_t(k)]); };
     const glm::vec3 local = glm::cross(p(1) - p(0), p(2) - p(0));
@@ -82,10 +55,10 @@ int main(int argc, char** argv) {
     const int size = argc > 2 ? std::stoi(argv[2]) : 128;
     const int bounces = argc > 3 ? std::stoi(argv[3]) : 4;
     const Scene scene = loadScene(file).scene;
-    const Flat flat = flatten(scene);
+    const test::TwinScene twin = test::twinScene(scene);
     const renderer::CameraSetup camera = renderer::resolveCamera(scene, "", size, size);
-    std::printf("%s: %zu instances, %zu nodes (%u in mesh BVHs), %zu triangle slots\n", file.c_str(), flat.names.size(),
-                flat.scene.nodes.size(), flat.scene.meshNodeCount, flat.scene.trianglePositions.size() / 3);
+    std::printf("%s: %zu instances, %zu nodes (%u in mesh BVHs), %zu triangle slots\n", file.c_str(), twin.names.size(),
+                twin.flat.nodes.size(), twin.flat.meshNodeCount, twin.flat.trianglePositions.size() / 3);
     std::mt19937 random(1); // fixed: the figures repeat
     std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
     Tally primary, bounce, bounceMiss;
@@ -100,12 +73,12 @@ int main(int argc, char** argv) {
             const glm::vec2 ndc((float(x) + 0.5f) / float(size) * 2.0f - 1.0f, 1.0f - (float(y) + 0.5f) / float(size) * 2.0f);
             const glm::vec3 d = glm::normalize(glm::vec3(camera.worldFromCamera * glm::vec4(ndc * camera.halfExtent, -1.0f, 0.0f)));
             bvh::TraversalCost cost;
-            const bvh::RayHit hit = bvh::intersectClosest(flat.scene, {eye, d}, INFINITY, nullptr, &cost);
+            const bvh::RayHit hit = bvh::intersectClosest(twin.flat, {eye, d}, INFINITY, nullptr, &cost);
             primary.add(cost, hit.instance >= 0);
             const std::size_t tile = std::size_t((y / 4) * tiles + x / 4);
             tileCamera[tile] = std::max(tileCamera[tile], cost.nodes + cost.primitives);
             if (hit.instance < 0) continue;
-            glm::vec3 n = hitNormal(flat.scene, hit, scene);
+            glm::vec3 n = hitNormal(twin.flat, hit, scene);
             if (glm::dot(n, d) > 0.0f) n = -n;
             const glm::vec3 p = bvh::offsetRayOrigin(eye + hit.t * d, n);
             const glm::vec3 t = glm::normalize(std::abs(n.x) > 0.5f ? glm::cross(n, glm::vec3(0, 1, 0)) : glm::cross(n, glm::vec3(1, 0, 0)));
@@ -114,11 +87,11 @@ int main(int argc, char** argv) {
                 const float r = std::sqrt(uniform(random)), phi = 2.0f * std::numbers::pi_v<float> * uniform(random);
                 const glm::vec3 w = r * std::cos(phi) * t + r * std::sin(phi) * b + std::sqrt(std::max(0.0f, 1.0f - r * r)) * n;
                 bvh::TraversalCost c;
-                const bvh::RayHit h = bvh::intersectClosest(flat.scene, {p, w}, INFINITY, nullptr, &c);
+                const bvh::RayHit h = bvh::intersectClosest(twin.flat, {p, w}, INFINITY, nullptr, &c);
                 bounce.add(c, h.instance >= 0);
                 if (k == 0) tileBounce[tile] = std::max(tileBounce[tile], c.nodes + c.primitives);
                 if (h.instance < 0) bounceMiss.add(c, false);
-                byStart[flat.names[std::size_t(hit.instance)]].add(c, h.instance >= 0);
+                byStart[twin.names[std::size_t(hit.instance)]].add(c, h.instance >= 0);
             }
         }
     std::printf("\n| rays | count | nodes | primitives | cost | largest | hit |\n|---|---|---|---|---|---|---|\n");
