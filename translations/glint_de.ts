@@ -2438,6 +2438,10 @@
         <source>Nothing in the scene emits light, so the path-traced image is black: add a light or an emissive material, or give the environment a colour or an image (Scene tab).</source>
         <translation>Nichts in der Szene strahlt Licht aus, daher ist das Pathtracing-Bild schwarz: Fügen Sie ein Licht oder ein emittierendes Material hinzu oder geben Sie der Umgebung eine Farbe oder ein Bild (Reiter Szene).</translation>
     </message>
+    <message>
+        <source>Only emissive textures give light in this scene, so most of the path-traced image is dark: add a light, or give the environment a colour or an image (Scene tab).</source>
+        <translation>In dieser Szene geben nur emittierende Texturen Licht, daher ist das Pathtracing-Bild größtenteils dunkel: Fügen Sie ein Licht hinzu oder geben Sie der Umgebung eine Farbe oder ein Bild (Reiter Szene).</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::RenderView</name>

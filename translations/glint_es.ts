@@ -2438,6 +2438,10 @@
         <source>Nothing in the scene emits light, so the path-traced image is black: add a light or an emissive material, or give the environment a colour or an image (Scene tab).</source>
         <translation>Nada en la escena emite luz, así que la imagen trazada es negra: añade una luz o un material emisivo, o da al entorno un color o una imagen (pestaña Escena).</translation>
     </message>
+    <message>
+        <source>Only emissive textures give light in this scene, so most of the path-traced image is dark: add a light, or give the environment a colour or an image (Scene tab).</source>
+        <translation>En esta escena solo las texturas emisivas dan luz, así que la mayor parte de la imagen trazada es oscura: añade una luz o da al entorno un color o una imagen (pestaña Escena).</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::RenderView</name>

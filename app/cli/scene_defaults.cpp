@@ -31,10 +31,20 @@ void completeForRender(LoadResult& loaded, const std::string& file, const std::s
                                    "the scene has no camera: rendering from a default view of the whole scene "
                                    "(\"" + std::string(kDefaultViewName) + "\")"});
     }
-    if (!envGiven && !hasLightSource(scene))
+    if (envGiven) return;
+    switch (sceneLighting(scene)) {
+    case SceneLighting::None:
         loaded.warnings.push_back({file, "no-light",
                                    "nothing in the scene emits light (no light, emissive material or "
                                    "environment): the image will be black; add a light or pass --env FILE"});
+        break;
+    case SceneLighting::EmissiveTexturesOnly:
+        loaded.warnings.push_back({file, "only-emissive-textures",
+                                   "only emissive textures give light (no light, untextured emissive material or "
+                                   "environment): most of the image will be dark; add a light or pass --env FILE"});
+        break;
+    case SceneLighting::Lit: break;
+    }
 }
 
 } // namespace glint::cli

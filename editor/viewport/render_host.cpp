@@ -26,7 +26,7 @@ namespace {
 // Resolved by the document: an absolute path chosen in an untitled scene is read as it is.
 std::filesystem::path environmentPath(const Document& document) { return document.environmentPath(); }
 
-// Changes after which the scene may have gained or lost its last light source (hasLightSource):
+// Changes after which the scene may have gained or lost its last light source (sceneLighting):
 // not transform drags, names, the timeline or the display.
 bool mayChangeLighting(const ChangeSet& changes) {
     for (const Change c : {Change::Structure, Change::Visibility, Change::Light, Change::Geometry, Change::Material,
@@ -401,10 +401,17 @@ void RenderHost::reportRendererWarnings() {
 
 // Most glTF assets carry no light and the default environment is black: say why the image is.
 void RenderHost::noteLighting() {
-    stats_.hint = hasLightSource(document_.scene())
-                      ? QString()
-                      : tr("Nothing in the scene emits light, so the path-traced image is black: add a light or an emissive "
-                           "material, or give the environment a colour or an image (Scene tab).");
+    switch (sceneLighting(document_.scene())) {
+    case SceneLighting::None:
+        stats_.hint = tr("Nothing in the scene emits light, so the path-traced image is black: add a light or an emissive "
+                         "material, or give the environment a colour or an image (Scene tab).");
+        break;
+    case SceneLighting::EmissiveTexturesOnly:
+        stats_.hint = tr("Only emissive textures give light in this scene, so most of the path-traced image is dark: add a "
+                         "light, or give the environment a colour or an image (Scene tab).");
+        break;
+    case SceneLighting::Lit: stats_.hint.clear(); break;
+    }
 }
 
 renderer::FrameImages RenderHost::readImages() { return renderer_ ? renderer_->readImages() : renderer::FrameImages{}; }

@@ -7,22 +7,25 @@
 namespace glint {
 namespace {
 
-bool emissive(const Scene& scene, MaterialId id) {
+SceneLighting emission(const Scene& scene, MaterialId id) {
     const Material* material = scene.materials.find(id);
-    if (!material) return false;
+    if (!material) return SceneLighting::None;
     const glm::vec3 radiance = material->emissiveFactor * material->emissiveStrength;
-    return std::max({radiance.x, radiance.y, radiance.z}) > 0.0f;
+    if (!(std::max({radiance.x, radiance.y, radiance.z}) > 0.0f)) return SceneLighting::None;
+    return material->emissiveTexture.valid() && material->emissiveStrength <= 1.0f ? SceneLighting::EmissiveTexturesOnly
+                                                                                      : SceneLighting::Lit;
 }
 
-bool emits(const Scene& scene, const Node& node) {
+SceneLighting lighting(const Scene& scene, const Node& node) {
     if (const auto* light = node.get<Light>())
-        return light->intensity > 0.0f && std::max({light->color.x, light->color.y, light->color.z}) > 0.0f;
-    if (const auto* shape = node.get<Shape>()) return emissive(scene, shape->material);
+        return light->intensity > 0.0f && std::max({light->color.x, light->color.y, light->color.z}) > 0.0f ? SceneLighting::Lit
+                                                                                                              : SceneLighting::None;
+    if (const auto* shape = node.get<Shape>()) return emission(scene, shape->material);
+    SceneLighting most = SceneLighting::None;
     if (const auto* instance = node.get<MeshInstance>())
         if (const Mesh* mesh = scene.meshes.find(instance->mesh))
-            return std::any_of(mesh->primitives.begin(), mesh->primitives.end(),
-                               [&](const Primitive& p) { return emissive(scene, p.material); });
-    return false;
+            for (const Primitive& p : mesh->primitives) most = std::max(most, emission(scene, p.material));
+    return most;
 }
 
 } // namespace
@@ -33,13 +36,17 @@ bool environmentEmits(const Environment& environment) {
     return std::max({environment.color.x, environment.color.y, environment.color.z}) > 0.0f;
 }
 
-bool hasLightSource(const Scene& scene) {
-    if (environmentEmits(scene.settings.environment)) return true;
+SceneLighting sceneLighting(const Scene& scene) {
+    if (environmentEmits(scene.settings.environment)) return SceneLighting::Lit;
+    SceneLighting most = SceneLighting::None;
     for (const NodeId id : scene.depthFirst()) {
         const Node& node = *scene.node(id);
-        if (visibleInWorld(scene, node) && emits(scene, node)) return true;
+        if (visibleInWorld(scene, node)) most = std::max(most, lighting(scene, node));
+        if (most == SceneLighting::Lit) break;
     }
-    return false;
+    return most;
 }
+
+bool hasLightSource(const Scene& scene) { return sceneLighting(scene) != SceneLighting::None; }
 
 } // namespace glint

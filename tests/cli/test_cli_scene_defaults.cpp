@@ -55,6 +55,26 @@ private slots:
         QVERIFY(QFile::exists(dir.filePath("box.png")));
     }
 
+    // A triangle whose only light is an emissive texture (a white 1x1 PNG, factor 1, glTF's default
+    // strength), as on a bottle's label or a helmet's lamps: the image is mostly dark, and the
+    // warning says why; --env lights it.
+    void sceneLitOnlyByEmissiveTexturesIsNamed() {
+        QTemporaryDir dir;
+        const QString file = QStringLiteral(GLINT_TEST_DATA_DIR "/gltf/EmissiveLabel/EmissiveLabel.gltf");
+        const QString expected = QStringLiteral("glint: warning: %1: only emissive textures give light (no light, untextured emissive "
+                                                "material or environment): most of the image will be dark; add a light or pass --env "
+                                                "FILE [only-emissive-textures]")
+                                     .arg(file);
+        const CliResult r = runGlint({"render", file, "--size", "32x32", "--spp", "1", "--out", dir.filePath("glow.png")});
+        qInfo("stderr:\n%s", qPrintable(r.err));
+        QCOMPARE(r.exitCode, 0);
+        QCOMPARE(r.err.count(expected), 1);
+        QCOMPARE(r.err.count("[no-light]"), 0);
+        const CliResult lit = runGlint({"render", file, "--env", kEnv, "--size", "32x32", "--spp", "1", "--out", dir.filePath("lit.png")});
+        QCOMPARE(lit.exitCode, 0);
+        QCOMPARE(lit.err.count("[only-emissive-textures]"), 0);
+    }
+
     void unknownCameraNamesTheFile() {
         QTemporaryDir dir;
         const CliResult r = runGlint({"render", kBox, "--camera", "nope", "--size", "32x32", "--spp", "1", "--out",

@@ -109,6 +109,23 @@ private slots:
         QVERIFY(view.stats().hint.isEmpty());
     }
 
+    // A file lit only by an emissive texture (a label, a helmet's lamps) renders mostly dark: the
+    // viewport says that, not that nothing emits light; an environment colour lights it and the note
+    // goes (one undo brings it back).
+    void emissiveTexturesAloneAreNamed() {
+        RenderView& view = viewport_->view();
+        QCOMPARE(document_->open(QStringLiteral(GLINT_TEST_DATA_DIR "/gltf/EmissiveLabel/EmissiveLabel.gltf")), QString());
+        QVERIFY2(waitFor([&] { return view.stats().samples >= 1; }), "no first image");
+        QVERIFY2(view.stats().error.isEmpty(), qPrintable(view.stats().error));
+        QVERIFY2(view.stats().hint.startsWith("Only emissive textures give light"), qPrintable(view.stats().hint));
+        ProjectSettings sky = document_->scene().settings;
+        sky.environment.color = glm::vec3(0.5f);
+        document_->push(std::make_unique<SetProjectSettings>(sky));
+        QVERIFY2(view.stats().hint.isEmpty(), qPrintable(view.stats().hint));
+        document_->undo();
+        QVERIFY(view.stats().hint.startsWith("Only emissive textures give light"));
+    }
+
     void rasterPreviewDrawsTheShapes() {
         RenderView& view = viewport_->view();
         for (QAction* action : viewport_->viewModeActions())

@@ -141,9 +141,37 @@ private slots:
         glowing.setVisible(lampNode, false);
         QVERIFY(!hasLightSource(glowing));
 
+        // Emission through a texture at glTF's default strength is a glowing detail: the scene is
+        // lit by emissive textures only until a light, an untextured emitter or a raised strength
+        // (KHR_materials_emissive_strength above 1) joins it.
+        QCOMPARE(sceneLighting(dark), SceneLighting::None);
+        Scene label = dark;
+        Material printed;
+        printed.emissiveFactor = {1, 1, 1};
+        printed.emissiveTexture.texture = label.textures.add(Texture{});
+        Shape bottle = box({1, 1, 1});
+        bottle.material = label.materials.add(printed);
+        addShape(label, bottle, {});
+        QCOMPARE(sceneLighting(label), SceneLighting::EmissiveTexturesOnly);
+        QVERIFY(hasLightSource(label));
+        Scene brightLabel = label;
+        brightLabel.materials.at(bottle.material).emissiveStrength = 4.0f;
+        QCOMPARE(sceneLighting(brightLabel), SceneLighting::Lit);
+        Scene labelAndLamp = label;
+        Shape lampToo = box({1, 1, 1});
+        lampToo.material = labelAndLamp.materials.add(glow);
+        addShape(labelAndLamp, lampToo, {});
+        QCOMPARE(sceneLighting(labelAndLamp), SceneLighting::Lit);
+        Scene labelUnderSun = label;
+        Node noon;
+        noon.component = Light{.type = LightType::Sun, .intensity = 3.0f};
+        labelUnderSun.addNode(std::move(noon));
+        QCOMPARE(sceneLighting(labelUnderSun), SceneLighting::Lit);
+
         Scene sky = dark;
         sky.settings.environment.color = {0.1f, 0.1f, 0.1f};
         QVERIFY(hasLightSource(sky));
+        QCOMPARE(sceneLighting(sky), SceneLighting::Lit);
         sky.settings.environment.intensity = 0.0f;
         QVERIFY(!hasLightSource(sky));
     }
