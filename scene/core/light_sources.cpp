@@ -47,6 +47,4 @@ SceneLighting sceneLighting(const Scene& scene) {
     return most;
 }
 
-bool hasLightSource(const Scene& scene) { return sceneLighting(scene) != SceneLighting::None; }
-
 } // namespace glint

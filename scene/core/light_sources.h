@@ -19,6 +19,5 @@ enum class SceneLighting {
 
 bool environmentEmits(const Environment& environment);
 SceneLighting sceneLighting(const Scene& scene);
-bool hasLightSource(const Scene& scene); // sceneLighting is not None
 
 } // namespace glint
