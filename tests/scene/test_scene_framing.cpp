@@ -125,10 +125,13 @@ private slots:
         addShape(dark, box({1, 1, 1}), {});
         QCOMPARE(sceneLighting(dark), SceneLighting::None);
 
+        const auto addSun = [](Scene& scene) {
+            Node sun;
+            sun.component = Light{.type = LightType::Sun, .intensity = 3.0f};
+            scene.addNode(std::move(sun));
+        };
         Scene lit = dark;
-        Node sun;
-        sun.component = Light{.type = LightType::Sun, .intensity = 3.0f};
-        lit.addNode(std::move(sun));
+        addSun(lit);
         QCOMPARE(sceneLighting(lit), SceneLighting::Lit);
 
         Scene glowing = dark;
@@ -161,9 +164,7 @@ private slots:
         addShape(labelAndLamp, lampToo, {});
         QCOMPARE(sceneLighting(labelAndLamp), SceneLighting::Lit);
         Scene labelUnderSun = label;
-        Node noon;
-        noon.component = Light{.type = LightType::Sun, .intensity = 3.0f};
-        labelUnderSun.addNode(std::move(noon));
+        addSun(labelUnderSun);
         QCOMPARE(sceneLighting(labelUnderSun), SceneLighting::Lit);
 
         Scene sky = dark;
