@@ -133,8 +133,8 @@ private slots:
 
     // An OpenEXR header longer than the first bytes Glint reads before opening a file: fuzz_image_decode's
     // seed with a second data window 7,995,396 pixels wide (DWAA, 32 lines a chunk), behind a 300 KiB
-    // comment. OpenEXR takes the last data window and allocated a 3.9 GB chunk buffer for it; the
-    // whole header is checked now, and the file refused before OpenEXR opens it.
+    // comment. OpenEXR takes the last data window, and OpenImageIO opened the file with it; the whole
+    // header is checked now, and the file refused before OpenEXR opens it.
     void longOpenExrHeadersAreCheckedWhole() {
         std::ifstream in(GLINT_TEST_DATA_DIR "/../fuzz/seeds/image_decode/crash-exr-second-data-window-dwaa.exr", std::ios::binary);
         std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
