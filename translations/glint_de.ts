@@ -1470,6 +1470,10 @@
         <source>Portal pair</source>
         <translation>Portalpaar</translation>
     </message>
+    <message>
+        <source>Studio environment</source>
+        <translation>Studio-Umgebung</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::PortalEdits</name>
@@ -2435,12 +2439,12 @@
         <translation>Szene wird vorbereitet: %1</translation>
     </message>
     <message>
-        <source>Nothing in the scene emits light, so the path-traced image is black: add a light or an emissive material, or give the environment a colour or an image (Scene tab).</source>
-        <translation>Nichts in der Szene strahlt Licht aus, daher ist das Pathtracing-Bild schwarz: Fügen Sie ein Licht oder ein emittierendes Material hinzu oder geben Sie der Umgebung eine Farbe oder ein Bild (Reiter Szene).</translation>
+        <source>Nothing in the scene emits light, so the path-traced image is black: add a light (Add &gt; Light &gt; Studio environment lights any model) or an emissive material, or give the environment a colour or an image (Scene tab).</source>
+        <translation>Nichts in der Szene strahlt Licht aus, daher ist das Pathtracing-Bild schwarz: Fügen Sie ein Licht hinzu (Hinzufügen &gt; Licht &gt; Studio-Umgebung beleuchtet jedes Modell) oder ein emittierendes Material, oder geben Sie der Umgebung eine Farbe oder ein Bild (Reiter Szene).</translation>
     </message>
     <message>
-        <source>Only emissive textures give light in this scene, so most of the path-traced image is dark: add a light, or give the environment a colour or an image (Scene tab).</source>
-        <translation>In dieser Szene geben nur emittierende Texturen Licht, daher ist das Pathtracing-Bild größtenteils dunkel: Fügen Sie ein Licht hinzu oder geben Sie der Umgebung eine Farbe oder ein Bild (Reiter Szene).</translation>
+        <source>Only emissive textures give light in this scene, so most of the path-traced image is dark: add a light (Add &gt; Light &gt; Studio environment lights any model), or give the environment a colour or an image (Scene tab).</source>
+        <translation>In dieser Szene geben nur emittierende Texturen Licht, daher ist das Pathtracing-Bild größtenteils dunkel: Fügen Sie ein Licht hinzu (Hinzufügen &gt; Licht &gt; Studio-Umgebung beleuchtet jedes Modell) oder geben Sie der Umgebung eine Farbe oder ein Bild (Reiter Szene).</translation>
     </message>
 </context>
 <context>

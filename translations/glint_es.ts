@@ -1470,6 +1470,10 @@
         <source>Portal pair</source>
         <translation>Par de portales</translation>
     </message>
+    <message>
+        <source>Studio environment</source>
+        <translation>Entorno de estudio</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::PortalEdits</name>
@@ -2435,12 +2439,12 @@
         <translation>Preparando la escena: %1</translation>
     </message>
     <message>
-        <source>Nothing in the scene emits light, so the path-traced image is black: add a light or an emissive material, or give the environment a colour or an image (Scene tab).</source>
-        <translation>Nada en la escena emite luz, así que la imagen trazada es negra: añade una luz o un material emisivo, o da al entorno un color o una imagen (pestaña Escena).</translation>
+        <source>Nothing in the scene emits light, so the path-traced image is black: add a light (Add &gt; Light &gt; Studio environment lights any model) or an emissive material, or give the environment a colour or an image (Scene tab).</source>
+        <translation>Nada en la escena emite luz, así que la imagen trazada es negra: añade una luz (Añadir &gt; Luz &gt; Entorno de estudio ilumina cualquier modelo) o un material emisivo, o da al entorno un color o una imagen (pestaña Escena).</translation>
     </message>
     <message>
-        <source>Only emissive textures give light in this scene, so most of the path-traced image is dark: add a light, or give the environment a colour or an image (Scene tab).</source>
-        <translation>En esta escena solo las texturas emisivas dan luz, así que la mayor parte de la imagen trazada es oscura: añade una luz o da al entorno un color o una imagen (pestaña Escena).</translation>
+        <source>Only emissive textures give light in this scene, so most of the path-traced image is dark: add a light (Add &gt; Light &gt; Studio environment lights any model), or give the environment a colour or an image (Scene tab).</source>
+        <translation>En esta escena solo las texturas emisivas dan luz, así que la mayor parte de la imagen trazada es oscura: añade una luz (Añadir &gt; Luz &gt; Entorno de estudio ilumina cualquier modelo) o da al entorno un color o una imagen (pestaña Escena).</translation>
     </message>
 </context>
 <context>

@@ -1470,6 +1470,10 @@
         <source>Portal pair</source>
         <translation>Paire de portails</translation>
     </message>
+    <message>
+        <source>Studio environment</source>
+        <translation>Environnement studio</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::PortalEdits</name>
@@ -2435,12 +2439,12 @@
         <translation>Préparation de la scène : %1</translation>
     </message>
     <message>
-        <source>Nothing in the scene emits light, so the path-traced image is black: add a light or an emissive material, or give the environment a colour or an image (Scene tab).</source>
-        <translation>Rien dans la scène n'émet de lumière, l'image en path tracing est donc noire : ajoutez une lumière ou un matériau émissif, ou donnez à l'environnement une couleur ou une image (onglet Scène).</translation>
+        <source>Nothing in the scene emits light, so the path-traced image is black: add a light (Add &gt; Light &gt; Studio environment lights any model) or an emissive material, or give the environment a colour or an image (Scene tab).</source>
+        <translation>Rien dans la scène n'émet de lumière, l'image en path tracing est donc noire : ajoutez une lumière (Ajouter &gt; Lumière &gt; Environnement studio éclaire n'importe quel modèle) ou un matériau émissif, ou donnez à l'environnement une couleur ou une image (onglet Scène).</translation>
     </message>
     <message>
-        <source>Only emissive textures give light in this scene, so most of the path-traced image is dark: add a light, or give the environment a colour or an image (Scene tab).</source>
-        <translation>Dans cette scène, seules des textures émissives donnent de la lumière : l'image en path tracing est donc presque entièrement sombre. Ajoutez une lumière, ou donnez à l'environnement une couleur ou une image (onglet Scène).</translation>
+        <source>Only emissive textures give light in this scene, so most of the path-traced image is dark: add a light (Add &gt; Light &gt; Studio environment lights any model), or give the environment a colour or an image (Scene tab).</source>
+        <translation>Dans cette scène, seules des textures émissives donnent de la lumière : l'image en path tracing est donc presque entièrement sombre. Ajoutez une lumière (Ajouter &gt; Lumière &gt; Environnement studio éclaire n'importe quel modèle), ou donnez à l'environnement une couleur ou une image (onglet Scène).</translation>
     </message>
 </context>
 <context>

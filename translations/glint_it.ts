@@ -1470,6 +1470,10 @@
         <source>Portal pair</source>
         <translation>Coppia di portali</translation>
     </message>
+    <message>
+        <source>Studio environment</source>
+        <translation>Ambiente studio</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::PortalEdits</name>
@@ -2435,12 +2439,12 @@
         <translation>Preparazione della scena: %1</translation>
     </message>
     <message>
-        <source>Nothing in the scene emits light, so the path-traced image is black: add a light or an emissive material, or give the environment a colour or an image (Scene tab).</source>
-        <translation>Nella scena nulla emette luce, perciò l'immagine path-traced è nera: aggiungi una luce o un materiale emissivo, oppure dai all'ambiente un colore o un'immagine (scheda Scena).</translation>
+        <source>Nothing in the scene emits light, so the path-traced image is black: add a light (Add &gt; Light &gt; Studio environment lights any model) or an emissive material, or give the environment a colour or an image (Scene tab).</source>
+        <translation>Nella scena nulla emette luce, perciò l'immagine path-traced è nera: aggiungi una luce (Aggiungi &gt; Luce &gt; Ambiente studio illumina qualsiasi modello) o un materiale emissivo, oppure dai all'ambiente un colore o un'immagine (scheda Scena).</translation>
     </message>
     <message>
-        <source>Only emissive textures give light in this scene, so most of the path-traced image is dark: add a light, or give the environment a colour or an image (Scene tab).</source>
-        <translation>In questa scena solo le texture emissive danno luce, perciò gran parte dell'immagine path-traced è scura: aggiungi una luce, oppure dai all'ambiente un colore o un'immagine (scheda Scena).</translation>
+        <source>Only emissive textures give light in this scene, so most of the path-traced image is dark: add a light (Add &gt; Light &gt; Studio environment lights any model), or give the environment a colour or an image (Scene tab).</source>
+        <translation>In questa scena solo le texture emissive danno luce, perciò gran parte dell'immagine path-traced è scura: aggiungi una luce (Aggiungi &gt; Luce &gt; Ambiente studio illumina qualsiasi modello), oppure dai all'ambiente un colore o un'immagine (scheda Scena).</translation>
     </message>
 </context>
 <context>

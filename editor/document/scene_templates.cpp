@@ -70,10 +70,7 @@ void addGroundAndCamera(Scene& scene) {
 Scene studio() {
     Scene scene;
     addGroundAndCamera(scene);
-    scene.settings.environment.file = shippedFile(QStringLiteral("studio_small_03_1k.hdr")).string();
-    // The studio's lamps give the ground about 11 W/m^2: 2.5 stops down keeps the mid-grey ground a
-    // light grey instead of white.
-    scene.settings.render.exposure = -2.5f;
+    scene.settings = withStudioLighting(scene.settings);
     return scene;
 }
 
@@ -172,6 +169,14 @@ const char* templateActionId(SceneTemplate kind) {
     case SceneTemplate::Portals: return "file.new.portals";
     }
     return "";
+}
+
+ProjectSettings withStudioLighting(ProjectSettings settings) {
+    settings.environment.file = shippedFile(QStringLiteral("studio_small_03_1k.hdr")).string();
+    // The studio's lamps give the ground about 11 W/m^2: 2.5 stops down keeps the mid-grey ground a
+    // light grey instead of white.
+    settings.render.exposure = -2.5f;
+    return settings;
 }
 
 Scene buildTemplate(SceneTemplate kind) {

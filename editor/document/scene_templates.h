@@ -26,4 +26,8 @@ const char* templateActionId(SceneTemplate kind);
 // Throws std::runtime_error when a shipped file cannot be written to the data folder.
 Scene buildTemplate(SceneTemplate kind);
 
+// `settings` lit as the Studio template is: its shipped HDR environment and the exposure that suits
+// it (Add > Light > Studio environment). Throws as buildTemplate does.
+ProjectSettings withStudioLighting(ProjectSettings settings);
+
 } // namespace glint::editor

@@ -5,7 +5,9 @@
 #include "editor/document/document.h"
 #include "editor/document/edit_operations.h"
 #include "editor/document/portal_edits.h"
+#include "editor/document/scene_templates.h"
 #include "editor/preferences/retranslate.h"
+#include "scene/history/settings_commands.h"
 
 #include <QEvent>
 #include <QHeaderView>
@@ -16,6 +18,9 @@
 #include <QToolButton>
 #include <QTreeView>
 #include <QVBoxLayout>
+
+#include <exception>
+#include <memory>
 
 namespace glint::editor {
 
@@ -112,6 +117,18 @@ void OutlinerPanel::buildAddMenu() {
     add(lights, QT_TR_NOOP("Area rectangle"), defaultAreaLight(AreaShape::Rectangle));
     add(lights, QT_TR_NOOP("Area disk"), defaultAreaLight(AreaShape::Disk));
     add(lights, QT_TR_NOOP("Area sphere"), defaultAreaLight(AreaShape::Sphere));
+    // Most glTF models carry no light: the Studio template's lighting, in one undoable step.
+    lights->addSeparator();
+    QAction* studio = lights->addAction(QString());
+    studio->setObjectName(QStringLiteral("add.light.studio_environment"));
+    keepTranslated(studio, TextRole::Text, staticMetaObject.className(), QT_TR_NOOP("Studio environment"));
+    connect(studio, &QAction::triggered, this, [this] {
+        try {
+            document_.push(std::make_unique<SetProjectSettings>(withStudioLighting(document_.scene().settings)));
+        } catch (const std::exception& e) {
+            emit message(QString::fromStdString(e.what()));
+        }
+    });
     add(addMenu_, QT_TR_NOOP("Camera"), defaultCamera());
     add(addMenu_, QT_TR_NOOP("Empty group"), Component{});
 }

@@ -403,12 +403,14 @@ void RenderHost::reportRendererWarnings() {
 void RenderHost::noteLighting() {
     switch (sceneLighting(document_.scene())) {
     case SceneLighting::None:
-        stats_.hint = tr("Nothing in the scene emits light, so the path-traced image is black: add a light or an emissive "
-                         "material, or give the environment a colour or an image (Scene tab).");
+        stats_.hint = tr("Nothing in the scene emits light, so the path-traced image is black: add a light (Add > Light > "
+                         "Studio environment lights any model) or an emissive material, or give the environment a colour or "
+                         "an image (Scene tab).");
         break;
     case SceneLighting::EmissiveTexturesOnly:
         stats_.hint = tr("Only emissive textures give light in this scene, so most of the path-traced image is dark: add a "
-                         "light, or give the environment a colour or an image (Scene tab).");
+                         "light (Add > Light > Studio environment lights any model), or give the environment a colour or an "
+                         "image (Scene tab).");
         break;
     case SceneLighting::Lit: stats_.hint.clear(); break;
     }

@@ -103,6 +103,33 @@ private slots:
         QVERIFY(!window.document().scene().settings.environment.file.empty());
     }
 
+    // A model with no light of its own (lit only by an emissive texture here): Add > Light > Studio
+    // environment lights it as the Studio template is, in one undo step, and the viewport's note
+    // goes; undo brings the dark scene and its note back.
+    void studioEnvironmentLightsAnUnlitModel() {
+        MainWindow window(glint::editor::test::windowOptions(temp_.filePath("autosave-studio-light")));
+        window.resize(640, 480);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openFile(QStringLiteral(GLINT_TEST_DATA_DIR "/gltf/EmissiveLabel/EmissiveLabel.gltf")));
+        RenderView& view = window.viewport()->view();
+        QTRY_VERIFY_WITH_TIMEOUT(view.stats().hint.startsWith("Only emissive textures give light"), 30000);
+        const ProjectSettings before = window.document().scene().settings;
+        auto* studio = window.findChild<QAction*>("add.light.studio_environment");
+        QVERIFY(studio);
+        studio->trigger();
+        const ProjectSettings lit = window.document().scene().settings;
+        QCOMPARE(lit, withStudioLighting(before));
+        QCOMPARE(std::filesystem::path(lit.environment.file).filename().string(), std::string("studio_small_03_1k.hdr"));
+        QVERIFY(std::filesystem::exists(lit.environment.file));
+        QVERIFY2(view.stats().hint.isEmpty(), qPrintable(view.stats().hint));
+        QTRY_VERIFY_WITH_TIMEOUT(view.stats().samples >= 2 && !view.stats().preparing, 60000);
+        QVERIFY2(view.stats().error.isEmpty(), qPrintable(view.stats().error));
+        window.document().undo();
+        QCOMPARE(window.document().scene().settings, before);
+        QVERIFY(view.stats().hint.startsWith("Only emissive textures give light"));
+    }
+
     // Studio, Add > Sphere, its own material made red: the sphere's pixels in the path-traced view
     // turn from grey to red (red over twice green and blue), and undo brings the grey back.
     void aSphereWithANewRedMaterialRendersRed() {
