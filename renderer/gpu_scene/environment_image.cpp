@@ -72,10 +72,11 @@ EnvironmentImage loadEnvironmentImage(const std::filesystem::path& file, const D
     in.read(reinterpret_cast<char*>(header.data()), static_cast<std::streamsize>(header.size()));
     header.resize(static_cast<std::size_t>(in.gcount()));
     std::error_code ec;
-    const std::uintmax_t size = std::filesystem::file_size(file, ec);
-    const bool wholeFileRead = ec || size <= header.size();
+    const std::uint64_t size = std::filesystem::file_size(file, ec);
+    const std::uint64_t fileSize = ec ? header.size() : size;
+    const bool wholeFileRead = fileSize <= header.size();
     if (!memoryImageName(header)) { // a format Glint does not sniff (.tga, .dds, ...): OpenImageIO opens it by name
-        checkHeader(header, wholeFileRead ? header.size() : size, name, limits);
+        checkHeader(header, fileSize, name, limits);
         auto input = OIIO::ImageInput::open(name);
         if (!input) throw FileError(name, "environment-unreadable", "cannot read the environment image: " + OIIO::geterror());
         return readEnvironment(*input, name, limits);
@@ -87,14 +88,14 @@ EnvironmentImage loadEnvironmentImage(const std::filesystem::path& file, const D
     // rest is read.
     std::vector<std::uint8_t> bytes = std::move(header);
     if (!wholeFileRead) {
-        checkHeader(bytes, size, name, limits);
-        if (size > 2 * limits.maxBytes)
+        checkHeader(bytes, fileSize, name, limits);
+        if (fileSize > 2 * limits.maxBytes)
             throw FileError(name, "environment-too-large",
-                            "cannot read the environment image: the file holds " + std::to_string(size) + " bytes, more than twice the " +
+                            "cannot read the environment image: the file holds " + std::to_string(fileSize) + " bytes, more than twice the " +
                                 std::to_string(limits.maxBytes) + " bytes an environment may decode to");
         const std::size_t read = bytes.size();
-        bytes.resize(size);
-        in.read(reinterpret_cast<char*>(bytes.data() + read), static_cast<std::streamsize>(size - read));
+        bytes.resize(fileSize);
+        in.read(reinterpret_cast<char*>(bytes.data() + read), static_cast<std::streamsize>(fileSize - read));
         bytes.resize(read + static_cast<std::size_t>(in.gcount()));
     }
     return decodeEnvironmentImage(bytes, name, limits);

@@ -41,13 +41,6 @@ struct Tally {
     }
 };
 
-glm::vec3 hitNormal(const bvh::FlatScene& s, const bvh::RayHit& hit, const Scene& scene) {
-    const auto p = [&](int k) { return glm::vec3(s.trianglePositions[bvh::kTrianglePositionTexels * std::size_t(hit.slot) + std::size_t(k)]); };
-    const glm::vec3 local = glm::cross(p(1) - p(0), p(2) - p(0));
-    const NodeId node{s.instances[bvh::kInstanceTexels * std::size_t(hit.instance) + 3].z};
-    return glm::normalize(glm::vec3(glm::transpose(glm::inverse(scene.worldFromNode(node))) * glm::vec4(local, 0.0f)));
-}
-
 } // namespace
 
 int main(int argc, char** argv) {
@@ -78,7 +71,7 @@ int main(int argc, char** argv) {
             const std::size_t tile = std::size_t((y / 4) * tiles + x / 4);
             tileCamera[tile] = std::max(tileCamera[tile], cost.nodes + cost.primitives);
             if (hit.instance < 0) continue;
-            glm::vec3 n = hitNormal(twin.flat, hit, scene);
+            glm::vec3 n = test::hitNormal(twin, hit);
             if (glm::dot(n, d) > 0.0f) n = -n;
             const glm::vec3 p = bvh::offsetRayOrigin(eye + hit.t * d, n);
             const glm::vec3 t = glm::normalize(std::abs(n.x) > 0.5f ? glm::cross(n, glm::vec3(0, 1, 0)) : glm::cross(n, glm::vec3(1, 0, 0)));

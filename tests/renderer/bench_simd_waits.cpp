@@ -96,10 +96,7 @@ private:
     float uniform() { return uniform_(random_); }
 
     glm::vec3 facing(const bvh::RayHit& hit, const glm::vec3& direction) const {
-        const auto instance = std::size_t(hit.instance);
-        const auto slot = std::uint32_t(hit.slot);
-        const glm::vec3 p0 = worldCorner(twin_, instance, slot, 0);
-        const glm::vec3 n = glm::normalize(glm::cross(worldCorner(twin_, instance, slot, 1) - p0, worldCorner(twin_, instance, slot, 2) - p0));
+        const glm::vec3 n = test::hitNormal(twin_, hit);
         return glm::dot(n, direction) > 0.0f ? -n : n;
     }
 

@@ -31,4 +31,13 @@ TwinScene twinScene(const Scene& scene) {
     return out;
 }
 
+glm::vec3 hitNormal(const TwinScene& twin, const bvh::RayHit& hit) {
+    const auto p = [&](std::size_t k) {
+        return glm::vec3(twin.flat.trianglePositions[bvh::kTrianglePositionTexels * std::size_t(hit.slot) + k]);
+    };
+    const glm::vec3 local = glm::cross(p(1) - p(0), p(2) - p(0));
+    const glm::mat4& worldFrom = twin.worldFrom[std::size_t(hit.instance)];
+    return glm::normalize(glm::vec3(glm::transpose(glm::inverse(worldFrom)) * glm::vec4(local, 0.0f)));
+}
+
 } // namespace glint::test

@@ -3,6 +3,7 @@
 // renderer flattens them, with each instance's node name and transform: for the benchmark programs
 // that walk the twin.
 #include "renderer/bvh/flat_scene.h"
+#include "renderer/bvh/ray.h"
 #include "scene/core/scene.h"
 
 #include <glm/glm.hpp>
@@ -19,5 +20,8 @@ struct TwinScene {
 };
 
 TwinScene twinScene(const Scene& scene);
+
+// The world-space unit geometric normal of a triangle hit (the winding's front, not faced to the ray).
+glm::vec3 hitNormal(const TwinScene& twin, const bvh::RayHit& hit);
 
 } // namespace glint::test
