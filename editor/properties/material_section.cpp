@@ -159,7 +159,7 @@ void addTextureSlot(PropertyForm* form, const MaterialBinding& m, const TextureS
     preview->setFixedSize(48, 48);
     preview->setFrameShape(QFrame::Box);
     preview->setAccessibleName(PropertyForm::tr("%1 thumbnail").arg(label));
-    auto* choice = new QComboBox(slot);
+    auto* choice = newFormComboBox(slot);
     auto* load = new QToolButton(slot);
     load->setText(PropertyForm::tr("Load…"));
     load->setObjectName(QStringLiteral("texture.load.%1").arg(QLatin1String(textureSlot.id)));
@@ -325,7 +325,7 @@ PropertyForm* makeMaterialSlotsForm(Document& document, NodeId node, std::size_t
     // Each row: the material of the shape, or of one primitive of the mesh; Edit shows it below.
     for (std::size_t p = 0; p < count; ++p) {
         auto* row = new QWidget(form);
-        auto* choice = new QComboBox(row);
+        auto* choice = newFormComboBox(row);
         auto* layout = new QHBoxLayout(row);
         layout->setContentsMargins(0, 0, 0, 0);
         layout->addWidget(choice, 1);

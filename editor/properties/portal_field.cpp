@@ -57,7 +57,7 @@ void showLink(const Scene& scene, NodeId quad, QComboBox* combo, QLabel* state) 
 
 void addPortalField(PropertyForm* form, Document& document, NodeId quad, const Report& report) {
     auto* box = new QWidget(form);
-    auto* combo = new QComboBox(box);
+    auto* combo = newFormComboBox(box);
     auto* state = new QLabel(box);
     state->setWordWrap(true);
     state->setObjectName(QStringLiteral("portalState"));

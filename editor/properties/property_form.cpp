@@ -29,6 +29,13 @@ namespace {
 constexpr int kSliderSteps = 1000;
 }
 
+QComboBox* newFormComboBox(QWidget* parent) {
+    auto* combo = new QComboBox(parent);
+    combo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    combo->setMinimumContentsLength(8);
+    return combo;
+}
+
 float srgbToLinear(float encoded) {
     return encoded <= 0.04045f ? encoded / 12.92f : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
 }
@@ -256,7 +263,7 @@ void PropertyForm::addCheck(const QString& label, std::function<bool()> get, std
 
 void PropertyForm::addChoice(const QString& label, const QStringList& items, std::function<int()> get,
                              std::function<void(int)> set) {
-    auto* combo = new QComboBox(this);
+    auto* combo = newFormComboBox(this);
     combo->addItems(items);
     connect(combo, &QComboBox::activated, this, [set](int i) { set(i); });
     addWidget(label, combo, [combo, get] {

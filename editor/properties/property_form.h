@@ -12,6 +12,7 @@
 #include <functional>
 #include <vector>
 
+class QComboBox;
 class QFormLayout;
 class QLineEdit;
 class QSlider;
@@ -103,6 +104,10 @@ private:
 // sRGB-encoded, so the colour picked is the colour seen: #CC2222 is stored as (0.604, 0.016, 0.016).
 QColor toQColor(float r, float g, float b); // linear in [0, 1] (clamped) -> the sRGB colour shown
 glm::vec3 toLinear(const QColor& color);     // the sRGB colour picked -> linear
+// A combo box for the forms, which wrap to the dock's width: it does not widen itself to its longest
+// entry (a texture's or a material's name), which would push every field of the form out of view.
+QComboBox* newFormComboBox(QWidget* parent);
+
 float srgbToLinear(float encoded);
 float linearToSrgb(float linear);
 

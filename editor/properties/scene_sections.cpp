@@ -241,7 +241,7 @@ PropertyForm* makeProjectForm(Document& document, const Report& report, QWidget*
     auto* form = new PropertyForm(document, PropertyForm::tr("Camera and timeline"), parent);
     const Edit edit = settingsEditor(document, report);
     const Scene& scene = document.scene();
-    auto* camera = new QComboBox(form);
+    auto* camera = newFormComboBox(form);
     QObject::connect(camera, &QComboBox::activated, form, [edit, camera](int i) {
         edit([&](ProjectSettings& s) { s.activeCamera = NodeId{camera->itemData(i).toUInt()}; }, 0);
     });

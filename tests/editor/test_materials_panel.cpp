@@ -26,7 +26,9 @@
 #include "scene/geometry/geometry.h"
 
 #include <QAction>
+#include <QComboBox>
 #include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QFileDialog>
@@ -56,6 +58,38 @@ class TestMaterialsPanel : public QObject {
 
 private slots:
     void initTestCase() { QVERIFY(temp_.isValid()); }
+
+    // The forms wrap to the dock's width: a mesh whose textures have long names (the WaterBottle's,
+    // such as "WaterBottle_occlusionRoughnessMetallic") still shows every number field of its
+    // transform inside the panel, where the texture combos once pushed them out of view.
+    void longTextureNamesKeepTheFieldsInView() {
+        MainWindow window(glint::editor::test::windowOptions(temp_.filePath("autosave-long-names")));
+        window.resize(1280, 720);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openFile(QStringLiteral(GLINT_RESOURCES_DIR "/scenes/water_bottle/WaterBottle.gltf")));
+        QTRY_VERIFY_WITH_TIMEOUT(!window.document().scene().nodes().empty(), 30000);
+        window.document().setSelection({window.document().scene().nodes().begin()->first});
+        // The node's panel is the one whose texture slots list the bottle's images (the Scene tab has another).
+        const auto nodePanel = [&]() -> PropertiesPanel* {
+            for (PropertiesPanel* candidate : window.findChildren<PropertiesPanel*>())
+                for (const QComboBox* combo : candidate->widget()->findChildren<QComboBox*>())
+                    if (combo->findText(QStringLiteral("WaterBottle_occlusionRoughnessMetallic"), Qt::MatchContains) >= 0) return candidate;
+            return nullptr;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(nodePanel(), 30000);
+        PropertiesPanel* panel = nodePanel();
+        auto* dock = qobject_cast<QDockWidget*>(panel->parentWidget());
+        QVERIFY(dock);
+        window.resizeDocks({dock}, {320}, Qt::Horizontal); // the panel's width on a 1600-px screen
+        QTest::qWait(50); // the layout settles
+        const int visible = panel->viewport()->width();
+        qInfo("panel viewport %d px, form %d px", visible, panel->widget()->width());
+        for (const QDoubleSpinBox* field : panel->widget()->findChildren<QDoubleSpinBox*>()) {
+            const int right = field->mapTo(panel->viewport(), QPoint(field->width(), 0)).x();
+            QVERIFY2(right <= visible, qPrintable(QStringLiteral("%1 ends at %2 of %3 px").arg(field->objectName()).arg(right).arg(visible)));
+        }
+    }
 
     // Each swatch is rendered once per look: a red plastic sphere is red at its centre and grey-lit
     // at its rim, the copy of a material (same content) reuses its swatch, and an edit renders anew.
