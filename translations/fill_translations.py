@@ -290,6 +290,7 @@ T = {
 "image": ("immagine", "Bild", "image", "imagen"),
 "sampler": ("campionatore", "Sampler", "échantillonneur", "muestreador"),
 "Add %1": ("Aggiungi %1", "%1 hinzufügen", "Ajouter %1", "Añadir %1"),
+"Add studio environment": ("Aggiungi ambiente studio", "Studio-Umgebung hinzufügen", "Ajouter l'environnement studio", "Añadir entorno de estudio"),
 "Remove %1": ("Rimuovi %1", "%1 entfernen", "Retirer %1", "Quitar %1"),
 "Duplicate %1": ("Duplica %1", "%1 duplizieren", "Dupliquer %1", "Duplicar %1"),
 "Edit %1": ("Modifica %1", "%1 bearbeiten", "Modifier %1", "Editar %1"),

@@ -453,6 +453,10 @@
         <source>Change fog</source>
         <translation>Nebel ändern</translation>
     </message>
+    <message>
+        <source>Add studio environment</source>
+        <translation>Studio-Umgebung hinzufügen</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Configurations</name>

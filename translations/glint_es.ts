@@ -453,6 +453,10 @@
         <source>Change fog</source>
         <translation>Cambiar niebla</translation>
     </message>
+    <message>
+        <source>Add studio environment</source>
+        <translation>Añadir entorno de estudio</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Configurations</name>

@@ -453,6 +453,10 @@
         <source>Change fog</source>
         <translation>Modifier le brouillard</translation>
     </message>
+    <message>
+        <source>Add studio environment</source>
+        <translation>Ajouter l'environnement studio</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Configurations</name>

@@ -453,6 +453,10 @@
         <source>Change fog</source>
         <translation>Cambia nebbia</translation>
     </message>
+    <message>
+        <source>Add studio environment</source>
+        <translation>Aggiungi ambiente studio</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Configurations</name>

@@ -4,6 +4,7 @@
 
 #include "editor/document/document.h"
 #include "editor/document/edit_operations.h"
+#include "editor/document/labelled_command.h"
 #include "editor/document/portal_edits.h"
 #include "editor/document/scene_templates.h"
 #include "editor/preferences/retranslate.h"
@@ -124,7 +125,8 @@ void OutlinerPanel::buildAddMenu() {
     keepTranslated(studio, TextRole::Text, staticMetaObject.className(), QT_TR_NOOP("Studio environment"));
     connect(studio, &QAction::triggered, this, [this] {
         try {
-            document_.push(std::make_unique<SetProjectSettings>(withStudioLighting(document_.scene().settings)));
+            document_.push(withLabel(std::make_unique<SetProjectSettings>(withStudioLighting(document_.scene().settings)),
+                                     QT_TRANSLATE_NOOP("glint::editor::CommandLabels", "Add studio environment")));
         } catch (const std::exception& e) {
             emit message(QString::fromStdString(e.what()));
         }

@@ -7,6 +7,7 @@
 
 #include "editor/document/edit_operations.h"
 #include "editor/document/scene_templates.h"
+#include "editor/history_view/command_labels.h"
 #include "editor/main_window/main_window.h"
 #include "editor/viewport/render_view.h"
 #include "editor/viewport/viewport.h"
@@ -120,6 +121,9 @@ private slots:
         studio->trigger();
         const ProjectSettings lit = window.document().scene().settings;
         QCOMPARE(lit, withStudioLighting(before));
+        // The undo history names the action, not the generic settings edit it is made of.
+        const Document& document = window.document();
+        QCOMPARE(commandLabel(document.history().label(document.history().index() - 1)), QString("Add studio environment"));
         QCOMPARE(std::filesystem::path(lit.environment.file).filename().string(), std::string("studio_small_03_1k.hdr"));
         QVERIFY(std::filesystem::exists(lit.environment.file));
         QVERIFY2(view.stats().hint.isEmpty(), qPrintable(view.stats().hint));
