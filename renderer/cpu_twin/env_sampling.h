@@ -1,6 +1,8 @@
 #pragma once
 // CDF tables for importance sampling an equirectangular environment in proportion to
-// luminance * sin(theta) (the sin accounts for the rows' shrinking solid angle). The layout is what
+// luminance * sin(theta) (the sin accounts for the rows' shrinking solid angle), each pixel's
+// luminance being its mean as the renderer reads the map (bilinear, so a pixel shares its
+// neighbours' light). The layout is what
 // shaders/sampling/distribution.glsl reads from a one-channel float texture (GL_R32F):
 // rows 0..height-1 hold each image row's conditional CDF over its columns (width + 1 values),
 // row `height` the marginal CDF over rows (height + 1 values); unused texels are 0.

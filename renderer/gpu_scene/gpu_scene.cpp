@@ -88,6 +88,7 @@ GpuScene::GpuScene(PreparedScene prepared)
       texturesUsed_(std::move(prepared.texturesUsed)),
       warnings_(std::move(prepared.warnings)) {
     if (const auto& env = prepared.environmentMap) {
+        // Bilinear, wrapping in longitude: the sampling table weights each pixel as read this way.
         environmentMap_ = uploadFloatTexture(GL_RGB32F, GL_RGB, env->image.width, env->image.height, env->image.rgb.data(), GL_LINEAR);
         environmentCdf_ = uploadFloatTexture(GL_R32F, GL_RED, env->table.tableWidth, env->table.tableHeight, env->table.cdf.data(), GL_NEAREST);
         environmentSize_ = {env->image.width, env->image.height};
