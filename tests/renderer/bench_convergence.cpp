@@ -1,5 +1,5 @@
-// Error against a converged reference on the bundled Cornell box (a program, not a test; figures in
-// docs/PERFORMANCE.md, "Fireflies" and "Samplers"):
+// Error against a converged reference on the bundled Cornell box or another scene (a program, not a
+// test; figures in docs/PERFORMANCE.md, "Fireflies", "Samplers" and "Environment maps"):
 //   bench_convergence reference OUT.exr [--size 128] [--bounces 4] [--spp 8192] [--seed 1000]
 //       renders the reference (Accumulate; 32-bit RGB EXR)
 //   bench_convergence curve REF.exr [--size 128] [--bounces 4] [--spp 256] [--seeds 4]
@@ -9,12 +9,15 @@
 //   bench_convergence fireflies REF.exr [--size 128] [--bounces 4] [--spp 64] [--seed 0] [--top 20]
 //       the worst pixels of one render with their largest single sample (which sample, how much)
 // The scene is resources/scenes/cornell_box as stored (with --fog D: filled with fog of density D,
-// albedo 0.9, g 0.6); the reference seed differs from the runs'.
+// albedo 0.9, g 0.6), or with --scene FILE that glTF (and its project file), framed by its camera or
+// by the default view; --env IMAGE lights it with that environment map. Give every
+// mode the same --scene and --env. The reference seed differs from the runs'.
 #include "error_share.h"
 
 #include "renderer/frame_renderer.h"
 #include "renderer/gl/headless_context.h"
 #include "renderer/offline_render.h"
+#include "scene/core/default_view.h"
 #include "scene/io/scene_io.h"
 
 #include <algorithm>
@@ -36,6 +39,7 @@ struct Options {
     unsigned seed = 0;
     bool independent = false;
     std::string label = "default", csv;
+    std::string scene, env; // another glTF than the Cornell box; an environment map lighting it
     float fog = 0.0f; // the Cornell box filled with fog of this density (albedo 0.9, g 0.6): docs/MEDIA.md
 };
 
@@ -62,6 +66,8 @@ Options parse(int argc, char** argv) {
         else if (!std::strcmp(argv[i], "--csv")) o.csv = next();
         else if (!std::strcmp(argv[i], "--independent")) o.independent = true;
         else if (!std::strcmp(argv[i], "--fog")) o.fog = float(std::atof(next()));
+        else if (!std::strcmp(argv[i], "--scene")) o.scene = next();
+        else if (!std::strcmp(argv[i], "--env")) o.env = next();
         else {
             std::fprintf(stderr, "bench_convergence: unknown option %s\n", argv[i]);
             std::exit(2);
@@ -70,10 +76,23 @@ Options parse(int argc, char** argv) {
     return o;
 }
 
-Scene cornellBox(const Options& o) {
-    Scene scene = loadScene(std::filesystem::path(GLINT_RESOURCES_DIR) / "scenes" / "cornell_box" / "cornell_box.gltf").scene;
+Scene benchScene(const Options& o) {
+    const std::filesystem::path file =
+        o.scene.empty() ? std::filesystem::path(GLINT_RESOURCES_DIR) / "scenes" / "cornell_box" / "cornell_box.gltf" : std::filesystem::path(o.scene);
+    Scene scene = loadScene(file).scene;
+    if (!std::any_of(scene.nodes().begin(), scene.nodes().end(), [](const auto& entry) { return entry.second.template get<Camera>() != nullptr; }))
+        addDefaultView(scene, 1.0f);
     scene.settings.fog = {.density = o.fog, .color = glm::vec3(0.9f), .anisotropy = 0.6f};
     return scene;
+}
+
+// --env, else the scene's own environment beside it.
+renderer::RenderRequest environmentOf(const Options& o) {
+    renderer::RenderRequest request;
+    request.envFile = o.env;
+    request.sceneFolder = o.scene.empty() ? std::filesystem::path(GLINT_RESOURCES_DIR) / "scenes" / "cornell_box"
+                                          : std::filesystem::path(o.scene).parent_path();
+    return request;
 }
 
 std::vector<float> readReference(const Options& o) {
@@ -99,7 +118,7 @@ void progressive(const Scene& scene, const Options& o, unsigned seed, int spp, A
     s.width = s.height = o.size;
     frames.setSettings(s);
     frames.setCamera(renderer::resolveCamera(scene, {}, o.size, o.size));
-    if (!frames.hasScene()) frames.setScene(scene);
+    if (!frames.hasScene()) frames.setScene(scene, renderer::environmentPath(scene, environmentOf(o)));
     frames.resetHistory();
     for (int k = 1; k <= spp; ++k) {
         frames.renderFrame();
@@ -108,8 +127,8 @@ void progressive(const Scene& scene, const Options& o, unsigned seed, int spp, A
 }
 
 int reference(const Options& o) {
-    const Scene scene = cornellBox(o);
-    renderer::RenderRequest request;
+    const Scene scene = benchScene(o);
+    renderer::RenderRequest request = environmentOf(o);
     request.width = request.height = o.size;
     request.bounces = o.bounces;
     request.spp = o.spp > 0 ? o.spp : 8192;
@@ -126,7 +145,7 @@ int reference(const Options& o) {
 }
 
 int curve(const Options& o) {
-    const Scene scene = cornellBox(o);
+    const Scene scene = benchScene(o);
     const std::vector<float> ref = readReference(o);
     const int spp = o.spp > 0 ? o.spp : 256;
     std::map<int, std::vector<test::ErrorShare>> bySpp;
@@ -158,7 +177,7 @@ int curve(const Options& o) {
 }
 
 int fireflies(const Options& o) {
-    const Scene scene = cornellBox(o);
+    const Scene scene = benchScene(o);
     const std::vector<float> ref = readReference(o);
     const int spp = o.spp > 0 ? o.spp : 64;
     const std::size_t n = static_cast<std::size_t>(o.size) * static_cast<std::size_t>(o.size);
