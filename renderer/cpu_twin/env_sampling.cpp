@@ -61,6 +61,19 @@ private:
     std::vector<double> means_;
 };
 
+// The map's mean luminance over the sphere (each row weighted by its solid angle, sin(theta)).
+double sphereMeanLuminance(int width, int height, std::span<const float> rgb) {
+    double sum = 0.0, solidAngle = 0.0;
+    for (int y = 0; y < height; ++y) {
+        double row = 0.0;
+        for (int x = 0; x < width; ++x) row += pixelLuminance(rgb, y * width + x);
+        double sinTheta = std::sin(std::numbers::pi * (y + 0.5) / height);
+        sum += row * sinTheta;
+        solidAngle += width * sinTheta;
+    }
+    return sum / solidAngle;
+}
+
 // Writes the normalised running sum of `weights` into cdf[0..n]; uniform when all weights are 0.
 void writeCdf(const std::vector<double>& weights, float* cdf) {
     const auto n = weights.size();
@@ -87,14 +100,19 @@ EnvironmentSamplingTable buildEnvironmentSamplingTable(int width, int height, st
     table.tableHeight = height + 1;
     table.cdf.assign(std::size_t(table.tableWidth) * std::size_t(table.tableHeight), 0.0f);
 
+    // MIS compensation (Karlik et al. 2019, "MIS Compensation"): light sampling is always weighted
+    // against BSDF sampling, which finds the map's dim, even part well, so the table leaves out the
+    // map's mean and light samples go to what stands out of it (the sun, the softboxes). An even map
+    // keeps the uniform table below.
+    const double mean = sphereMeanLuminance(width, height, rgb);
     BilinearMeans means(width, height, rgb);
     std::vector<double> rowWeights(static_cast<std::size_t>(height), 0.0);
     std::vector<double> columnWeights(static_cast<std::size_t>(width));
     bool anyLight = false;
     for (int y = 0; y < height; ++y) {
         double sinTheta = std::sin(std::numbers::pi * (y + 0.5) / height);
-        const std::vector<double>& mean = means.row(y);
-        for (int x = 0; x < width; ++x) columnWeights[std::size_t(x)] = mean[std::size_t(x)] * sinTheta;
+        const std::vector<double>& read = means.row(y);
+        for (int x = 0; x < width; ++x) columnWeights[std::size_t(x)] = std::max(0.0, read[std::size_t(x)] - mean) * sinTheta;
         writeCdf(columnWeights, &table.cdf[std::size_t(y) * std::size_t(table.tableWidth)]);
         for (double w : columnWeights) rowWeights[std::size_t(y)] += w;
         anyLight = anyLight || rowWeights[std::size_t(y)] > 0.0;
