@@ -5,13 +5,15 @@ Usage (Blender 3.4 and python3-numpy from Debian, headless):
       --scene resources/scenes/cornell_box/cornell_box.gltf --out OUT_DIR \
       [--size 512x512] [--bounces 4] [--samples 1,2,4,8,16,32,64] [--reference-samples 1024] \
       [--threads 2] [--seed 0] [--materials imported|diffuse] [--emission-sides gltf|both] \
-      [--reference-exr EXR] [--adaptive-threshold T]
+      [--reference-exr EXR] [--adaptive-threshold T] [--env MAP.hdr]
 
 The scene comes in through Blender's own glTF importer with its default options (the light-unit
 convention Glint follows, docs/LIGHTS.md), so this also checks that Blender opens Glint's files.
 Settings match `glint render`: the same bounce limit for every kind of bounce, a 1-pixel box pixel
 filter, no denoiser, no adaptive sampling (unless asked for), no clamping, no light threshold, the 'Standard' view
-transform (the EXR holds linear scene radiance either way), black world (a glTF carries none).
+transform (the EXR holds linear scene radiance either way), black world (a glTF carries none), or
+with `--env MAP` the equirectangular map at strength 1 (Blender's mapping, u = 0.5 - atan2(y, x) / 2pi
+in its Z-up axes, is Glint's u = 0.5 + atan2(z, x) / 2pi in glTF's once the importer turns Y up to Z).
 Emission follows Glint's sides (docs/LIGHTS.md): a single-sided glTF material (Blender's importer
 turns on backface culling for it, which Cycles ignores) emits from its front face only, a
 double-sided one from both; `--emission-sides both` keeps Cycles' two-sided mesh emission.
@@ -53,6 +55,7 @@ def parse_args():
     p.add_argument("--reference-exr", help="an existing reference (32-bit EXR of the same size) instead of rendering one")
     p.add_argument("--adaptive-threshold", type=float, default=0.0,
                    help="Cycles' adaptive sampling with this noise threshold (0: off); --samples are then caps")
+    p.add_argument("--env", help="an equirectangular environment map lighting the scene (default: black)")
     p.add_argument("--emission-sides", choices=["gltf", "both"], default="gltf",
                    help="gltf: single-sided materials emit from their front face only, as in Glint")
     p.add_argument("--materials", choices=["imported", "diffuse"], default="imported",
@@ -117,6 +120,19 @@ def front_face_emission_only():
                 strength.inputs[0].default_value = socket.default_value
             links.new(front.outputs[0], strength.inputs[1])
             links.new(strength.outputs[0], socket)
+
+
+def use_environment(scene, path):
+    world = bpy.data.worlds.new("Environment")
+    world.use_nodes = True
+    nodes, links = world.node_tree.nodes, world.node_tree.links
+    texture = nodes.new("ShaderNodeTexEnvironment")
+    texture.image = bpy.data.images.load(os.path.abspath(path))
+    texture.interpolation = "Linear"
+    background = nodes["Background"]
+    background.inputs["Strength"].default_value = 1.0
+    links.new(texture.outputs["Color"], background.inputs["Color"])
+    scene.world = world
 
 
 def configure(scene, args):
@@ -195,6 +211,8 @@ def main():
     if args.emission_sides == "gltf":
         front_face_emission_only()
     configure(scene, args)
+    if args.env:
+        use_environment(scene, args.env)
     out = os.path.abspath(args.out)
     if args.adaptive_threshold > 0.0:
         scene.cycles.use_adaptive_sampling = True
