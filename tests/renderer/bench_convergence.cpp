@@ -80,8 +80,7 @@ Scene benchScene(const Options& o) {
     const std::filesystem::path file =
         o.scene.empty() ? std::filesystem::path(GLINT_RESOURCES_DIR) / "scenes" / "cornell_box" / "cornell_box.gltf" : std::filesystem::path(o.scene);
     Scene scene = loadScene(file).scene;
-    if (!std::any_of(scene.nodes().begin(), scene.nodes().end(), [](const auto& entry) { return entry.second.template get<Camera>() != nullptr; }))
-        addDefaultView(scene, 1.0f);
+    if (!defaultCamera(scene)) addDefaultView(scene, 1.0f);
     scene.settings.fog = {.density = o.fog, .color = glm::vec3(0.9f), .anisotropy = 0.6f};
     return scene;
 }

@@ -3,6 +3,7 @@
 #include "image_stats.h"
 #include "render_scene.h"
 #include "scene_builder.h"
+#include "renderer_twin/bilinear_map_read.h"
 
 #include "renderer/gpu_scene/environment_cube.h"
 #include "renderer/gpu_scene/environment_image.h"
@@ -28,17 +29,23 @@ namespace {
 
 const std::filesystem::path hdr = std::filesystem::path(GLINT_TEST_DATA_DIR) / "env" / "studio_small_03_1k.hdr";
 
-// What GL_LINEAR with GL_REPEAT in u and GL_CLAMP_TO_EDGE in v returns at (u, v), green channel.
+// The green channel of the map as the path tracer reads it at (u, v).
 double bilinearGreen(const renderer::EnvironmentImage& image, double u, double v) {
-    const double x = u * image.width - 0.5, y = v * image.height - 0.5;
-    const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
-    const double fx = x - x0, fy = y - y0;
-    const auto at = [&](int px, int py) {
-        px = ((px % image.width) + image.width) % image.width;
-        py = std::clamp(py, 0, image.height - 1);
-        return static_cast<double>(image.rgb[(static_cast<std::size_t>(py) * static_cast<std::size_t>(image.width) + static_cast<std::size_t>(px)) * 3 + 1]);
-    };
-    return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) + fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
+    return bilinearMapRead(image.rgb, image.width, image.height, u, v, {0.0, 1.0, 0.0});
+}
+
+// The map's green irradiance on an upward-facing plane: its read times cos(theta) over the upper
+// hemisphere, summed at sub x sub points per texel (sub = 1: at the texel centres, where the read is
+// the texel itself, so the map summed as stored).
+double upwardIrradiance(const renderer::EnvironmentImage& image, int sub) {
+    double irradiance = 0.0;
+    for (int row = 0; row < image.height * sub / 2; ++row) {
+        const double v = (row + 0.5) / (image.height * sub), theta = v * M_PI;
+        const double solidAngle = (2 * M_PI / (image.width * sub)) * (M_PI / (image.height * sub)) * std::sin(theta);
+        for (int column = 0; column < image.width * sub; ++column)
+            irradiance += bilinearGreen(image, (column + 0.5) / (image.width * sub), v) * std::cos(theta) * solidAngle;
+    }
+    return irradiance;
 }
 
 // Cube faces in the order +X, -X, +Y, -Y, +Z, -Z (cube-map names): a colour each, and on +Z a left
@@ -273,15 +280,7 @@ private slots:
         renderer::RenderRequest request = test::stillRequest(16, 64, 3, 0);
         request.envFile = file;
         const auto out = renderer_->render(scene, request);
-        const auto image = renderer::loadEnvironmentImage(file);
-        const int sub = 8;
-        double irradiance = 0.0;
-        for (int row = 0; row < image.height * sub / 2; ++row) {
-            const double v = (row + 0.5) / (image.height * sub), theta = v * M_PI;
-            const double solidAngle = (2 * M_PI / (image.width * sub)) * (M_PI / (image.height * sub)) * std::sin(theta);
-            for (int column = 0; column < image.width * sub; ++column)
-                irradiance += bilinearGreen(image, (column + 0.5) / (image.width * sub), v) * std::cos(theta) * solidAngle;
-        }
+        const double irradiance = upwardIrradiance(renderer::loadEnvironmentImage(file), 8);
         const double expected = irradiance / M_PI;
         const ChannelStats green = channelStats(out.radiance, 1);
         QVERIFY2(std::abs(green.mean - expected) < 0.02 * expected, qPrintable(QString("%1 vs %2").arg(green.mean).arg(expected)));
@@ -297,15 +296,7 @@ private slots:
         addShape(scene, ShapeKind::GroundPlane, white, glm::vec3(0.0f));
         addOrthographicCamera(scene, {0.0f, 1.0f, 0.0f}, {0.0f, -1.0f, 0.0f}, 1.0f);
         const auto out = render(scene, 16, 256, 7, 0);
-        const auto image = renderer::loadEnvironmentImage(hdr);
-        double irradiance = 0.0;
-        for (int row = 0; row < image.height / 2; ++row) {
-            const double theta = (row + 0.5) * M_PI / image.height;
-            const double solidAngle = (2 * M_PI / image.width) * (M_PI / image.height) * std::sin(theta);
-            for (int column = 0; column < image.width; ++column)
-                irradiance += image.rgb[(static_cast<std::size_t>(row) * static_cast<std::size_t>(image.width) + static_cast<std::size_t>(column)) * 3 + 1] *
-                              std::cos(theta) * solidAngle;
-        }
+        const double irradiance = upwardIrradiance(renderer::loadEnvironmentImage(hdr), 1);
         const double expected = irradiance / M_PI;
         const double actual = channelStats(out.radiance, 1).mean;
         QVERIFY2(std::abs(actual - expected) < 0.02 * expected, qPrintable(QString("%1 vs %2").arg(actual).arg(expected)));

@@ -1,6 +1,7 @@
 // Environment importance sampling: the CPU-built CDF table read through the shared GLSL sampler.
 // Sampled directions follow environmentDirectionPdf (chi-square over the image's pixels), the pdf
 // integrates to 1 over the sphere, and the orientation is docs/UNITS.md's (u = 0.25 faces -Z).
+#include "bilinear_map_read.h"
 #include "chi_square.h"
 #include "renderer/cpu_twin/env_sampling.h"
 #include "renderer/cpu_twin/glsl_twin.h"
@@ -44,22 +45,6 @@ std::vector<float> spotImage(int width, int height, float u, float v) {
         }
     }
     return rgb;
-}
-
-// Luminance of the image as the renderer reads it at (u, v): bilinear between pixel centres,
-// longitude wrapping, latitude clamped (GL_LINEAR, GL_REPEAT, GL_CLAMP_TO_EDGE).
-double bilinearLuminance(const std::vector<float>& rgb, int width, int height, vec2 uv) {
-    const auto at = [&](int x, int y) {
-        x = (x % width + width) % width;
-        y = std::clamp(y, 0, height - 1);
-        const float* p = &rgb[std::size_t((y * width + x) * 3)];
-        return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
-    };
-    const double x = double(uv.x) * width - 0.5, y = double(uv.y) * height - 0.5;
-    const int x0 = int(std::floor(x)), y0 = int(std::floor(y));
-    const double fx = x - x0, fy = y - y0;
-    return (1 - fx) * (1 - fy) * at(x0, y0) + fx * (1 - fy) * at(x0 + 1, y0) + (1 - fx) * fy * at(x0, y0 + 1) +
-           fx * fy * at(x0 + 1, y0 + 1);
 }
 
 vec3 meanSampledDirection(const EnvironmentSamplingTable& table, int samples) {
@@ -179,7 +164,8 @@ private slots:
             float pdf;
             vec3 d = sampleEnvironmentDirection(s, ivec2(width, height), rand2(rng), pdf);
             if (!(pdf > 0.0f)) continue;
-            const double estimate = bilinearLuminance(rgb, width, height, equirectFromDirection(d)) / pdf;
+            const vec2 uv = equirectFromDirection(d);
+            const double estimate = glint::test::bilinearMapRead(rgb, width, height, uv.x, uv.y, {0.2126, 0.7152, 0.0722}) / pdf;
             sum += estimate;
             largest = std::max(largest, estimate);
         }
