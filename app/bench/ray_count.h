@@ -3,7 +3,8 @@
 // no counter (the fragment shader path has no atomics in GL 4.1), so the bench replays its path
 // structure (shaders/pathtrace/integrator.glsl) with the CPU twin of the BVH traversal over the same
 // flattened scene: one closest-hit ray per segment (the camera ray, one per bounce and the last one
-// that looks for emission), one shadow ray per vertex for the emissive-triangle sample when the light
+// that looks for emission, which the shader leaves out where light sampling reaches every emitter),
+// one shadow ray per vertex for the emissive-triangle sample when the light
 // point lies on the side the path arrived from, the bounce limit and Russian roulette from bounce 3
 // with survival min(max albedo, 0.95). Surfaces are treated as Lambertian in their base colour
 // (exact for the bench's all-diffuse scenes); punctual lights and the environment are counted as

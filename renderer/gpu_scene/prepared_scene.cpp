@@ -107,6 +107,20 @@ bool usesTransmission(const Scene& scene) {
     return false;
 }
 
+bool hasUnsampledEmitters(const Scene& scene, const TextureSet* textures) {
+    const auto emits = [](const Material& m) { return m.emissiveFactor * m.emissiveStrength != glm::vec3(0.0f); };
+    for (const MaterialId id : meshMaterials(scene)) {
+        const Material* m = scene.materials.find(id);
+        if (m && emits(*m) && sampledEmission(scene, *m, textures) == glm::vec3(0.0f)) return true;
+    }
+    for (const auto& [id, node] : scene.nodes()) {
+        const auto* shape = node.get<Shape>();
+        const Material* m = shape ? scene.materials.find(shape->material) : nullptr;
+        if (m && emits(*m) && (shape->kind == ShapeKind::GroundPlane || hasEmissiveTexture(scene, *m))) return true;
+    }
+    return false;
+}
+
 // TextureSet words its warnings for people (texture_set.cpp); the code is read back from them so
 // that scripts can filter by a stable name.
 std::string textureWarningCode(const std::string& message) {
@@ -150,6 +164,7 @@ PreparedScene prepareScene(const Scene& scene, const std::filesystem::path& envi
     out.features.media = usesMedia(scene);
     out.features.indexMatched = usesIndexMatched(scene);
     out.features.transmission = usesTransmission(scene);
+    out.features.unsampledEmitters = hasUnsampledEmitters(scene, &out.textures);
     out.environmentFile = environmentFile;
     if (!environmentFile.empty()) {
         report(control, PreparationStage::Environment, 0, 1);

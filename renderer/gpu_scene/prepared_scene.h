@@ -43,6 +43,7 @@ struct SceneFeatures {
     bool indexMatched = false; // a transmissive IOR-1 material: shadow rays cross it (HAS_INDEX_MATCHED)
     bool portals = false;     // a linked portal pair: paths cross it (HAS_PORTALS)
     bool transmission = false; // a material that transmits: the BSDF's glass lobe (HAS_TRANSMISSION)
+    bool unsampledEmitters = false; // an emitter only BSDF-sampled rays find (hasUnsampledEmitters); no define
     std::map<std::string, std::string> defines() const; // gl::Defines: NAME -> value
 };
 
@@ -54,6 +55,10 @@ bool usesMedia(const Scene& scene);
 bool usesIndexMatched(const Scene& scene);
 // Whether a material transmits light (KHR_materials_transmission factor above 0).
 bool usesTransmission(const Scene& scene);
+// Whether an emitter is left out of light sampling, so that only BSDF-sampled rays find it: an
+// emissive ground plane or emissive-textured shape (packed_scene.cpp), or an emissive mesh material
+// whose texture has no mean in `textures` (texture_refs.h, sampledEmission).
+bool hasUnsampledEmitters(const Scene& scene, const TextureSet* textures);
 
 struct PreparedEnvironment {
     EnvironmentImage image;

@@ -56,6 +56,9 @@ void PathTracePass::render(const GpuScene& scene, const CameraSetup& camera, con
     scene.bind(program);
     setCameraUniforms(program, camera, target);
     setIntegratorUniforms(program, settings, sampleIndex);
+    // BSDF sampling alone (a test's debug variant) must trace the last bounce's ray.
+    const bool lightSampled = settings.areaLightStrategy != AreaLightStrategy::BsdfOnly;
+    glUniform1i(program.uniform("uEveryEmitterLightSampled"), lightSampled && scene.everyEmitterLightSampled() ? 1 : 0);
     target.bindForDrawing();
     triangle_.draw();
 }

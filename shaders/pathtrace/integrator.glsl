@@ -6,6 +6,9 @@
 // shared BSDF reads the side of wo (wo.z < 0: inside).
 uniform int uMaxBounces;
 uniform float uClamp; // 0: off (unbiased)
+// Light sampling reaches every emitter a ray can meet: no environment light, no portal, no emitter
+// left to BSDF sampling (GpuScene::everyEmitterLightSampled), and the strategies include it.
+uniform bool uEveryEmitterLightSampled;
 
 // Which strategies find the light of area emitters (renderer/gpu_scene SceneFeatures): 0 both, with
 // MIS; 1 light sampling alone; 2 BSDF sampling alone (the tests' debug variants).
@@ -36,6 +39,16 @@ struct Vertex {
     vec3 albedo;     // ... the medium's single-scattering albedo there
     float g;         // ... and its Henyey-Greenstein anisotropy
 };
+
+// Whether the path ends at this vertex with its light samples weighted 1. At the bounce limit the
+// BSDF-sampled ray would serve only to find emitters, for MIS; where light sampling reaches them all
+// and the vertex has no narrow lobe (which light samples would seldom meet), light samples alone
+// have the same expectation and about the same variance, without that ray's walk (about 6 % of a
+// sample's time at 4 bounces on llvmpipe: docs/PERFORMANCE.md, "The last bounce's BSDF ray").
+bool endsAtLightSamples(Vertex v, int depth, int maxBounces) {
+    return depth == maxBounces && uEveryEmitterLightSampled && !v.inMedium &&
+           v.material.roughness >= 0.5 && v.material.transmission <= 0.0;
+}
 
 // A scattering point at distance t along `ray` in medium m. Its frame's normal is the direction
 // of travel and wo is -Z, so a direction's local z is the cosine of its scattering angle; it has no
@@ -117,11 +130,12 @@ bool shadowRay(Vertex v, ShadowCandidate c, OUT(Ray) ray, OUT(float) distance) {
     return true;
 }
 
-ShadowCandidate punctualCandidate(Vertex v, int light, INOUT(Rng) rng) {
+// `alone`: no BSDF-sampled ray follows (endsAtLightSamples), so light samples take weight 1.
+ShadowCandidate punctualCandidate(Vertex v, int light, bool alone, INOUT(Rng) rng) {
     LightSample ls = sampleLight(light, v.position, rand2(rng));
     float pdf;
     vec3 f = scatterEval(v, ls.direction, pdf);
-    float misWeight = ls.pdf > 0.0 ? powerHeuristic(ls.pdf, pdf) : 1.0; // sun disks: BSDF rays see them too
+    float misWeight = ls.pdf > 0.0 && !alone ? powerHeuristic(ls.pdf, pdf) : 1.0; // sun disks: BSDF rays see them too
     return ShadowCandidate(ls.direction, ls.distance, f * ls.irradiance * misWeight, ls.target);
 }
 
@@ -140,7 +154,7 @@ bool sampleAreaEmitter(vec3 p, vec3 u, OUT(AreaLightSample) ls) {
 #endif
 }
 
-ShadowCandidate areaCandidate(Vertex v, INOUT(Rng) rng) {
+ShadowCandidate areaCandidate(Vertex v, bool alone, INOUT(Rng) rng) {
     vec3 u = rand3(rng);
 #if AREA_LIGHT_STRATEGY == 2
     return noCandidate();
@@ -152,7 +166,7 @@ ShadowCandidate areaCandidate(Vertex v, INOUT(Rng) rng) {
 #if AREA_LIGHT_STRATEGY == 1
     float weight = 1.0;
 #else
-    float weight = powerHeuristic(ls.pdf, bsdfPdf);
+    float weight = alone ? 1.0 : powerHeuristic(ls.pdf, bsdfPdf);
 #endif
     return ShadowCandidate(ls.direction, ls.distance, f * ls.radiance * (weight / ls.pdf), vec4(ls.target, 1.0));
 }
@@ -172,12 +186,12 @@ ShadowCandidate environmentCandidate(Vertex v, INOUT(Rng) rng) {
 // Candidate k of next-event estimation: punctual lights 0 .. uLightCount - 1, then the area emitter,
 // then the environment. Each kind is compiled in only where the scene has it (llvmpipe runs every
 // branch and every loop pass, so a kind with nothing to sample would cost a full pass).
-ShadowCandidate lightCandidate(Vertex v, int k, INOUT(Rng) rng) {
+ShadowCandidate lightCandidate(Vertex v, int k, bool alone, INOUT(Rng) rng) {
 #ifdef HAS_PUNCTUAL_LIGHTS
-    if (k < uLightCount) return punctualCandidate(v, k, rng);
+    if (k < uLightCount) return punctualCandidate(v, k, alone, rng);
 #endif
 #ifdef HAS_AREA_EMITTERS
-    if (k == uLightCount) return areaCandidate(v, rng);
+    if (k == uLightCount) return areaCandidate(v, alone, rng);
 #endif
     return environmentCandidate(v, rng);
 }
@@ -186,10 +200,11 @@ ShadowCandidate lightCandidate(Vertex v, int k, INOUT(Rng) rng) {
 // All shadow rays go through one call site: GLSL inlines every call, and each traversal copy costs
 // compile time (seconds on llvmpipe for the BVH variant).
 // `diffuse`: the part of the sum the diffuse lobe carried, where `split` (the first hit) asks for it.
+// `alone`: no BSDF-sampled ray follows (endsAtLightSamples), so every sample takes weight 1.
 // Shadow rays cross the medium on their side of the surface: `arrived` on the side of wo (and
 // everywhere around a medium vertex), `across` on the other; in the HAS_INDEX_MATCHED variant they
 // also cross index-matched boundaries and the media behind them (media.glsl).
-vec3 directLight(Vertex v, Medium arrived, Medium across, bool split, INOUT(Rng) rng, OUT(vec3) diffuse) {
+vec3 directLight(Vertex v, Medium arrived, Medium across, bool split, bool alone, INOUT(Rng) rng, OUT(vec3) diffuse) {
     vec3 sum = vec3(0.0);
     diffuse = vec3(0.0);
     // Only the kinds the scene has take a pass of the loop: llvmpipe runs every branch of a pass, so
@@ -209,7 +224,7 @@ vec3 directLight(Vertex v, Medium arrived, Medium across, bool split, INOUT(Rng)
     for (int i = 0; i < uLightCount + areaCandidates + environmentCandidates; ++i) {
         int k = i < uLightCount ? i : i + 1 - areaCandidates;
         rng.dimension = first + uint(k);
-        ShadowCandidate c = lightCandidate(v, k, rng);
+        ShadowCandidate c = lightCandidate(v, k, alone, rng);
         if (!(maxComponent(c.contribution) > 0.0)) continue;
         setTraceState(false, alphaKey(rng, 1u), v.cone);
         Ray ray;
@@ -420,7 +435,8 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng, OUT(LobeRadiance) l
         if (depth > maxBounces) break;
 
         vec3 diffuseDirect;
-        vec3 direct = throughput * directLight(v, medium, across, depth == 0, rng, diffuseDirect);
+        bool ends = endsAtLightSamples(v, depth, maxBounces);
+        vec3 direct = throughput * directLight(v, medium, across, depth == 0, ends, rng, diffuseDirect);
         if (depth == 0) addSplitRadiance(result.radiance, lobes, direct, throughput * diffuseDirect);
         else addRadiance(result.radiance, lobes, direct, specularPath);
         PASS_LIGHT_SAMPLED(depth, direct, throughput * diffuseDirect, specularPath);
@@ -432,6 +448,7 @@ PathResult tracePath(Ray ray, vec3 viewAxis, INOUT(Rng) rng, OUT(LobeRadiance) l
         }
 #endif
 
+        if (ends) break;
         BsdfSample bs;
         if (!scatterSample(v, rand3(rng), bs) || maxComponent(bs.weight) <= 0.0) break;
         // Russian roulette on this bounce's weight (its albedo), not on the whole throughput: a

@@ -1,11 +1,15 @@
 // The CPU side of the GPU scene, without a GL context: light units, material and shape packing,
-// camera resolution by name, and the emissive-triangle distribution.
+// camera resolution by name, the emissive-triangle distribution, and the emitters light sampling
+// leaves out.
+#include "mesh_builder.h"
 #include "scene_builder.h"
 
 #include "renderer/gpu_scene/camera_setup.h"
 #include "renderer/gpu_scene/emissive_triangles.h"
 #include "renderer/gpu_scene/light_units.h"
 #include "renderer/gpu_scene/packed_scene.h"
+#include "renderer/gpu_scene/prepared_scene.h"
+#include "renderer/gpu_scene/texture_set.h"
 
 #include <QTest>
 
@@ -107,6 +111,46 @@ private slots:
         lights.add({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, glm::vec3(1.0f), true, renderer::EmitterTexturing{slot, true});
         QCOMPARE(lights.texels.back(), glm::vec4(float(slot >> 16), 3.0f, 1.0f, 1.0f));
         QCOMPARE(std::uint32_t(lights.texels.back().x) * 65536u + std::uint32_t(lights.texels.back().y), slot);
+    }
+
+    // Emitters that light sampling leaves to BSDF-sampled rays, which keep a path from ending at its
+    // last vertex's light samples: an emissive ground plane, an emissive-textured shape, an
+    // emissive-textured mesh material whose texture has no mean. An emissive sphere and an emissive
+    // mesh, textured with a mean or not, are light-sampled.
+    void unsampledEmittersAreFound() {
+        const auto base = [](Scene& scene, MaterialId& glow, MaterialId& texturedGlow, ImageId& image) {
+            glow = scene.materials.add(lambert(glm::vec3(0.0f), glm::vec3(1.0f)));
+            Texture texture;
+            image = texture.image = scene.images.add(Image{});
+            Material textured = lambert(glm::vec3(0.0f), glm::vec3(1.0f));
+            textured.emissiveTexture.texture = scene.textures.add(std::move(texture));
+            texturedGlow = scene.materials.add(std::move(textured));
+            addShape(scene, ShapeKind::Sphere, glow, glm::vec3(0.0f));
+            addNode(scene, "lamp", MeshInstance{scene.meshes.add(quadMesh(1.0f, glow))}, glm::vec3(0.0f));
+        };
+        MaterialId glow, texturedGlow;
+        ImageId image;
+        Scene lit;
+        base(lit, glow, texturedGlow, image);
+        QVERIFY(!renderer::hasUnsampledEmitters(lit, nullptr));
+
+        Scene ground;
+        base(ground, glow, texturedGlow, image);
+        addShape(ground, ShapeKind::GroundPlane, glow, glm::vec3(0.0f));
+        QVERIFY(renderer::hasUnsampledEmitters(ground, nullptr));
+
+        Scene texturedShape;
+        base(texturedShape, glow, texturedGlow, image);
+        addShape(texturedShape, ShapeKind::Box, texturedGlow, glm::vec3(0.0f));
+        QVERIFY(renderer::hasUnsampledEmitters(texturedShape, nullptr));
+
+        Scene texturedMesh;
+        base(texturedMesh, glow, texturedGlow, image);
+        addNode(texturedMesh, "textured lamp", MeshInstance{texturedMesh.meshes.add(quadMesh(1.0f, texturedGlow))}, glm::vec3(0.0f));
+        renderer::TextureSet textures;
+        QVERIFY(renderer::hasUnsampledEmitters(texturedMesh, &textures));
+        textures.meanOf[{image, true}] = glm::vec3(0.5f);
+        QVERIFY(!renderer::hasUnsampledEmitters(texturedMesh, &textures));
     }
 };
 
