@@ -43,7 +43,7 @@ struct Vertex {
 // Whether the path ends at this vertex with its light samples weighted 1. At the bounce limit the
 // BSDF-sampled ray would serve only to find emitters, for MIS; where light sampling reaches them all
 // and the vertex has no narrow lobe (which light samples would seldom meet), light samples alone
-// have the same expectation and about the same variance, without that ray's walk (about 6 % of a
+// have the same expectation and about the same variance, without that ray's walk (5 to 10 % of a
 // sample's time at 4 bounces on llvmpipe: docs/PERFORMANCE.md, "The last bounce's BSDF ray").
 bool endsAtLightSamples(Vertex v, int depth, int maxBounces) {
     return depth == maxBounces && uEveryEmitterLightSampled && !v.inMedium &&
