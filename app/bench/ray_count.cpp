@@ -6,7 +6,6 @@
 #include "renderer/gpu_scene/camera_setup.h"
 #include "renderer/gpu_scene/mesh_data.h"
 #include "renderer/gpu_scene/prepared_scene.h"
-#include "scene/core/portal.h"
 
 #include <algorithm>
 #include <cmath>
@@ -22,7 +21,7 @@ struct Walk {
     const renderer::MeshData& data;
     std::vector<float> survival; // per renderer material index: max component of the base colour
     int lightsPerVertex = 0;     // punctual lights and a sampled environment
-    bool endsAtLightSamples = false; // the last vertex casts no closest-hit ray (everyEmitterLightSampled)
+    bool endsAtLightSamples = false; // the last vertex casts no closest-hit ray (the bench's surfaces are rough)
     std::mt19937 rng{12345u};
     RayCount count;
 
@@ -115,16 +114,6 @@ int lightsPerVertex(const Scene& scene) {
     return lights + (scene.settings.environment.file.empty() ? 0 : 1);
 }
 
-// integrator.glsl endsAtLightSamples for the bench's rough surfaces: with no environment light, no
-// portal and no emitter left to BSDF sampling, a path ends at its last vertex's light samples.
-bool endsAtLightSamples(const Scene& scene) {
-    const Environment& e = scene.settings.environment;
-    if (!e.file.empty() || e.color * e.intensity != glm::vec3(0.0f) || renderer::hasUnsampledEmitters(scene, nullptr)) return false;
-    for (const NodeId id : scene.depthFirst())
-        if (portalPartner(scene, id)) return false;
-    return true;
-}
-
 } // namespace
 
 RayCount countRays(const Scene& scene, int width, int height, int bounces, int pathsPerPixel) {
@@ -132,7 +121,8 @@ RayCount countRays(const Scene& scene, int width, int height, int bounces, int p
     std::vector<float> survival = survivalByIndex(scene, materialIndex);
     renderer::MeshBvhCache cache;
     const renderer::MeshData data = renderer::buildMeshData(scene, materialIndex, false, cache);
-    Walk walk{data, std::move(survival), lightsPerVertex(scene), endsAtLightSamples(scene), std::mt19937(12345u), RayCount{}};
+    Walk walk{data, std::move(survival), lightsPerVertex(scene), renderer::lightSamplingReachesEveryEmitter(scene, nullptr, !scene.settings.environment.file.empty()),
+              std::mt19937(12345u), RayCount{}};
     const renderer::CameraSetup camera = renderer::resolveCamera(scene, "", width, height);
     const glm::vec3 eye(camera.worldFromCamera[3]);
     for (int y = 0; y < height; ++y)

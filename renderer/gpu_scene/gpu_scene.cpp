@@ -124,7 +124,6 @@ void GpuScene::updateTransforms(const Scene& scene) {
     features_.emissiveShapes = moved.emissiveShapes;
     features_.portals = moved.portals;
     meshes_.updateTransforms(scene, packed_.materialIndex, &textureSlots_);
-    features_.unsampledEmitters = hasUnsampledEmitters(scene, &textureSlots_);
     noteAreaEmitters();
 }
 
@@ -153,14 +152,9 @@ bool GpuScene::updateMaterials(const Scene& scene) {
     packed_.materials = std::move(repacked.materials);
     materials_ = vec4Buffer("the material buffer", packed_.materials);
     meshes_.updateEmission(scene, packed_.materialIndex, &textureSlots_);
-    features_.unsampledEmitters = hasUnsampledEmitters(scene, &textureSlots_);
+    features_.everyEmitterLightSampled = lightSamplingReachesEveryEmitter(scene, &textureSlots_, features_.environmentMap);
     noteAreaEmitters();
     return true;
-}
-
-bool GpuScene::everyEmitterLightSampled() const {
-    return !features_.environmentMap && environment_.color * environment_.intensity == glm::vec3(0.0f) &&
-           !features_.portals && !features_.unsampledEmitters;
 }
 
 void GpuScene::bind(const gl::ShaderProgram& program) const {

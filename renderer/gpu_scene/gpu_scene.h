@@ -45,10 +45,6 @@ public:
     const PackedScene& packed() const { return packed_; }
 
     const SceneFeatures& features() const { return features_; }
-    // Whether light sampling reaches every emitter a ray can meet: no environment light, no portal
-    // (paths cross it, shadow rays do not) and no emitter left to BSDF-sampled rays
-    // (hasUnsampledEmitters). Then a path may end at its last vertex's light samples.
-    bool everyEmitterLightSampled() const;
     // Problems that did not stop the upload (missing or undecodable textures, resampled sizes).
     const Warnings& warnings() const { return warnings_; }
     // Binds the buffers to texture units 0..12, the texture arrays to 13..15 (the 16 units GL 4.1

@@ -3,6 +3,7 @@
 #include "renderer/gpu_scene/texture_refs.h"
 #include "scene/anim/node_animation.h"
 #include "scene/anim/scene_at_time.h"
+#include "scene/core/portal.h"
 #include "scene/io/oiio/oiio_image_decoder.h"
 
 #include <algorithm>
@@ -121,6 +122,14 @@ bool hasUnsampledEmitters(const Scene& scene, const TextureSet* textures) {
     return false;
 }
 
+bool lightSamplingReachesEveryEmitter(const Scene& scene, const TextureSet* textures, bool environmentMap) {
+    const Environment& e = scene.settings.environment;
+    if (environmentMap || e.color * e.intensity != glm::vec3(0.0f) || hasUnsampledEmitters(scene, textures)) return false;
+    for (const auto& [id, node] : scene.nodes())
+        if (portalPartner(scene, id)) return false;
+    return true;
+}
+
 // TextureSet words its warnings for people (texture_set.cpp); the code is read back from them so
 // that scripts can filter by a stable name.
 std::string textureWarningCode(const std::string& message) {
@@ -164,7 +173,6 @@ PreparedScene prepareScene(const Scene& scene, const std::filesystem::path& envi
     out.features.media = usesMedia(scene);
     out.features.indexMatched = usesIndexMatched(scene);
     out.features.transmission = usesTransmission(scene);
-    out.features.unsampledEmitters = hasUnsampledEmitters(scene, &out.textures);
     out.environmentFile = environmentFile;
     if (!environmentFile.empty()) {
         report(control, PreparationStage::Environment, 0, 1);
@@ -173,6 +181,7 @@ PreparedScene prepareScene(const Scene& scene, const std::filesystem::path& envi
         out.environmentMap = std::move(env);
         out.features.environmentMap = true;
     }
+    out.features.everyEmitterLightSampled = lightSamplingReachesEveryEmitter(scene, &out.textures, out.features.environmentMap);
     return out;
 }
 

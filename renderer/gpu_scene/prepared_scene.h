@@ -43,7 +43,9 @@ struct SceneFeatures {
     bool indexMatched = false; // a transmissive IOR-1 material: shadow rays cross it (HAS_INDEX_MATCHED)
     bool portals = false;     // a linked portal pair: paths cross it (HAS_PORTALS)
     bool transmission = false; // a material that transmits: the BSDF's glass lobe (HAS_TRANSMISSION)
-    bool unsampledEmitters = false; // an emitter only BSDF-sampled rays find (hasUnsampledEmitters); no define
+    // Light sampling reaches every emitter (lightSamplingReachesEveryEmitter): paths may end at their
+    // last vertex's light samples. A uniform, not a define.
+    bool everyEmitterLightSampled = false;
     std::map<std::string, std::string> defines() const; // gl::Defines: NAME -> value
 };
 
@@ -59,6 +61,10 @@ bool usesTransmission(const Scene& scene);
 // emissive ground plane or emissive-textured shape (packed_scene.cpp), or an emissive mesh material
 // whose texture has no mean in `textures` (texture_refs.h, sampledEmission).
 bool hasUnsampledEmitters(const Scene& scene, const TextureSet* textures);
+// Whether light sampling reaches every emitter a ray can meet: no environment map (`environmentMap`)
+// and a black background colour, no portal (paths cross it, shadow rays do not), and no emitter left
+// to BSDF-sampled rays (hasUnsampledEmitters). Then a path may end at its last vertex's light samples.
+bool lightSamplingReachesEveryEmitter(const Scene& scene, const TextureSet* textures, bool environmentMap);
 
 struct PreparedEnvironment {
     EnvironmentImage image;

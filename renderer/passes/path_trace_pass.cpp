@@ -58,7 +58,7 @@ void PathTracePass::render(const GpuScene& scene, const CameraSetup& camera, con
     setIntegratorUniforms(program, settings, sampleIndex);
     // BSDF sampling alone (a test's debug variant) must trace the last bounce's ray.
     const bool lightSampled = settings.areaLightStrategy != AreaLightStrategy::BsdfOnly;
-    glUniform1i(program.uniform("uEveryEmitterLightSampled"), lightSampled && scene.everyEmitterLightSampled() ? 1 : 0);
+    glUniform1i(program.uniform("uEveryEmitterLightSampled"), lightSampled && scene.features().everyEmitterLightSampled ? 1 : 0);
     target.bindForDrawing();
     triangle_.draw();
 }

@@ -7,7 +7,7 @@
 uniform int uMaxBounces;
 uniform float uClamp; // 0: off (unbiased)
 // Light sampling reaches every emitter a ray can meet: no environment light, no portal, no emitter
-// left to BSDF sampling (GpuScene::everyEmitterLightSampled), and the strategies include it.
+// left to BSDF sampling (lightSamplingReachesEveryEmitter), and the strategies include it.
 uniform bool uEveryEmitterLightSampled;
 
 // Which strategies find the light of area emitters (renderer/gpu_scene SceneFeatures): 0 both, with

@@ -12,7 +12,7 @@
 #include "renderer/frame_renderer.h"
 #include "renderer/gl/headless_context.h"
 #include "renderer/offline_render.h"
-#include "scene/history/change_set.h"
+#include "scene/history/asset_commands.h"
 
 #include <QTest>
 
@@ -139,11 +139,9 @@ private slots:
         frames.renderFrame();
 
         const MaterialId ground = scene.at(scene.roots().front()).get<Shape>()->material;
-        scene.materials.at(ground).emissiveFactor = kEmission;
-        ChangeSet change;
-        change.add(Change::Material);
-        change.materials.insert(ground);
-        QVERIFY(frames.applyChangesInPlace(scene, change));
+        Material emissive = scene.materials.at(ground);
+        emissive.emissiveFactor = kEmission;
+        QVERIFY(frames.applyChangesInPlace(scene, SetMaterial(ground, emissive).apply(scene)));
         frames.renderFrame();
         renderer::RenderOutput out;
         out.radiance = frames.readImages().radiance;

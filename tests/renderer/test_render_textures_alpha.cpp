@@ -7,7 +7,7 @@
 
 #include "renderer/frame_renderer.h"
 #include "renderer/gl/headless_context.h"
-#include "scene/history/change_set.h"
+#include "scene/history/asset_commands.h"
 #include "scene/io/scene_io.h"
 
 #include <QTest>
@@ -228,11 +228,9 @@ private slots:
         const auto [culledLow, culledHigh] = redRange();
         QVERIFY2(std::abs(culledLow - 1.0f) < 1e-4f && std::abs(culledHigh - 1.0f) < 1e-4f, qPrintable(QString::number(culledLow)));
 
-        scene.materials.at(edited).doubleSided = true;
-        ChangeSet change;
-        change.add(Change::Material);
-        change.materials.insert(edited);
-        QVERIFY(frames.applyChangesInPlace(scene, change));
+        Material doubleSided = scene.materials.at(edited);
+        doubleSided.doubleSided = true;
+        QVERIFY(frames.applyChangesInPlace(scene, SetMaterial(edited, doubleSided).apply(scene)));
         frames.renderFrame();
         const std::vector<float> inPlace = frames.readImages().radiance;
         float brightest = 0.0f;

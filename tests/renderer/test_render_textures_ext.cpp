@@ -10,7 +10,7 @@
 
 #include "renderer/frame_renderer.h"
 #include "renderer/gl/headless_context.h"
-#include "scene/history/change_set.h"
+#include "scene/history/asset_commands.h"
 
 #include <QTest>
 
@@ -226,11 +226,9 @@ private slots:
         edited.setScene(scene);
         const std::vector<float> before = frame(edited);
 
-        scene.materials.at(id).specularTexture = ref(mr);
-        ChangeSet change;
-        change.add(Change::Material);
-        change.materials.insert(id);
-        edited.applyChanges(scene, change);
+        Material textured = scene.materials.at(id);
+        textured.specularTexture = ref(mr);
+        edited.applyChanges(scene, SetMaterial(id, textured).apply(scene));
         const std::vector<float> after = frame(edited);
 
         edited.setScene(scene); // a full rebuild (same programs: no second compile of the variant)
