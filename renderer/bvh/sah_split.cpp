@@ -70,6 +70,11 @@ struct BinMapping {
         static_assert(sizeof(Box4) == 32);
         simd::truncateShifted<5>(simd::min(simd::max((centroid - lo) * scale, simd::splat(0.0f)), top), offset);
     }
+    // The same offsets, and the three bins as the low bytes of the result (x lowest).
+    std::uint32_t offsetsAndBins(F4 centroid, std::uint32_t offset[4]) const
+    {
+        return simd::truncateShiftedAndBytes<5>(simd::min(simd::max((centroid - lo) * scale, simd::splat(0.0f)), top), offset);
+    }
 };
 
 struct SplitChoice {
@@ -78,32 +83,34 @@ struct SplitChoice {
     int firstRightBin = 0;
 };
 
-// Sorts the range into the bins of every axis that has extent, in one pass over the items.
-// Sorts the range into the bins of all three axes, in one pass over the items. From
-// kTwoSetsFrom items on, even and odd items go to two sets of bins, merged after: runs of items
-// in one bin then do not wait for each other's stores.
+// Sorts the range into the bins of all three axes, in one pass over the items, and notes each
+// item's bins in `binOf` (byte a of binOf[i]: item i's bin on axis a), which the partition then
+// reads instead of the items. From kTwoSetsFrom items on, even and odd items go to
+// two sets of bins, merged after: runs of items in one bin then do not wait for each other's stores.
 template <bool MayBeEmpty, int Sets>
-void fillBins(std::span<const BuildItem> range, const BinMapping& mapping, int binCount, Bins* sets)
+void fillBins(std::span<const BuildItem> range, const BinMapping& mapping, int binCount, Bins* sets, std::uint32_t* binOf)
 {
+    const std::size_t size = range.size();
     const F4 countOne = simd::set(-0.0f, -0.0f, -0.0f, 1.0f);
     const auto add = [&](Bins& bins, std::size_t axis, std::uint32_t offset, const ItemGeometry& g) {
         Box4& box = *reinterpret_cast<Box4*>(reinterpret_cast<unsigned char*>(bins.box[axis].data()) + offset);
         box.lo = simd::min(g.lo, box.lo);
         box.hi = simd::max(g.hi, box.hi) + countOne; // g.hi's lane 3 is zero, the count is not negative
     };
-    const auto bin = [&](Bins& bins, const BuildItem& item) {
-        const ItemGeometry g = geometry<MayBeEmpty>(item);
+    const auto bin = [&](Bins& bins, std::size_t i) {
+        const ItemGeometry g = geometry<MayBeEmpty>(range[i]);
         std::uint32_t offset[4];
-        mapping.offsets(g.centroid, offset);
+        binOf[i] = mapping.offsetsAndBins(g.centroid, offset);
         add(bins, 0, offset[0], g);
         add(bins, 1, offset[1], g);
         add(bins, 2, offset[2], g);
     };
+    static_assert(kMaxBins <= 128, "bins are noted as bytes and compared as signed ones");
     std::size_t i = 0;
     if constexpr (Sets == 2) {
-        for (; i + 1 < range.size(); i += 2) {
-            bin(sets[0], range[i]);
-            bin(sets[1], range[i + 1]);
+        for (; i + 1 < size; i += 2) {
+            bin(sets[0], i);
+            bin(sets[1], i + 1);
         }
         const F4 countLane = simd::equalMask(simd::seti(0, 0, 0, 1), simd::splati(1));
         for (std::size_t axis = 0; axis < 3; ++axis) {
@@ -115,7 +122,7 @@ void fillBins(std::span<const BuildItem> range, const BinMapping& mapping, int b
             }
         }
     }
-    for (; i < range.size(); ++i) bin(sets[0], range[i]);
+    for (; i < size; ++i) bin(sets[0], i);
 }
 
 // The counts again as integers, for a range too long for float counts: a second pass.
@@ -219,44 +226,31 @@ void swapItems(BuildItem& a, BuildItem& b)
     simd::store(&b.hi.x, aHi);
 }
 
-// Items whose centroid maps below bin `firstRight` on `axis` go first; returns how many.
-//
-// int(f) < k is f < k for the clamped f >= 0 and whole k >= 1, so the test stays in floats:
-// !(f >= k) (NaN goes left, as it maps to bin 0). The order within each side is that of
-// libstdc++'s std::partition, which swaps the first item from the front that goes right with the
-// first from the back that goes left, and so on inwards: the k-th item going right among the first
-// L (L items go left) trades places with the k-th item going left from the back. That is done here
-// without a branch per item: one pass marks each item's side in a bit array, then the pairs are
-// found with bit scans and swapped, then one pass over each side measures its centroids.
+// Items whose bin on `axis` (in `binOf`, as fillBins noted it) is below `firstRight` go first;
+// returns how many. The order within each side is that of libstdc++'s std::partition, which swaps
+// the first item from the front that goes right with the first from the back that goes left, and so
+// on inwards: the k-th item going right among the first L (L items go left) trades places with the
+// k-th item going left from the back. That is done here without a branch per item: one pass marks
+// each item's side in a bit array, 16 bins at a time, then the pairs are found with bit scans and
+// swapped, then one pass over each side measures its centroids.
 template <bool MayBeEmpty>
-std::uint32_t partition(std::span<BuildItem> range, const BinMapping& mapping, int axis, int firstRight, std::vector<std::uint64_t>& goesLeft,
+std::uint32_t partition(std::span<BuildItem> range, const std::uint32_t* binOf, int axis, int firstRight, std::vector<std::uint64_t>& goesLeft,
                         Aabb& leftCentroids, Aabb& rightCentroids)
 {
-    const float lo = simd::lane(mapping.lo, axis);
-    const float scale = simd::lane(mapping.scale, axis);
-    const auto threshold = static_cast<float>(firstRight);
     const std::size_t n = range.size();
-    // Lane `axis` of geometry()'s centroid: lo and hi are 16 bytes apart.
-    const std::size_t loOffset = offsetof(BuildItem, lo) + sizeof(float) * static_cast<std::size_t>(axis);
-    static_assert(offsetof(BuildItem, hi) - offsetof(BuildItem, lo) == 16);
-    const auto centroidOnAxis = [&](const BuildItem& item) {
-        if constexpr (MayBeEmpty) return simd::lane(geometry<true>(item).centroid, axis);
-        float lo, hi;
-        std::memcpy(&lo, reinterpret_cast<const unsigned char*>(&item) + loOffset, sizeof(float));
-        std::memcpy(&hi, reinterpret_cast<const unsigned char*>(&item) + loOffset + 16, sizeof(float));
-        return (lo + hi) * 0.5f;
-    };
+    const auto threshold = static_cast<std::uint8_t>(firstRight);
     std::size_t leftCount = 0;
     goesLeft.resize((n + 63) / 64);
     for (std::size_t w = 0; w < goesLeft.size(); ++w) {
+        const std::size_t begin = 64 * w, end = std::min(n, begin + 64);
         std::uint64_t word = 0;
-        const std::size_t end = std::min(n, 64 * w + 64);
-        for (std::size_t i = 64 * w; i < end; ++i) {
-            const bool left = !((centroidOnAxis(range[i]) - lo) * scale >= threshold);
-            word |= std::uint64_t{left} << (i % 64);
-            leftCount += left; // summed here: without -mpopcnt, std::popcount is a library call
+        if (end - begin == 64) {
+            for (std::size_t q = 0; q < 4; ++q) word |= std::uint64_t{simd::bytesBelow16(binOf + begin + 16 * q, axis, threshold)} << (16 * q);
+        } else {
+            for (std::size_t i = begin; i < end; ++i) word |= std::uint64_t{((binOf[i] >> (8 * axis)) & 0xFF) < threshold} << (i % 64);
         }
         goesLeft[w] = word;
+        leftCount += static_cast<std::size_t>(std::popcount(word));
     }
     // The next item going right from the front trades places with the next going left from the
     // back, until the two meet. Bits past n in the last word read as "right" from the front: they
@@ -378,8 +372,9 @@ RangeSplit split(std::span<BuildItem> items, const BuildRange& range, const Buil
     const std::span<BuildItem> rangeItems = items.subspan(range.begin, count);
     // Every axis is binned: one without extent has scale 0, so all its items land in bin 0, and
     // chooseSplit ignores it.
-    if (axisCount > 0 && setCount == 2) fillBins<MayBeEmpty, 2>(rangeItems, mapping, binCount, sets);
-    if (axisCount > 0 && setCount == 1) fillBins<MayBeEmpty, 1>(rangeItems, mapping, binCount, sets);
+    if (scratch.binOf.size() < count) scratch.binOf.resize(count);
+    if (axisCount > 0 && setCount == 2) fillBins<MayBeEmpty, 2>(rangeItems, mapping, binCount, sets, scratch.binOf.data());
+    if (axisCount > 0 && setCount == 1) fillBins<MayBeEmpty, 1>(rangeItems, mapping, binCount, sets, scratch.binOf.data());
     if (axisCount > 0 && count > kFloatCounts) countBins<MayBeEmpty>(rangeItems, mapping, binCount, bins);
     const SplitChoice best = axisCount > 0 ? chooseSplit(bins, useAxis, binCount, count) : SplitChoice{};
     const float bestCost = best.cost / parentArea;
@@ -395,7 +390,8 @@ RangeSplit split(std::span<BuildItem> items, const BuildRange& range, const Buil
         return split;
     }
     Aabb leftCentroids, rightCentroids;
-    const std::uint32_t leftCount = partition<MayBeEmpty>(rangeItems, mapping, best.axis, best.firstRightBin, scratch.goesLeft, leftCentroids, rightCentroids);
+    const std::uint32_t leftCount =
+        partition<MayBeEmpty>(rangeItems, scratch.binOf.data(), best.axis, best.firstRightBin, scratch.goesLeft, leftCentroids, rightCentroids);
     split.left = BuildRange{range.begin, leftCount, binBounds(bins, best.axis, 0, best.firstRightBin), leftCentroids};
     split.right = BuildRange{range.begin + leftCount, count - leftCount, binBounds(bins, best.axis, best.firstRightBin, binCount),
                              rightCentroids};

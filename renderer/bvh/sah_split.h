@@ -46,6 +46,7 @@ bool anyEmpty(std::span<const BuildItem> items);
 // Working memory of splitRange that its caller keeps between calls (one per thread).
 struct SplitScratch {
     std::vector<std::uint64_t> goesLeft; // the partition's side of each item, one bit each
+    std::vector<std::uint32_t> binOf;    // each item's bins, one byte per axis
 };
 
 RangeSplit splitRange(std::span<BuildItem> items, const BuildRange& range, const BuildOptions& options, bool mayBeEmpty,

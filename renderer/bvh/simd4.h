@@ -109,6 +109,27 @@ inline void truncateShifted(F4 a, std::uint32_t out[4])
     _mm_storeu_si128(reinterpret_cast<__m128i*>(out), _mm_slli_epi32(_mm_cvttps_epi32(a.v), Shift));
 }
 
+// Lanes truncated towards zero (each within [0, 128)): times 2^Shift into `out`, and lanes 0-3 as
+// the bytes of the result, lane 0 lowest.
+template <int Shift>
+inline std::uint32_t truncateShiftedAndBytes(F4 a, std::uint32_t out[4])
+{
+    const __m128i whole = _mm_cvttps_epi32(a.v);
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(out), _mm_slli_epi32(whole, Shift));
+    const __m128i halves = _mm_packs_epi32(whole, whole);
+    return static_cast<std::uint32_t>(_mm_cvtsi128_si32(_mm_packus_epi16(halves, halves)));
+}
+// Bit i set where byte `byte` of words[i] is below k, for 16 words whose bytes are below 128.
+inline std::uint32_t bytesBelow16(const std::uint32_t* words, int byte, std::uint8_t k)
+{
+    const __m128i shift = _mm_cvtsi32_si128(8 * byte), low = _mm_set1_epi32(0xFF);
+    const auto column = [&](int i) {
+        return _mm_and_si128(_mm_srl_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(words + 4 * i)), shift), low);
+    };
+    const __m128i bytes = _mm_packs_epi16(_mm_packs_epi32(column(0), column(1)), _mm_packs_epi32(column(2), column(3)));
+    return static_cast<std::uint32_t>(_mm_movemask_epi8(_mm_cmplt_epi8(bytes, _mm_set1_epi8(static_cast<char>(k)))));
+}
+
 #else
 
 struct F4 {
@@ -221,6 +242,23 @@ template <int Shift>
 inline void truncateShifted(F4 a, std::uint32_t out[4])
 {
     for (int i = 0; i < 4; ++i) out[i] = static_cast<std::uint32_t>(static_cast<std::int32_t>(a.v[i])) << Shift;
+}
+template <int Shift>
+inline std::uint32_t truncateShiftedAndBytes(F4 a, std::uint32_t out[4])
+{
+    std::uint32_t bytes = 0;
+    for (int i = 0; i < 4; ++i) {
+        const auto whole = static_cast<std::uint32_t>(static_cast<std::int32_t>(a.v[i]));
+        out[i] = whole << Shift;
+        bytes |= whole << (8 * i);
+    }
+    return bytes;
+}
+inline std::uint32_t bytesBelow16(const std::uint32_t* words, int byte, std::uint8_t k)
+{
+    std::uint32_t mask = 0;
+    for (std::uint32_t i = 0; i < 16; ++i) mask |= std::uint32_t{((words[i] >> (8 * byte)) & 0xFF) < k} << i;
+    return mask;
 }
 
 #endif
