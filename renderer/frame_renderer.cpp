@@ -145,7 +145,7 @@ int effectiveBounces(const FrameSettings& s) { return traitsOf(s.configuration).
 // sample cap and how the samples are sliced into frames).
 bool sameImageSettings(const FrameSettings& a, const FrameSettings& b) {
     return a.configuration == b.configuration && framesSpp(a) == framesSpp(b) &&
-           effectiveBounces(a) == effectiveBounces(b) && a.seed == b.seed && a.view == b.view && a.clamp == b.clamp &&
+           effectiveBounces(a) == effectiveBounces(b) && a.seed == b.seed && a.view == b.view && a.clamp == b.clamp && a.sampleBlock == b.sampleBlock &&
            a.independentSampler == b.independentSampler && a.aoDistance == b.aoDistance && a.areaLightStrategy == b.areaLightStrategy && a.width == b.width &&
            a.height == b.height && a.renderPasses == b.renderPasses && a.adaptive == b.adaptive;
 }
@@ -264,8 +264,10 @@ struct FrameRenderer::State {
     }
     PathTraceSettings pathTraceSettings() const {
         const ConfigurationTraits traits = traitsOf(settings.configuration);
+        // The real-time filters estimate noise from neighbouring pixels, which sample blocks correlate.
+        const int sampleBlock = traits.accumulate ? settings.sampleBlock : 1;
         return {settings.seed, effectiveBounces(settings), settings.clamp, settings.independentSampler, settings.view,
-                settings.aoDistance, traits.svgf, traits.ao, settings.areaLightStrategy, false};
+                settings.aoDistance, traits.svgf, traits.ao, settings.areaLightStrategy, false, sampleBlock};
     }
     // Render passes are traced in whole Accumulate/Reference frames of the plain view only.
     bool renderingPasses() const {

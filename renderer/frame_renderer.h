@@ -38,6 +38,7 @@ struct FrameSettings {
     std::optional<Tonemapper> tonemapper; // unset: the project's
     DebugView view = DebugView::None;
     float clamp = 0.0f;     // per-sample radiance clamp; 0 = off
+    int sampleBlock = 1;    // Accumulate/Reference: pixels per side sharing a sample sequence (RenderSettings)
     bool independentSampler = false;
     float aoDistance = 1.0f;
     AreaLightStrategy areaLightStrategy = AreaLightStrategy::Mis; // tests only: one strategy alone

@@ -77,6 +77,7 @@ FrameSettings frameSettingsFor(const RenderRequest& request, int sppPerFrame) {
     s.tonemapper = request.tonemapper;
     s.view = request.view;
     s.clamp = request.clamp;
+    s.sampleBlock = request.sampleBlock;
     s.bloom = request.bloom;
     s.bloomLinear = request.bloomLinear;
     s.renderPasses = request.renderPasses;

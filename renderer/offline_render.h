@@ -35,6 +35,7 @@ struct RenderRequest {
     std::filesystem::path sceneFolder;    // resolves the project's relative environment path
     bool requireGpu = false;
     float clamp = 0.0f;                   // 0 = off (unbiased)
+    int sampleBlock = 1;                  // Accumulate/Reference: pixels per side sharing a sample sequence
     bool independentSampler = false;
     // Render only these pixels (top-left origin); outside them the images read back hold nothing
     // meaningful and RenderOutput::window names the valid ones. Unset: the whole image.

@@ -173,6 +173,8 @@ T = {
 "A new language applies to menus and panels after a restart.": ("Una nuova lingua si applica a menu e pannelli dopo un riavvio.", "Eine neue Sprache gilt für Menüs und Bereiche nach einem Neustart.", "Une nouvelle langue s'applique aux menus et panneaux après un redémarrage.", "Un nuevo idioma se aplica a menús y paneles tras reiniciar."),
 " min": (" min", " min", " min", " min"),
 "Off": ("Disattivato", "Aus", "Désactivé", "Desactivado"),
+"Sample blocks (pixels sharing a sequence)": ("Blocchi di campioni (pixel con una sequenza comune)", "Sample-Blöcke (Pixel mit gemeinsamer Folge)", "Blocs d'échantillons (pixels partageant une séquence)", "Bloques de muestras (píxeles que comparten una secuencia)"),
+"Change sample blocks": ("Modifica blocchi di campioni", "Sample-Blöcke ändern", "Modifier les blocs d'échantillons", "Cambiar bloques de muestras"),
 "Autosave interval": ("Intervallo di salvataggio automatico", "Intervall für automatisches Speichern", "Intervalle de sauvegarde automatique", "Intervalo de guardado automático"),
 "Autosave every": ("Salvataggio automatico ogni", "Automatisch speichern alle", "Sauvegarde automatique toutes les", "Guardado automático cada"),
 "Command": ("Comando", "Befehl", "Commande", "Comando"),

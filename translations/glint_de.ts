@@ -457,6 +457,10 @@
         <source>Add studio environment</source>
         <translation>Studio-Umgebung hinzufügen</translation>
     </message>
+    <message>
+        <source>Change sample blocks</source>
+        <translation>Sample-Blöcke ändern</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Configurations</name>
@@ -2379,6 +2383,14 @@
     <message>
         <source>Least mean error</source>
         <translation>Geringster mittlerer Fehler</translation>
+    </message>
+    <message>
+        <source>Sample blocks (pixels sharing a sequence)</source>
+        <translation>Sample-Blöcke (Pixel mit gemeinsamer Folge)</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>Aus</translation>
     </message>
 </context>
 <context>

@@ -457,6 +457,10 @@
         <source>Add studio environment</source>
         <translation>Añadir entorno de estudio</translation>
     </message>
+    <message>
+        <source>Change sample blocks</source>
+        <translation>Cambiar bloques de muestras</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Configurations</name>
@@ -2379,6 +2383,14 @@
     <message>
         <source>Least mean error</source>
         <translation>Error medio mínimo</translation>
+    </message>
+    <message>
+        <source>Sample blocks (pixels sharing a sequence)</source>
+        <translation>Bloques de muestras (píxeles que comparten una secuencia)</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>Desactivado</translation>
     </message>
 </context>
 <context>

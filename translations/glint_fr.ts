@@ -457,6 +457,10 @@
         <source>Add studio environment</source>
         <translation>Ajouter l'environnement studio</translation>
     </message>
+    <message>
+        <source>Change sample blocks</source>
+        <translation>Modifier les blocs d'échantillons</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Configurations</name>
@@ -2379,6 +2383,14 @@
     <message>
         <source>Least mean error</source>
         <translation>Erreur moyenne minimale</translation>
+    </message>
+    <message>
+        <source>Sample blocks (pixels sharing a sequence)</source>
+        <translation>Blocs d'échantillons (pixels partageant une séquence)</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>Désactivé</translation>
     </message>
 </context>
 <context>

@@ -457,6 +457,10 @@
         <source>Add studio environment</source>
         <translation>Aggiungi ambiente studio</translation>
     </message>
+    <message>
+        <source>Change sample blocks</source>
+        <translation>Modifica blocchi di campioni</translation>
+    </message>
 </context>
 <context>
     <name>glint::editor::Configurations</name>
@@ -2379,6 +2383,14 @@
     <message>
         <source>Least mean error</source>
         <translation>Errore medio minimo</translation>
+    </message>
+    <message>
+        <source>Sample blocks (pixels sharing a sequence)</source>
+        <translation>Blocchi di campioni (pixel con una sequenza comune)</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>Disattivato</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,7 @@
 
 #include "cli_validators.h"
 #include "size_option.h"
+#include "scene/core/settings.h"
 #include "scene/core/tonemapper_names.h"
 
 #include <stdexcept>
@@ -63,6 +64,12 @@ void addCommonRenderOptions(CLI::App& cmd, CommonRenderOptions& o) {
     cmd.add_option("--shutter", o.shutter, "Motion blur: the shutter's open time in frames, 0 (off) to 1, centred on the "
                                            "frame; Accumulate and Reference (default: the project's, 0)")
         ->check(finiteIn(0.0, 1.0));
+    cmd.add_option("--sample-block", o.sampleBlock,
+                   "Pixels per side of the aligned blocks that share one sample sequence: 1 (off), 2, 4 or 8. Their "
+                   "paths stay together, which SIMD lanes and GPUs trace faster; each pixel's error is the same, but "
+                   "it correlates within a block (as Cycles' scrambling distance); Accumulate and Reference "
+                   "(default: the project's, 1)")
+        ->check(CLI::IsMember(std::vector<int>(kSampleBlockSizes.begin(), kSampleBlockSizes.end())));
     cmd.add_option("--adaptive-threshold", o.adaptiveThreshold,
                    "Adaptive sampling: a pixel stops once its noise is below this, 0 (off) to 1; Cycles' default is "
                    "0.01; Accumulate and Reference (default: the project's, 0)")

@@ -109,6 +109,7 @@ std::string describeSettingsEdit(const ProjectSettings& b, const ProjectSettings
         {rb.tonemapper != ra.tonemapper, QT_TRANSLATE_NOOP("glint::editor::CommandLabels", "Change tonemapper")},
         {rb.clamp != ra.clamp, QT_TRANSLATE_NOOP("glint::editor::CommandLabels", "Change radiance clamp")},
         {rb.shutter != ra.shutter, QT_TRANSLATE_NOOP("glint::editor::CommandLabels", "Change motion blur")},
+        {rb.sampleBlock != ra.sampleBlock, QT_TRANSLATE_NOOP("glint::editor::CommandLabels", "Change sample blocks")},
         {rb.taa != ra.taa, QT_TRANSLATE_NOOP("glint::editor::CommandLabels", "Change TAA settings")},
         {rb.svgf != ra.svgf, QT_TRANSLATE_NOOP("glint::editor::CommandLabels", "Change SVGF settings")},
         {rb.bloom != ra.bloom, QT_TRANSLATE_NOOP("glint::editor::CommandLabels", "Change bloom")},

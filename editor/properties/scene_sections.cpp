@@ -20,6 +20,7 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <bit>
 
 namespace glint::editor {
 namespace {
@@ -204,6 +205,12 @@ PropertyForm* makeRenderForm(Document& document, const Report& report, QWidget* 
         PropertyForm::tr("Adaptive goal"), {PropertyForm::tr("Even noise (as Cycles)"), PropertyForm::tr("Least mean error")},
         [&scene] { return static_cast<int>(scene.settings.render.adaptive.goal); },
         [edit](int i) { edit([&](ProjectSettings& s) { s.render.adaptive.goal = static_cast<AdaptiveGoal>(i); }, 0); });
+    // Index i of the choice is a block of 2^i pixels per side (RenderSettings::sampleBlock).
+    form->addChoice(
+        PropertyForm::tr("Sample blocks (pixels sharing a sequence)"),
+        {PropertyForm::tr("Off"), QStringLiteral("2 x 2"), QStringLiteral("4 x 4"), QStringLiteral("8 x 8")},
+        [&scene] { return std::countr_zero(static_cast<unsigned>(scene.settings.render.sampleBlock)); },
+        [edit](int i) { edit([&](ProjectSettings& s) { s.render.sampleBlock = 1 << i; }, 0); });
     form->addFloat(
         PropertyForm::tr("Motion blur shutter (frames, 0 = off)"), 0.0, 1.0, 2, [&scene] { return double(scene.settings.render.shutter); },
         [edit](double v, std::uint64_t i) { edit([&](ProjectSettings& s) { s.render.shutter = float(v); }, i); });

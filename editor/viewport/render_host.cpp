@@ -301,6 +301,7 @@ void RenderHost::configure(const ViewRequest& request) {
     s.seed = project.seed;
     s.exposure = project.exposure;
     s.clamp = project.clamp;
+    s.sampleBlock = project.sampleBlock;
     s.adaptive = project.adaptive; // Accumulate only: the renderer leaves the moving view alone
     s.bloom = {project.bloom.strength, project.bloom.radius};
     s.view = request.mode == ViewMode::AmbientOcclusion ? renderer::DebugView::AmbientOcclusion

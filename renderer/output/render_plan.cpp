@@ -96,6 +96,7 @@ RenderPlan planRender(const Scene& scene, const std::filesystem::path& sceneFile
     r.sceneFolder = sceneFile.parent_path();
     r.requireGpu = o.requireGpu;
     r.clamp = project.clamp;
+    r.sampleBlock = o.sampleBlock.value_or(project.sampleBlock);
     r.configuration = configurationOf(scene, o);
     r.bloom.strength = o.bloom.value_or(project.bloom.strength);
     r.bloom.radius = o.bloomRadius.value_or(project.bloom.radius);
@@ -124,6 +125,8 @@ RenderPlan planRender(const Scene& scene, const std::filesystem::path& sceneFile
                      {"env", r.envFile.string()},
                      {"tonemap", std::string(tonemapperName(tonemapper))},
                      {"exposureEv", formatNumber(double(cameraExposure) + double(r.exposure))}};
+    // Only when on (as bloom below): frames rendered before sample blocks existed keep their hash.
+    if (r.sampleBlock != 1) plan.metadata["sampleBlock"] = std::to_string(r.sampleBlock);
     if (r.bloom.strength > 0.0f) { // only when on: frames rendered before bloom existed keep their hash
         plan.metadata["bloom"] = formatNumber(r.bloom.strength);
         plan.metadata["bloomRadius"] = formatNumber(r.bloom.radius);

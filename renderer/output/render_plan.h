@@ -36,6 +36,7 @@ struct RenderOverrides {
     std::optional<float> bloomRadius;   // fraction of the image height; unset: the project's
     bool bloomLinear = false;           // the EXR's radiance bloomed too
     std::optional<float> shutter;       // motion blur, frames the shutter is open (0 off to 1); unset: the project's
+    std::optional<int> sampleBlock;     // pixels per side of the blocks sharing a sample sequence; unset: the project's
     std::optional<float> adaptiveThreshold; // adaptive sampling's noise threshold, 0 (off) to 1; unset: the project's
     std::optional<int> adaptiveMinSpp;      // samples before its first test, 0 = automatic; unset: the project's
     std::optional<std::string> adaptiveGoal; // "even" or "mean" (scene/core/settings.h); unset: the project's

@@ -2,6 +2,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
+
 namespace glint::renderer {
 namespace {
 
@@ -19,6 +21,7 @@ void setIntegratorUniforms(const gl::ShaderProgram& program, const PathTraceSett
     glUniform1ui(program.uniform("uSeed"), settings.seed);
     glUniform1i(program.uniform("uMaxBounces"), std::max(settings.bounces, 0));
     glUniform1f(program.uniform("uClamp"), settings.clamp);
+    glUniform1ui(program.uniform("uSampleBlock"), static_cast<GLuint>(std::max(settings.sampleBlock, 1)));
     glUniform1i(program.uniform("uIndependentSampler"), settings.independentSampler ? 1 : 0);
     glUniform1f(program.uniform("uAoDistance"), settings.aoDistance);
     glUniform1f(program.uniform("uAmbientDistance"), settings.aoDistance);

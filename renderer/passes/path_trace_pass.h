@@ -41,6 +41,7 @@ struct PathTraceSettings {
     // them over targets 4-6 and an eighth (renderPassesAttachmentCount): offline Accumulate and
     // Reference only, where nothing reads the denoiser's targets. Off: the shader is unchanged.
     bool renderPasses = false;
+    int sampleBlock = 1; // the low-discrepancy sequence is keyed on pixel / sampleBlock (RenderSettings)
 };
 
 enum GBufferAttachment {

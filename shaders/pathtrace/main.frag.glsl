@@ -35,6 +35,7 @@
 
 uniform uint uSampleIndex;
 uniform uint uSeed;
+uniform uint uSampleBlock; // 1: every pixel its own sequence
 
 out vec4 outRadiance;
 out vec4 outAlbedo;
@@ -61,9 +62,11 @@ vec3 guardedPass(vec3 pass, bool kept) { return kept ? finiteNonNegative(pass) :
 
 void main() {
     uvec2 pixel = uvec2(gl_FragCoord.xy);
-    // Owen-scrambled Sobol' points per pixel (common/rng.glsl); the independent sampler (statistical
-    // tests: every sample independent) hashes each draw.
-    Rng rng = uIndependentSampler != 0 ? rngStart(pixel, uSampleIndex, uSeed) : rngStartLowDiscrepancy(pixel, uSampleIndex, uSeed);
+    // Owen-scrambled Sobol' points per pixel, or per block of pixels (uSampleBlock: one sequence for
+    // the block, so its paths stay together and SIMD lanes wait less); common/rng.glsl. The
+    // independent sampler (statistical tests: every sample independent) hashes each draw.
+    Rng rng = uIndependentSampler != 0 ? rngStart(pixel, uSampleIndex, uSeed)
+                                       : rngStartLowDiscrepancy(pixel / uSampleBlock, uSampleIndex, uSeed);
     Ray ray = cameraRay(pixel, rng);
     LobeRadiance lobes = noLobeRadiance();
 #if defined(DEBUG_VIEW_BVH_COST)

@@ -5,6 +5,7 @@
 // (hashed, so --resume re-renders when they change); bad values are usage errors naming the option.
 #include "cli_runner.h"
 #include "image_probe.h"
+#include "scene_with_project.h"
 
 #include <QDir>
 #include <QFile>
@@ -19,13 +20,7 @@ const QString kCornell = QStringLiteral(GLINT_RESOURCES_DIR "/scenes/cornell_box
 const QStringList kSmall = {"--size", "24x24", "--spp", "32", "--bounces", "2", "--aovs", "samples"};
 
 // dir/s.gltf, the Cornell box, with `project` as its project file.
-QString cornellWithProject(const QTemporaryDir& dir, const QByteArray& project) {
-    const QString scene = dir.filePath("s.gltf");
-    QFile::copy(kCornell, scene);
-    QFile f(dir.filePath("s.glint.json"));
-    if (f.open(QIODevice::WriteOnly)) f.write(project);
-    return scene;
-}
+QString cornellWithProject(const QTemporaryDir& dir, const QByteArray& project) { return sceneWithProject(kCornell, dir, project); }
 
 std::vector<float> channel(const ProbedImage& image, const std::string& name) {
     std::vector<float> plane;

@@ -22,6 +22,7 @@ ProjectFile sampleProject()
     p.settings.render.tonemapper = Tonemapper::PbrNeutral;
     p.settings.render.bloom = {.strength = 0.25f, .radius = 0.1f};
     p.settings.render.shutter = 0.5f;
+    p.settings.render.sampleBlock = 4;
     p.settings.render.adaptive = {.threshold = 0.02f, .minSamples = 48, .goal = AdaptiveGoal::Mean};
     p.settings.environment = {.file = "studio.hdr", .color = {0.1f, 0.2f, 0.3f}, .intensity = 1.5f, .rotationDegrees = 33.3f};
     p.settings.timeline = {.start = 0.5, .end = 10.1, .fpsNumerator = 24000, .fpsDenominator = 1001};
@@ -98,8 +99,11 @@ private slots:
         QVERIFY(parsed.settings == original.settings);
         QCOMPARE(writeProjectFileText(parsed), writeProjectFileText(original));
         QVERIFY(writeProjectFileText(original).find(R"("passes": "light,Vector")") != std::string::npos);
-        // No passes (the default): no key, so files saved before it existed keep their bytes.
+        QVERIFY(writeProjectFileText(original).find(R"("sampleBlock": 4)") != std::string::npos);
+        // No passes and no sample blocks (the defaults): no keys, so files saved before they existed
+        // keep their bytes.
         QVERIFY(writeProjectFileText(ProjectFile{}).find("passes") == std::string::npos);
+        QVERIFY(writeProjectFileText(ProjectFile{}).find("sampleBlock") == std::string::npos);
     }
 
     // A fog is written whole and reads back to the same bytes; without one there is no "fog" key,
@@ -184,6 +188,8 @@ private slots:
         row("exposure 1e308", R"({"glint": 1, "render": {"exposure": 1e308}})", "bad-value: key 'render.exposure' must be a number of stops from -64 to 64");
         row("clamp -1", R"({"glint": 1, "render": {"clamp": -1}})", "bad-value: key 'render.clamp' must be 0 (off) or a positive number");
         row("shutter 2", R"({"glint": 1, "render": {"shutter": 2}})", "bad-value: key 'render.shutter' must be a fraction of a frame from 0 (off) to 1");
+        row("sampleBlock 3", R"({"glint": 1, "render": {"sampleBlock": 3}})", "bad-value: key 'render.sampleBlock' must be 1 (off), 2, 4 or 8");
+        row("sampleBlock 16", R"({"glint": 1, "render": {"sampleBlock": 16}})", "bad-value: key 'render.sampleBlock' must be 1 (off), 2, 4 or 8");
         row("adaptive threshold 2", R"({"glint": 1, "render": {"adaptive": {"threshold": 2}}})", "bad-value: key 'render.adaptive.threshold' must be a number from 0 (off) to 1");
         row("adaptive goal median", R"({"glint": 1, "render": {"adaptive": {"goal": "median"}}})", "bad-value: key 'render.adaptive.goal' must be one of even, mean, not 'median'");
         row("adaptive minSpp -1", R"({"glint": 1, "render": {"adaptive": {"minSpp": -1}}})", "bad-value: key 'render.adaptive.minSpp' must be an integer from 0 (automatic) to 1048576");

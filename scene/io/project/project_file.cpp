@@ -243,6 +243,7 @@ void readRender(ObjectReader& r, RenderSettings& s)
     r.readEnum("tonemapper", s.tonemapper, kTonemapperNames);
     r.readChecked("clamp", s.clamp, nonNegativeFinite, "0 (off) or a positive number");
     r.readChecked("shutter", s.shutter, [](float v) { return v >= 0.0f && v <= 1.0f; }, "a fraction of a frame from 0 (off) to 1");
+    r.readChecked("sampleBlock", s.sampleBlock, isSampleBlock, "1 (off), 2, 4 or 8");
     r.object("taa", [&](ObjectReader& nested) { readTaa(nested, s.taa); });
     r.object("svgf", [&](ObjectReader& nested) { readSvgf(nested, s.svgf); });
     r.object("bloom", [&](ObjectReader& nested) { readBloom(nested, s.bloom); });
@@ -448,6 +449,7 @@ std::string writeProjectFileText(const ProjectFile& project)
                       {"bounces", r.bounces}, {"seed", r.seed}, {"exposure", jsonFloat(r.exposure)},
                       {"tonemapper", enumName(r.tonemapper, kTonemapperNames)}, {"clamp", jsonFloat(r.clamp)}};
     if (r.shutter > 0.0f) root["render"]["shutter"] = jsonFloat(r.shutter); // files without motion blur keep their bytes
+    if (r.sampleBlock != 1) root["render"]["sampleBlock"] = r.sampleBlock;  // likewise files without sample blocks
     if (json taa = taaJson(r.taa); !taa.empty()) root["render"]["taa"] = std::move(taa);
     if (json svgf = svgfJson(r.svgf); !svgf.empty()) root["render"]["svgf"] = std::move(svgf);
     if (json bloom = bloomJson(r.bloom); !bloom.empty()) root["render"]["bloom"] = std::move(bloom);
