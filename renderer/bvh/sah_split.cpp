@@ -64,16 +64,18 @@ struct BinMapping {
     F4 lo = simd::splat(0.0f);
     F4 scale = simd::splat(0.0f);
     F4 top = simd::splat(0.0f); // bins - 1
+    // Each lane's bin coordinate, clamped to [0, bins - 1] but not yet truncated.
+    F4 clamped(F4 centroid) const { return simd::min(simd::max((centroid - lo) * scale, simd::splat(0.0f)), top); }
     // Each lane's bin times sizeof(Box4): its byte offset in its axis' bins.
     void offsets(F4 centroid, std::uint32_t offset[4]) const
     {
         static_assert(sizeof(Box4) == 32);
-        simd::truncateShifted<5>(simd::min(simd::max((centroid - lo) * scale, simd::splat(0.0f)), top), offset);
+        simd::truncateShifted<5>(clamped(centroid), offset);
     }
     // The same offsets, and the three bins as the low bytes of the result (x lowest).
     std::uint32_t offsetsAndBins(F4 centroid, std::uint32_t offset[4]) const
     {
-        return simd::truncateShiftedAndBytes<5>(simd::min(simd::max((centroid - lo) * scale, simd::splat(0.0f)), top), offset);
+        return simd::truncateShiftedAndBytes<5>(clamped(centroid), offset);
     }
 };
 
