@@ -2,6 +2,7 @@
 
 #include "renderer/gl/program_cache.h"
 #include "renderer/gl/render_target.h"
+#include "renderer/gl/scissor_guard.h"
 #include "renderer/passes/accumulate_pass.h"
 #include "renderer/passes/adaptive_sampling.h"
 #include "renderer/passes/mean_denoise_pass.h"
@@ -221,11 +222,12 @@ struct FrameRenderer::State {
     int frames = 0;
     std::uint32_t frameSampleIndex = 0; // real-time frames' sample counter: decorrelates frames
     const gl::RenderTarget* result = nullptr; // linear radiance of the last frame (attachment 0)
-    bool previewShown = false;  // no full-resolution result yet: the preview stands for the picture
+    bool previewShown = false;  // the preview stands for the picture: no full-resolution sample, or none filtered (denoiseInSteps)
     std::uint64_t shownIdsVersion = 0; // counts changes of shownGBuffer()'s object ids (the selection outline keeps its mask)
     int nextRow = 0;            // banded Accumulate: the first row of the sample in progress not traced
     FrameWork lastWork;
     int denoisedSamples = 0; // the still mean's sample count when it was last filtered; 0: not since it changed
+    bool previewDenoised = false; // previewDenoise holds the filtered preview
     bool regionChanged = false; // set, moved or cleared since the last frame
     // The render passes' motion vectors measure from this camera and these instance transforms.
     std::optional<CameraSetup> motionCamera;
@@ -260,7 +262,12 @@ struct FrameRenderer::State {
         result = nullptr;
         previewShown = false;
         nextRow = 0;
+        forgetFiltered();
+    }
+    // The filtered mean is of an older picture (and a filtering in steps of it is of no use).
+    void forgetFiltered() {
         denoisedSamples = 0;
+        meanDenoise.cancel();
     }
     PathTraceSettings pathTraceSettings() const {
         const ConfigurationTraits traits = traitsOf(settings.configuration);
@@ -332,6 +339,10 @@ struct FrameRenderer::State {
     void renderRealTime();
     FrameImages readPreview();
     bool denoising() const;
+    bool denoiseInSteps() const;
+    bool denoiseDue(int samples) const;
+    bool denoisePending() const;
+    bool meanShown() const;
     const gl::RenderTarget& denoisedMean(bool exact);
     const gl::RenderTarget& shown(bool exact);
     const gl::RenderTarget& shownPreview();
@@ -379,12 +390,15 @@ void FrameRenderer::State::renderAccumulated() {
         t.adaptive.reset(tracedPixels());
         nextRow = 0;
         previewShown = false;
-        denoisedSamples = 0;
+        forgetFiltered();
     }
     pictureChanged = false;
-    const int samplesBefore = t.stillMean.sampleCount();
+    const bool meanShownBefore = t.stillMean.sampleCount() > 0 && !previewShown; // `result` is of the last picture
     const int limit = settings.maxSamples > 0 ? settings.maxSamples : std::numeric_limits<int>::max();
-    if (wantsPreview()) {
+    if (denoisePending()) {
+        lastWork.denoiseRows = meanDenoise.advance(t.stillMean.mean(), t.stillMean.sampleCount(), settings.denoiseRowsPerFrame);
+        if (!meanDenoise.inProgress()) denoisedSamples = t.stillMean.sampleCount();
+    } else if (wantsPreview()) {
         renderPreview();
     } else if (settings.rowsPerFrame > 0) {
         if (t.stillMean.sampleCount() < limit && !adaptiveDone()) traceRows();
@@ -395,9 +409,28 @@ void FrameRenderer::State::renderAccumulated() {
             lastWork.rows += tracedPixels().height;
         }
     }
-    if (t.stillMean.sampleCount() > 0) previewShown = false;
-    if (samplesBefore == 0 && t.stillMean.sampleCount() > 0) ++shownIdsVersion; // the mean keeps its first sample's ids
     result = t.stillMean.sampleCount() > 0 ? &t.stillMean.mean() : nullptr;
+    // A filtering in steps keeps the preview up until the first filtered mean replaces it.
+    if (result && !(denoiseInSteps() && denoisedSamples == 0)) previewShown = false;
+    if (meanShown() && !meanShownBefore) ++shownIdsVersion; // the mean keeps its first sample's ids
+}
+
+// Whether drawTo() shows the still mean (filtered or not), not the preview or nothing.
+bool FrameRenderer::State::meanShown() const { return result && !previewShown; }
+
+bool FrameRenderer::State::denoiseInSteps() const { return denoising() && settings.denoiseRowsPerFrame > 0; }
+
+// The filtered mean is refreshed as the mean grows (every sample up to 8, then at every 25 % more,
+// and at the sample cap or when adaptive sampling has stopped every pixel): a pure function of the
+// mean, so deterministic.
+bool FrameRenderer::State::denoiseDue(int samples) const {
+    const bool atCap = (settings.maxSamples > 0 && samples >= settings.maxSamples) || adaptiveDone();
+    return samples > 0 && samples != denoisedSamples &&
+           (denoisedSamples == 0 || samples <= 8 || 4 * samples >= 5 * denoisedSamples || atCap);
+}
+
+bool FrameRenderer::State::denoisePending() const {
+    return denoiseInSteps() && targets && !pictureChanged && nextRow == 0 && denoiseDue(targets->stillMean.sampleCount());
 }
 
 bool FrameRenderer::State::wantsPreview() const {
@@ -414,6 +447,7 @@ void FrameRenderer::State::renderPreview() {
     pathTrace.render(*gpu, camera, pathTraceSettings(), 0, preview->sample);
     preview->mean.add(preview->sample);
     previewShown = true;
+    previewDenoised = false;
     ++shownIdsVersion;
     lastWork.previewRows = height;
 }
@@ -426,15 +460,13 @@ void FrameRenderer::State::traceRows() {
     const int end = traced.y + traced.height;
     nextRow = std::clamp(nextRow, traced.y, end);
     const int rows = std::min(settings.rowsPerFrame, end - nextRow);
-    GLint scissor[4] = {0, 0, 0, 0};
-    glGetIntegerv(GL_SCISSOR_BOX, scissor);
-    const GLboolean scissored = glIsEnabled(GL_SCISSOR_TEST);
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(traced.x, nextRow, traced.width, rows);
     const bool culled = cullStopped();
-    traceStillSample(pathTraceSettings(), static_cast<std::uint32_t>(t.stillMean.sampleCount()), t.sample, culled);
-    glScissor(scissor[0], scissor[1], scissor[2], scissor[3]);
-    if (!scissored) glDisable(GL_SCISSOR_TEST);
+    {
+        const gl::ScissorGuard guard;
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(traced.x, nextRow, traced.width, rows);
+        traceStillSample(pathTraceSettings(), static_cast<std::uint32_t>(t.stillMean.sampleCount()), t.sample, culled);
+    }
     nextRow += rows;
     lastWork.rows = rows;
     if (nextRow < end) return;
@@ -543,13 +575,12 @@ bool FrameRenderer::State::denoising() const {
 }
 
 // The still mean filtered. Filtering a full-resolution mean costs a few frames' worth of fill on a
-// slow GL, so unless `exact` it is refreshed only as the mean grows (every sample up to 8, then at
-// every 25 % more, and at the sample cap): a pure function of the sample count, so deterministic.
+// slow GL, so unless `exact` it is refreshed only when due (denoiseDue).
 const gl::RenderTarget& FrameRenderer::State::denoisedMean(bool exact) {
     const int n = targets->stillMean.sampleCount();
-    const bool atCap = settings.maxSamples > 0 && n >= settings.maxSamples;
-    const bool due = denoisedSamples == 0 || n <= 8 || 4 * n >= 5 * denoisedSamples || atCap;
-    if (n > 0 && n != denoisedSamples && (exact || due)) {
+    // Filtering in steps, renderFrame() runs it: drawTo() shows what it last finished.
+    const bool filterHere = exact ? n > 0 && n != denoisedSamples : denoiseDue(n) && !denoiseInSteps();
+    if (filterHere) {
         meanDenoise.execute(targets->stillMean.mean(), n);
         denoisedSamples = n;
     }
@@ -564,16 +595,20 @@ const gl::RenderTarget& FrameRenderer::State::shown(bool exact) {
 
 const gl::RenderTarget& FrameRenderer::State::shownPreview() {
     if (!denoising()) return preview->mean.mean();
-    return previewDenoise.execute(preview->mean.mean(), 1);
+    if (!previewDenoised) previewDenoise.execute(preview->mean.mean(), 1); // once per preview, not per paint
+    previewDenoised = true;
+    return previewDenoise.output();
 }
 
 // The G-buffer whose first hits drawTo() shows (its object ids, depth, normals): the preview's, the
 // still mean's (the first sample's ids and depths), or this frame's; null when nothing is shown.
 const gl::RenderTarget* FrameRenderer::State::shownGBuffer() const {
-    if (!result) return previewShown && preview ? &preview->mean.mean() : nullptr;
+    if (!meanShown()) return previewShown && preview ? &preview->mean.mean() : nullptr;
     if (traitsOf(settings.configuration).accumulate) return &targets->stillMean.mean();
     return framesSpp(settings) > 1 ? &targets->frameMean.mean() : &targets->sample;
 }
+
+int denoiseRowsPerFiltering(int height) { return MeanDenoisePass::stageCount() * std::max(1, height); }
 
 FrameRenderer::FrameRenderer() : state_(std::make_unique<State>()) {}
 FrameRenderer::~FrameRenderer() = default;
@@ -732,7 +767,7 @@ void FrameRenderer::renderFrame() {
 
 bool FrameRenderer::drawTo(unsigned int framebuffer, int width, int height) {
     State& s = *state_;
-    const bool preview = !s.result && s.previewShown;
+    const bool preview = s.previewShown;
     if (!s.result && !preview) return false;
     CallerGlState guard;
     const gl::RenderTarget& display = preview ? s.preview->display : s.targets->display;
@@ -765,7 +800,7 @@ void FrameRenderer::drawOutline(unsigned int framebuffer, int width, int height,
 FrameImages FrameRenderer::readImages() {
     State& s = *state_;
     FrameImages out;
-    if (!s.result && s.previewShown) return s.readPreview();
+    if (s.previewShown) return s.readPreview();
     if (!s.result) return out;
     CallerGlState guard;
     FrameTargets& t = *s.targets;
@@ -815,8 +850,8 @@ ImageStage FrameRenderer::imageStage() const {
     const State& s = *state_;
     if (s.pictureChanged) return ImageStage::None;
     if (s.nextRow > 0) return ImageStage::Refining;
-    if (s.result) return ImageStage::Complete;
     if (s.previewShown) return ImageStage::Preview;
+    if (s.result) return ImageStage::Complete;
     return ImageStage::None;
 }
 
@@ -826,7 +861,8 @@ int FrameRenderer::rowsTraced() const {
 }
 
 int FrameRenderer::rowsToTrace() const { return state_->tracedPixels().height; }
-bool FrameRenderer::previewShown() const { return !state_->result && state_->previewShown; }
+bool FrameRenderer::previewShown() const { return state_->previewShown; }
+bool FrameRenderer::denoisePending() const { return state_->denoisePending(); }
 FrameWork FrameRenderer::lastFrameWork() const { return state_->lastWork; }
 int FrameRenderer::frameIndex() const { return state_->frames; }
 const FrameSettings& FrameRenderer::settings() const { return state_->settings; }

@@ -63,6 +63,12 @@ struct FrameSettings {
     // preview too; the mean itself stays raw. Display-only: changing it keeps the mean. (The
     // real-time configurations always fade into the filtered mean.) Not with a region.
     bool denoise = false;
+    // With denoise, Accumulate/Reference: > 0 filters each new mean in steps of this many rows of
+    // the filter's stages (MeanDenoisePass::advance), one step per renderFrame() in place of
+    // tracing, so the mean being filtered holds still and the filtered pixels are those of a whole
+    // filtering; until a step finishes it, drawTo() shows the last filtered mean (the preview, while
+    // none is). 0: drawTo() filters whole. Display-only, like rowsPerFrame.
+    int denoiseRowsPerFrame = 0;
     // Bloom on what drawTo() and readImages() show, before tone mapping (display-only: it keeps
     // every history). The linear radiance readImages() gives (EXR) stays unbloomed unless
     // bloomLinear.
@@ -86,7 +92,12 @@ struct FrameSettings {
 struct FrameWork {
     int rows = 0;
     int previewRows = 0;
+    int denoiseRows = 0; // rows of the still mean's filter stages (FrameSettings::denoiseRowsPerFrame)
 };
+
+// The rows of one whole filtering of a still mean `height` rows high, as FrameWork::denoiseRows
+// counts them (every stage's rows).
+int denoiseRowsPerFiltering(int height);
 
 // Where the shown image stands, for a host that schedules frames (the viewport).
 enum class ImageStage {
@@ -190,7 +201,10 @@ public:
     // Rows of the sample in progress already traced, of rowsToTrace() (banded Accumulate).
     int rowsTraced() const;
     int rowsToTrace() const;
-    bool previewShown() const; // the preview stands in for the picture (no full sample yet)
+    bool previewShown() const; // the preview stands in for the picture (no full sample, or none filtered yet)
+    // A filtering of the mean is due or under way in steps (FrameSettings::denoiseRowsPerFrame):
+    // the next renderFrame() calls run it, and what drawTo() shows changes when they finish it.
+    bool denoisePending() const;
     FrameWork lastFrameWork() const;
     int frameIndex() const;    // frames rendered since the last reset
     void resetHistory();

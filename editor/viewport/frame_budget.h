@@ -10,6 +10,8 @@
 // rows (as many as fit the budget, from the measured cost of a row), and until the first one is
 // whole a low-resolution preview frame stands in, at the smallest divisor whose frame fits. Where a
 // whole full-resolution frame fits, there are neither bands nor a preview.
+// The still view's filter (denoise) of each new mean runs in steps of rows too, from the measured
+// cost of a row of its stages: on a slow GL one filtering costs a few frames.
 #include <algorithm>
 #include <cmath>
 
@@ -30,12 +32,16 @@ public:
             moving_ = moving_ - 1;
     }
 
-    // The still view's preview divisor (1: no preview, a whole full-resolution frame fits).
-    int previewDivisor(int height) const {
+    // The still view's preview divisor (1: no preview, a whole full-resolution frame fits). With
+    // `denoiseRows` > 0 (the rows of a whole filtering of the mean), the frame and its filtering:
+    // where they do not fit one paint, the filtered preview stands in until the first filtered
+    // mean is shown (the raw first sample would flash for a paint or more).
+    int previewDivisor(int height, int denoiseRows = 0) const {
         if (msPerRow_ < 0.0) return kFirstPreviewDivisor;
-        const double wholeFrame = msPerRow_ * double(std::max(1, height));
-        if (wholeFrame <= kStillOverrun * budgetMs_) return 1;
-        return std::clamp(int(std::ceil(std::sqrt(wholeFrame / (kFill * budgetMs_)))), 2, kMaxDivisor);
+        double firstImage = msPerRow_ * double(std::max(1, height));
+        if (denoiseRows > 0 && msPerDenoiseRow_ > 0.0) firstImage += msPerDenoiseRow_ * double(denoiseRows);
+        if (firstImage <= kStillOverrun * budgetMs_) return 1;
+        return std::clamp(int(std::ceil(std::sqrt(firstImage / (kFill * budgetMs_)))), 2, kMaxDivisor);
     }
 
     // Rows of a full-resolution band that fit the budget (at least one, at most the image).
@@ -53,8 +59,27 @@ public:
     void reportRows(double ms, int rows) { noteRowCost(ms / double(std::max(1, rows))); }
     double msPerRow() const { return msPerRow_; } // < 0 until a still frame was measured
 
-    // Whether another frame fits into this paint after `elapsedMs`, given the last frame took `lastMs`.
-    bool anotherFits(double elapsedMs, double lastMs) const { return elapsedMs + lastMs <= budgetMs_; }
+    // Rows of the filter's stages that fit the budget (at least one).
+    int denoiseRowsPerFrame(int height) const {
+        if (msPerDenoiseRow_ < 0.0) return std::max(1, std::max(1, height) / kFirstBands);
+        return std::max(1, int(kFill * budgetMs_ / std::max(msPerDenoiseRow_, 1e-6)));
+    }
+    // Reports a step of the filter over `rows` rows of its stages.
+    void reportDenoiseRows(double ms, int rows) { smooth(msPerDenoiseRow_, ms / double(std::max(1, rows))); }
+    double msPerDenoiseRow() const { return msPerDenoiseRow_; } // < 0 until a step was measured
+
+    // The planned cost of the next still frame of an image `height` rows high: a step of the filter
+    // or a band (a whole frame where it fits); 0 while that cost is unmeasured.
+    double plannedMs(int height, bool denoiseStep) const {
+        if (denoiseStep) return msPerDenoiseRow_ < 0.0 ? 0.0 : msPerDenoiseRow_ * denoiseRowsPerFrame(height);
+        return msPerRow_ < 0.0 ? 0.0 : msPerRow_ * rowsPerFrame(height);
+    }
+    // Whether another frame fits into this paint after `elapsedMs`, given the last frame took
+    // `lastMs` and the next is planned to take `plannedMs` (a short last step of the filter says
+    // little of the band after it).
+    bool anotherFits(double elapsedMs, double lastMs, double plannedMs = 0.0) const {
+        return elapsedMs + std::max(lastMs, plannedMs) <= budgetMs_;
+    }
     double budgetMs() const { return budgetMs_; }
     void setBudgetMs(double ms) { budgetMs_ = ms; }
 
@@ -70,11 +95,13 @@ public:
 private:
     // The cost of one full-resolution row, smoothed over the last few measures (frame times on a
     // shared machine vary by +-20 %).
-    void noteRowCost(double ms) { msPerRow_ = msPerRow_ < 0.0 ? ms : 0.5 * (msPerRow_ + ms); }
+    void noteRowCost(double ms) { smooth(msPerRow_, ms); }
+    static void smooth(double& cost, double ms) { cost = cost < 0.0 ? ms : 0.5 * (cost + ms); }
 
     double budgetMs_;
     int moving_ = kMinMovingDivisor;
     double msPerRow_ = -1.0;
+    double msPerDenoiseRow_ = -1.0;
 };
 
 } // namespace glint::editor

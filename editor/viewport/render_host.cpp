@@ -232,6 +232,7 @@ bool RenderHost::workRemains() const {
 // Whether the renderer has more to do for the current picture.
 bool RenderHost::wantsSamples() const {
     if (renderer_->imageStage() != renderer::ImageStage::Complete) return true; // not current, or not whole
+    if (renderer_->denoisePending()) return true; // the image shown waits for the filter of the mean
     if (lastMoving_) return true; // real-time frames keep refining their history until the view settles
     if (paused_ || renderer_->converged()) return false; // converged: adaptive sampling stopped every pixel
     return sampleCap_ <= 0 || renderer_->sampleCount() < sampleCap_;
@@ -241,6 +242,7 @@ bool RenderHost::wantsSamples() const {
 void RenderHost::paintWhilePreparing(const ViewRequest& request, unsigned int framebuffer) {
     stats_.samples = 0; // none of the document as it is now
     stats_.stage = ViewStage::Preparing;
+    stats_.filtering = false;
     readBack_ = QImage();
     // A scene uploaded but not yet rendered has no image to show: the preview stands in.
     if (showPrevious_ && renderer_->hasScene() && renderer_->drawTo(framebuffer, request.width, request.height)) {
@@ -315,7 +317,8 @@ void RenderHost::configure(const ViewRequest& request) {
     s.width = std::max(1, request.width / divisor);
     s.height = std::max(1, request.height / divisor);
     s.rowsPerFrame = moving ? 0 : budget_.rowsPerFrame(s.height);
-    s.previewDivisor = moving ? 1 : budget_.previewDivisor(s.height);
+    s.previewDivisor = moving ? 1 : budget_.previewDivisor(s.height, s.denoise ? renderer::denoiseRowsPerFiltering(s.height) : 0);
+    s.denoiseRowsPerFrame = moving ? 0 : budget_.denoiseRowsPerFrame(s.height);
     if (!(s == renderer_->settings())) renderer_->setSettings(s);
     if (request.lookThrough.valid() && document_.scene().contains(request.lookThrough))
         renderer_->useSceneCamera(document_.scene().at(request.lookThrough).name);
@@ -331,10 +334,11 @@ void RenderHost::renderSlice(bool moving) {
     stats_.framesThisPaint = 0;
     double last = 0.0;
     do {
-        if (!moving) { // bands follow what the last one taught
+        if (!moving) { // bands and filter steps follow what the last one taught
             renderer::FrameSettings s = renderer_->settings();
             s.rowsPerFrame = budget_.rowsPerFrame(s.height);
-            if (s.rowsPerFrame != renderer_->settings().rowsPerFrame) renderer_->setSettings(s);
+            s.denoiseRowsPerFrame = budget_.denoiseRowsPerFrame(s.height);
+            if (!(s == renderer_->settings())) renderer_->setSettings(s);
         }
         QElapsedTimer frame;
         frame.start();
@@ -344,10 +348,12 @@ void RenderHost::renderSlice(bool moving) {
         const renderer::FrameWork work = renderer_->lastFrameWork();
         const renderer::FrameSettings& s = renderer_->settings();
         if (moving) budget_.reportMoving(last, budget_.movingDivisor()); // the divisor configure() used
+        else if (work.denoiseRows > 0) budget_.reportDenoiseRows(last, work.denoiseRows);
         else if (work.previewRows > 0) budget_.reportPreview(last, work.previewRows, s.previewDivisor);
         else if (work.rows > 0) budget_.reportRows(last, work.rows);
         ++stats_.framesThisPaint;
-    } while (!moving && wantsSamples() && budget_.anotherFits(elapsedMs(paint), last));
+    } while (!moving && wantsSamples() &&
+             budget_.anotherFits(elapsedMs(paint), last, budget_.plannedMs(renderer_->settings().height, renderer_->denoisePending())));
     stats_.frameMs = last;
     stats_.paintMs = elapsedMs(paint);
 }
@@ -356,6 +362,7 @@ void RenderHost::noteStage(const ViewRequest& request) {
     const renderer::ImageStage image = renderer_->imageStage();
     stats_.samples = renderer_->sampleCount();
     stats_.refinePercent = 0;
+    stats_.filtering = renderer_->denoisePending();
     const std::optional<double> converged = lastMoving_ ? std::nullopt : renderer_->convergedShare();
     stats_.convergedPercent = converged ? int(*converged * 100.0) : -1; // floored: 100 only when every pixel stopped
     if (lastMoving_) {
@@ -367,6 +374,8 @@ void RenderHost::noteStage(const ViewRequest& request) {
         stats_.stage = ViewStage::Refining;
         stats_.refinePercent = 100 * renderer_->rowsTraced() / std::max(1, renderer_->rowsToTrace());
         if (renderer_->previewShown()) stats_.divisor = renderer_->settings().previewDivisor;
+    } else if (stats_.filtering) {
+        stats_.stage = ViewStage::Accumulating; // not converged until the filtering at the cap is shown
     } else if (renderer_->converged()) {
         stats_.stage = ViewStage::NoiseConverged;
     } else if (sampleCap_ > 0 && stats_.samples >= sampleCap_) {

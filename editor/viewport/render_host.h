@@ -61,6 +61,7 @@ struct ViewportStats {
     bool moving = false;    // the last paint rendered a moving view (real-time frames)
     int refinePercent = 0;  // of the sample being traced in bands
     int convergedPercent = -1; // of the pixels adaptive sampling has stopped; -1: it is off
+    bool filtering = false; // the shown image waits for the filtering of the latest samples (in steps)
     int framesThisPaint = 0;
     double paintMs = 0.0;   // GL work of the last paint (frames finished on the GPU)
     double frameMs = 0.0;   // the last frame alone

@@ -1,7 +1,7 @@
 // The viewport's time-slicing arithmetic: moving divisors rise on overrun and fall when a finer one
 // fits (never below half resolution); still views trace full-resolution bands sized to the budget
-// from the measured cost of a row, with a preview divisor chosen so its frame fits; paints stop
-// adding frames at the budget.
+// from the measured cost of a row, with a preview divisor chosen so its frame fits; the mean's
+// filter runs in steps from the cost of its rows; paints stop adding frames at the budget.
 #include "editor/viewport/frame_budget.h"
 
 #include <QtTest>
@@ -69,11 +69,41 @@ private slots:
         QCOMPARE(b.rowsPerFrame(720), 24);
     }
 
+    // A whole frame fits (40 ms, 45 with the overrun) but not with the filtering of its mean (7
+    // stages of 180 rows at 0.08 ms: 100 ms): the filtered preview stands in, at ceil(sqrt(140 / 24)).
+    void previewWhereTheFilteringDoesNotFit() {
+        FrameBudget b(30.0);
+        b.reportRows(40.0, 180);
+        QCOMPARE(b.previewDivisor(180), 1);
+        QCOMPARE(b.previewDivisor(180, 7 * 180), 1); // the filtering not measured yet
+        b.reportDenoiseRows(10.0, 126);
+        QCOMPARE(b.previewDivisor(180, 7 * 180), 3);
+        QCOMPARE(b.previewDivisor(180), 1); // not filtered: no preview
+    }
+
     void paintsStopAtTheBudget() {
         const FrameBudget b(30.0);
         QVERIFY(b.anotherFits(10.0, 10.0));
         QVERIFY(b.anotherFits(20.0, 10.0));
         QVERIFY(!b.anotherFits(21.0, 10.0));
+        QVERIFY(!b.anotherFits(10.0, 2.0, 21.0)); // a short last step: the planned band decides
+    }
+
+    // The mean's filter: first steps of 1/16 of the image's rows, then rows of its stages at
+    // 80 % of the budget from the measured cost (0.25 ms a row: 96 rows, 24 ms planned).
+    void denoiseStepsFollowTheirRowCost() {
+        FrameBudget b(30.0);
+        QCOMPARE(b.denoiseRowsPerFrame(720), 720 / FrameBudget::kFirstBands);
+        QCOMPARE(b.plannedMs(720, true), 0.0); // unmeasured
+        b.reportDenoiseRows(12.0, 48);
+        QCOMPARE(b.msPerDenoiseRow(), 0.25);
+        QCOMPARE(b.denoiseRowsPerFrame(720), 96);
+        QCOMPARE(b.plannedMs(720, true), 24.0);
+        QCOMPARE(b.msPerRow(), -1.0); // the path tracer's rows are another cost
+        b.reportRows(10.0, 10);
+        QCOMPARE(b.plannedMs(720, false), 24.0); // bands of 24 rows at 1 ms
+        b.reportDenoiseRows(1000.0, 1); // a stall: at least one row still
+        QCOMPARE(b.denoiseRowsPerFrame(720), 1);
     }
 };
 

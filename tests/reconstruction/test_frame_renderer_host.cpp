@@ -2,7 +2,8 @@
 // caller's framebuffer, viewport, vertex array and enables back, keeps accumulating through exposure,
 // tonemapper and sample-cap changes, says at once when the picture changed (a host that stops at a
 // sample cap must render again), and refines progressively: bands of rows give the pixels of whole
-// frames, and a preview stands in until the first full-resolution sample is whole.
+// frames, a preview stands in until the first full-resolution sample is whole, and the mean's filter
+// run in steps gives the pixels of the filter run whole.
 #include "reconstruction_fixture.h"
 
 #include <epoxy/gl.h>
@@ -194,6 +195,58 @@ private slots:
         QVERIFY(h_->frames.readImages().radiance == h_->reference.readImages().radiance);
     }
 
+    // Tolerance: exact (bit for bit). The still mean's filter run in steps of rows between frames
+    // (the viewport's denoise on a slow GL) gives the pixels of the filter run whole; no sample is
+    // traced while it runs, and drawTo() keeps showing the last finished filtering until the new one
+    // is whole, the sample cap's last one included.
+    void denoiseStepsGiveTheWholeFilteringsPixels() {
+        const RoomScene room = makeRoom();
+        const auto camera = cameraAt(room.scene, 0.0f);
+        renderer::FrameSettings whole = settingsFor(renderer::Configuration::Accumulate);
+        whole.denoise = true;
+        whole.maxSamples = 2;
+        const HostFramebuffer host(imageSize);
+        h_->reference.setSettings(whole);
+        h_->reference.setScene(room.scene);
+        h_->reference.setCamera(camera);
+        std::vector<std::vector<float>> filtered;
+        std::vector<std::vector<unsigned char>> shown;
+        for (int n = 1; n <= 2; ++n) {
+            h_->reference.renderFrame();
+            QVERIFY(!h_->reference.denoisePending()); // filtering whole: drawTo() does it
+            QVERIFY(h_->reference.drawTo(host.framebuffer, imageSize, imageSize));
+            shown.push_back(host.read());
+            filtered.push_back(h_->reference.readImages().radiance);
+        }
+
+        renderer::FrameSettings stepped = whole;
+        stepped.denoiseRowsPerFrame = 50; // 7 stages of 48 rows: 6 steps of 50 rows and one of 36
+        h_->frames.setSettings(stepped);
+        h_->frames.setScene(room.scene);
+        h_->frames.setCamera(camera);
+        for (int n = 1; n <= 2; ++n) {
+            h_->frames.renderFrame();
+            QCOMPARE(h_->frames.sampleCount(), n);
+            for (int step = 0; step < 7; ++step) {
+                QVERIFY(h_->frames.denoisePending());
+                if (n == 2) { // the filtering of one sample stays up meanwhile
+                    QVERIFY(h_->frames.drawTo(host.framebuffer, imageSize, imageSize));
+                    QVERIFY(host.read() == shown[0]);
+                }
+                h_->frames.renderFrame();
+                QCOMPARE(h_->frames.lastFrameWork().denoiseRows, step < 6 ? 50 : 36);
+                QCOMPARE(h_->frames.lastFrameWork().rows, 0);
+                QCOMPARE(h_->frames.sampleCount(), n);
+            }
+            QVERIFY(!h_->frames.denoisePending());
+            QVERIFY(h_->frames.drawTo(host.framebuffer, imageSize, imageSize));
+            QVERIFY(host.read() == shown[std::size_t(n - 1)]);
+            QVERIFY(h_->frames.readImages().radiance == filtered[std::size_t(n - 1)]);
+        }
+        h_->frames.renderFrame(); // at the cap, filtered: nothing left to do
+        QCOMPARE(h_->frames.lastFrameWork().rows + h_->frames.lastFrameWork().denoiseRows, 0);
+    }
+
     // Tolerance: exact bytes. The outline of the selection over the drawn image at twice the
     // image's size: an output pixel takes the selection colour exactly where the object's mask (its
     // first hits' ids, readImages().objectId) differs one output pixel away, and keeps drawTo()'s
@@ -272,6 +325,24 @@ private slots:
         h_->frames.setCamera(cameraAt(room.scene, 0.2f)); // a change: the preview comes first again
         h_->frames.renderFrame();
         QCOMPARE(h_->frames.imageStage(), renderer::ImageStage::Preview);
+
+        // Filtering in steps, the (filtered) preview stays until the first filtered mean replaces it.
+        s.denoise = true;
+        s.denoiseRowsPerFrame = 4 * imageSize;
+        h_->frames.setSettings(s);
+        for (int band = 0; band < 2; ++band) h_->frames.renderFrame();
+        QCOMPARE(h_->frames.sampleCount(), 1);
+        QVERIFY(h_->frames.denoisePending());
+        QCOMPARE(h_->frames.imageStage(), renderer::ImageStage::Preview);
+        QCOMPARE(h_->frames.readImages().width, imageSize / 4);
+        h_->frames.renderFrame();
+        QVERIFY(h_->frames.denoisePending()); // 7 stages: two steps
+        QVERIFY(h_->frames.previewShown());
+        h_->frames.renderFrame();
+        QVERIFY(!h_->frames.denoisePending());
+        QCOMPARE(h_->frames.imageStage(), renderer::ImageStage::Complete);
+        QVERIFY(!h_->frames.previewShown());
+        QCOMPARE(h_->frames.readImages().width, imageSize);
     }
 };
 
