@@ -40,6 +40,12 @@ bool realTime(const ViewRequest& request) { return request.moving && request.mod
 
 double elapsedMs(const QElapsedTimer& clock) { return double(clock.nsecsElapsed()) / 1e6; }
 
+// The still view's bands and filter steps as the budget sizes them now (none while moving).
+void sliceByBudget(renderer::FrameSettings& s, const FrameBudget& budget, bool moving) {
+    s.rowsPerFrame = moving ? 0 : budget.rowsPerFrame(s.height);
+    s.denoiseRowsPerFrame = moving ? 0 : budget.denoiseRowsPerFrame(s.height);
+}
+
 // The diagonal of what the picker knows of, else `otherwise`.
 double sceneSize(const ScenePicker& picker, double otherwise) {
     bvh::Aabb bounds;
@@ -316,9 +322,8 @@ void RenderHost::configure(const ViewRequest& request) {
     stats_.divisor = divisor; // of this paint's frames (the budget may pick another for the next)
     s.width = std::max(1, request.width / divisor);
     s.height = std::max(1, request.height / divisor);
-    s.rowsPerFrame = moving ? 0 : budget_.rowsPerFrame(s.height);
+    sliceByBudget(s, budget_, moving);
     s.previewDivisor = moving ? 1 : budget_.previewDivisor(s.height, s.denoise ? renderer::denoiseRowsPerFiltering(s.height) : 0);
-    s.denoiseRowsPerFrame = moving ? 0 : budget_.denoiseRowsPerFrame(s.height);
     if (!(s == renderer_->settings())) renderer_->setSettings(s);
     if (request.lookThrough.valid() && document_.scene().contains(request.lookThrough))
         renderer_->useSceneCamera(document_.scene().at(request.lookThrough).name);
@@ -336,8 +341,7 @@ void RenderHost::renderSlice(bool moving) {
     do {
         if (!moving) { // bands and filter steps follow what the last one taught
             renderer::FrameSettings s = renderer_->settings();
-            s.rowsPerFrame = budget_.rowsPerFrame(s.height);
-            s.denoiseRowsPerFrame = budget_.denoiseRowsPerFrame(s.height);
+            sliceByBudget(s, budget_, false);
             if (!(s == renderer_->settings())) renderer_->setSettings(s);
         }
         QElapsedTimer frame;

@@ -35,7 +35,7 @@ public:
     const gl::RenderTarget& execute(const gl::RenderTarget& mean, int samples, const MeanDenoiseSettings& settings = {});
     // Runs at most `rows` rows of the filtering of `mean` with `samples` (counted over its stages:
     // rows x (iterations + 2) in all), starting it where none of these is in progress; returns the
-    // rows run. The caller keeps the mean unchanged until finished(): output() changes only then.
+    // rows run. The caller keeps the mean unchanged while inProgress(): output() changes when it ends.
     int advance(const gl::RenderTarget& mean, int samples, int rows, const MeanDenoiseSettings& settings = {});
     bool inProgress() const { return job_.samples > 0; }
     // Stages of one filtering, each over every row: prepare, the a-trous iterations, modulate.
