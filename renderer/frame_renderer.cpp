@@ -496,9 +496,11 @@ void FrameRenderer::State::renderRealTime() {
     // target (a third of the size) would not match a scissor given in full-size pixels.
     glDisable(GL_SCISSOR_TEST);
     const gl::RenderTarget& frame = spp > 1 ? t.frameMean.mean() : t.sample;
-    // The still view fades into the filtered mean, refreshed as it grows and exactly where the fade ends.
-    const gl::RenderTarget& stillMean = denoisedMean(t.stillMean.sampleCount() == convergeFadeSamples);
-    ReconstructionInputs in{frame, stillMean, t.stillMean.sampleCount(), camera, previousCamera,
+    // The still view fades into the filtered mean, refreshed as it grows and exactly where the fade
+    // ends; the first sample gets no weight (converge.frag.glsl), so a moving view skips the filter.
+    const int stillSamples = t.stillMean.sampleCount();
+    const gl::RenderTarget& stillMean = stillSamples > 1 ? denoisedMean(stillSamples == convergeFadeSamples) : t.stillMean.mean();
+    ReconstructionInputs in{frame, stillMean, stillSamples, camera, previousCamera,
                             historyValid, traitsOf(settings.configuration), {}};
     for (const auto& [id, worldFromNode] : instances) {
         const auto previous = previousInstances.find(id);
