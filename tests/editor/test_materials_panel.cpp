@@ -279,6 +279,7 @@ private slots:
         paints = view.stats().paints;
         document.undo();
         QVERIFY(document.scene() == beforeRed);
+        document.setSelection({});
         glm::dvec3 grey;
         settle(grey, paints);
         if (QTest::currentTestFailed()) return;
@@ -337,9 +338,13 @@ private slots:
         paints = view.stats().paints;
         document.undo();
         QVERIFY(document.scene() == beforeTexture);
+        // Undo brings back the selection it was made with: clear it again, or the gizmo's handle
+        // covers the centre where the window is large enough to show the view at full size.
+        document.setSelection({});
         glm::dvec3 untextured;
         settle(untextured, paints);
         if (QTest::currentTestFailed()) return;
+        qInfo("ball centre untextured (%.0f %.0f %.0f)", untextured.x, untextured.y, untextured.z);
         QVERIFY(untextured.z < 1.5 * untextured.x);
         document.redo();
 
