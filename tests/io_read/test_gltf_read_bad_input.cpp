@@ -22,6 +22,16 @@ private slots:
 
     void invalidJson() { GLINT_EXPECT_ERROR(loadGltfFromMemory(bytesOf("{\"asset\": {\"version\": \"2.0\"},"), ".", "bad.gltf"), "invalid-json", "not valid JSON"); }
 
+    void binaryGarbage()
+    {
+        const std::vector<std::uint8_t> png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+        GLINT_EXPECT_ERROR(loadGltfFromMemory(png, ".", "picture.glb"), "not-gltf", "byte 0 (0x89)");
+        const std::vector<std::uint8_t> padded = {' ', '\n', 0x00, '{'};
+        GLINT_EXPECT_ERROR(loadGltfFromMemory(padded, ".", "zeros.gltf"), "not-gltf", "byte 2 (0x00)");
+        // A byte order mark, then JSON: still JSON (its own errors, not this one).
+        const std::vector<std::uint8_t> bom = {0xEF, 0xBB, 0xBF, '[', '1', ']'};
+        GLINT_EXPECT_ERROR(loadGltfFromMemory(bom, ".", "bom.gltf"), "wrong-type", "top level");
+    }
     void topLevelNotAnObject() { GLINT_EXPECT_ERROR(loadGltfFromMemory(bytesOf("[1, 2]"), ".", "bad.gltf"), "wrong-type", "top level"); }
 
     void deepNestingIsRefusedBeforeParsing()

@@ -4,6 +4,7 @@
 #include "scene/io/json/json_parse.h"
 
 #include <algorithm>
+#include <cstdio>
 
 namespace glint {
 
@@ -78,10 +79,32 @@ int jsonNestingDepth(std::string_view text, int limit)
 
 } // namespace
 
+// The offset of the first byte that cannot begin a JSON text (a control byte other than
+// whitespace, or one outside ASCII that is not a UTF-8 byte order mark), or npos.
+std::size_t firstBinaryByte(std::span<const std::uint8_t> bytes)
+{
+    std::size_t at = 0;
+    if (bytes.size() >= 3 && bytes[0] == 0xEF && bytes[1] == 0xBB && bytes[2] == 0xBF) at = 3;
+    for (; at < bytes.size(); ++at) {
+        const std::uint8_t b = bytes[at];
+        if (b == ' ' || b == '\t' || b == '\n' || b == '\r') continue;
+        return b < 0x20 || b >= 0x7F ? at : std::string::npos;
+    }
+    return std::string::npos;
+}
+
 GltfSource splitGltfContainer(std::span<const std::uint8_t> bytes, const std::string& file)
 {
     if (bytes.empty()) throw FileError(file, "empty-file", "the file is empty");
     if (bytes.size() >= 4 && littleEndian32(bytes, 0) == kGlbMagic) return splitGlb(bytes, file);
+    // Content decides the container, not the extension (a GLB named .gltf loads); bytes that are
+    // neither say so, where the JSON parser would report a syntax error at line 1.
+    if (const std::size_t at = firstBinaryByte(bytes); at != std::string::npos) {
+        char hex[8];
+        std::snprintf(hex, sizeof hex, "0x%02X", bytes[at]);
+        throw FileError(file, "not-gltf", std::string("not a glTF file: no binary glTF header ('glTF'), and byte ") + std::to_string(at) +
+                                              " (" + hex + ") cannot begin glTF's JSON");
+    }
     return {{reinterpret_cast<const char*>(bytes.data()), bytes.size()}, std::nullopt, false};
 }
 
