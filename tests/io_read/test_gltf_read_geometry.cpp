@@ -156,6 +156,59 @@ private slots:
         QCOMPARE(firstPrimitive(r).positions.size(), std::size_t(3));
         QCOMPARE(QString::fromStdString(r.scene.unsupported.at(0).code), QStringLiteral("morph-targets-dropped"));
     }
+
+    // Non-zero default weights: the shape glTF viewers show without animation, w0 * t0 + w1 * t1
+    // added to the base positions and normals (Blender writes shape key values there).
+    void morphTargetsApplyTheDefaultWeights()
+    {
+        GltfBuilder b = triangle();
+        b.primitive()["attributes"]["NORMAL"] = b.positions({0, 0, 1, 0, 0, 1, 0, 0, 1});
+        const int lift = b.positions({0, 0, 2, 0, 0, 0, 0, 0, 0});
+        const int shift = b.positions({1, 0, 0, 1, 0, 0, 1, 0, 0});
+        const int tilt = b.positions({0, 1, 0, 0, 0, 0, 0, 0, 0});
+        b.primitive()["targets"] = Json::array({{{"POSITION", lift}, {"NORMAL", tilt}}, {{"POSITION", shift}}});
+        b.doc["meshes"][0]["weights"] = {0.5, 0.25};
+        const LoadResult r = loadJson(b.finish());
+        const Primitive& p = firstPrimitive(r);
+        QCOMPARE(p.positions[0], glm::vec3(0.25f, 0.0f, 1.0f));
+        QCOMPARE(p.positions[1], glm::vec3(1.25f, 0.0f, 0.0f));
+        QCOMPARE(p.positions[2], glm::vec3(0.25f, 1.0f, 0.0f));
+        QCOMPARE(p.normals[0], glm::vec3(0.0f, 0.5f, 1.0f));
+        QCOMPARE(p.normals[1], glm::vec3(0.0f, 0.0f, 1.0f));
+        QCOMPARE(QString::fromStdString(r.scene.unsupported.at(0).message),
+                 QStringLiteral("mesh 0 has morph targets: loaded as its shape at the default weights (0.5, 0.25), static"));
+    }
+
+    void morphWeightsOfANodeAreNamed()
+    {
+        GltfBuilder b = triangle();
+        const int lift = b.positions({0, 0, 1, 0, 0, 1, 0, 0, 1});
+        b.primitive()["targets"] = Json::array({{{"POSITION", lift}}});
+        b.doc["meshes"][0]["weights"] = {1.0};
+        b.doc["nodes"][0]["weights"] = {1.0};
+        QVERIFY(!hasWarning(loadJson(b.finish()).warnings, "morph-weights-ignored")); // the same as the mesh's
+        b.doc["nodes"][0]["weights"] = {0.5};
+        const LoadResult r = loadJson(b.finish());
+        QVERIFY(hasWarning(r.warnings, "morph-weights-ignored"));
+        QCOMPARE(firstPrimitive(r).positions[0], glm::vec3(0.0f, 0.0f, 1.0f)); // the mesh's weight 1
+    }
+
+    void morphWeightBeyondFloatRangeIsRefused()
+    {
+        GltfBuilder b = triangle();
+        b.primitive()["targets"] = Json::array({{{"POSITION", 0}}});
+        b.doc["meshes"][0]["weights"] = {1e39};
+        GLINT_EXPECT_ERROR(loadJson(b.finish()), "non-finite-value", "meshes[0].weights[0]");
+    }
+
+    void morphTargetOfTheWrongLengthIsRefused()
+    {
+        GltfBuilder b = triangle();
+        const int two = b.positions({0, 0, 1, 0, 0, 1});
+        b.primitive()["targets"] = Json::array({{{"POSITION", two}}});
+        b.doc["meshes"][0]["weights"] = {1.0};
+        GLINT_EXPECT_ERROR(loadJson(b.finish()), "attribute-count-mismatch", "POSITION displacement of morph target 0 of primitive 0 of mesh 0");
+    }
 };
 
 QTEST_APPLESS_MAIN(TestGltfReadGeometry)

@@ -9,6 +9,9 @@
 #include "scene/geometry/geometry.h"
 
 #include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
 #include <numeric>
 
 namespace glint {
@@ -79,7 +82,36 @@ void completeShading(GltfReadContext& ctx, Primitive& p, const std::string& wher
     if (p.tangents.empty() && isNormalMapped(ctx, p.material) && !p.uv0.empty()) generateTangents(p);
 }
 
-Primitive readPrimitive(GltfReadContext& ctx, const tinygltf::Primitive& source, const Json& json, const std::string& where)
+// Adds weight x the target's displacement of one attribute (POSITION, NORMAL, or TANGENT's xyz).
+template <class Vec>
+void addDisplacement(const GltfReadContext& ctx, const std::map<std::string, int>& target, const char* name, float weight,
+                     std::vector<Vec>& values, const std::string& where)
+{
+    auto it = target.find(name);
+    if (it == target.end() || values.empty()) return;
+    const std::string what = std::string(name) + " displacement of " + where;
+    const AccessorValues delta = readAccessorFloats(ctx, it->second, 3, what);
+    if (delta.count != values.size())
+        ctx.fail("attribute-count-mismatch", what + " has " + std::to_string(delta.count) + " elements, POSITION has " + std::to_string(values.size()));
+    for (std::size_t i = 0; i < values.size(); ++i)
+        for (int c = 0; c < 3; ++c) values[i][c] += weight * delta.values[3 * i + static_cast<std::size_t>(c)];
+}
+
+// The primitive at the mesh's default morph weights: what a glTF viewer shows without animation.
+void applyMorphWeights(const GltfReadContext& ctx, const tinygltf::Primitive& source, const std::vector<float>& weights, Primitive& p,
+                       const std::string& where)
+{
+    for (std::size_t t = 0; t < source.targets.size() && t < weights.size(); ++t) {
+        if (weights[t] == 0.0f) continue;
+        const std::string target = "morph target " + std::to_string(t) + " of " + where;
+        addDisplacement(ctx, source.targets[t], "POSITION", weights[t], p.positions.edit(), target);
+        if (!p.normals.empty()) addDisplacement(ctx, source.targets[t], "NORMAL", weights[t], p.normals.edit(), target);
+        if (!p.tangents.empty()) addDisplacement(ctx, source.targets[t], "TANGENT", weights[t], p.tangents.edit(), target);
+    }
+}
+
+Primitive readPrimitive(GltfReadContext& ctx, const tinygltf::Primitive& source, const Json& json, const std::vector<float>& morphWeights,
+                        const std::string& where)
 {
     Primitive p;
     p.positions = attribute<glm::vec3>(ctx, source, "POSITION", 3, SIZE_MAX, where);
@@ -87,6 +119,10 @@ Primitive readPrimitive(GltfReadContext& ctx, const tinygltf::Primitive& source,
     const std::size_t n = p.positions.size();
     p.normals = attribute<glm::vec3>(ctx, source, "NORMAL", 3, n, where);
     p.tangents = attribute<glm::vec4>(ctx, source, "TANGENT", 4, n, where);
+    if (!morphWeights.empty()) {
+        applyMorphWeights(ctx, source, morphWeights, p, where);
+        requireFinitePositions(ctx, p.positions, where + " at its default morph weights");
+    }
     p.uv0 = attribute<glm::vec2>(ctx, source, "TEXCOORD_0", 2, n, where);
     p.uv1 = attribute<glm::vec2>(ctx, source, "TEXCOORD_1", 2, n, where);
     p.colors = colors(ctx, source, n, where);
@@ -105,6 +141,33 @@ std::string skipReason(const tinygltf::Primitive& source)
     return {};
 }
 
+// The mesh's `weights` as floats, or empty where every weight is zero (the base shape). Weights
+// past the primitives' targets have nothing to move and are left out.
+std::vector<float> defaultMorphWeights(const GltfReadContext& ctx, const tinygltf::Mesh& source, std::size_t index)
+{
+    std::vector<float> weights;
+    bool any = false;
+    for (std::size_t k = 0; k < source.weights.size(); ++k) {
+        const double w = source.weights[k];
+        if (!(std::abs(w) <= std::numeric_limits<float>::max())) // NaN too; checked before the cast, which would be undefined
+            ctx.fail("non-finite-value", "meshes[" + std::to_string(index) + "].weights[" + std::to_string(k) + "] is not a finite float");
+        weights.push_back(static_cast<float>(w));
+        any = any || w != 0.0;
+    }
+    return any ? weights : std::vector<float>{};
+}
+
+std::string weightList(const std::vector<float>& weights)
+{
+    std::string list;
+    for (float w : weights) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%s%g", list.empty() ? "" : ", ", static_cast<double>(w));
+        list += text;
+    }
+    return list;
+}
+
 Mesh readMesh(GltfReadContext& ctx, std::size_t index)
 {
     const tinygltf::Mesh& source = ctx.model.meshes.at(index);
@@ -113,6 +176,7 @@ Mesh readMesh(GltfReadContext& ctx, std::size_t index)
     mesh.name = source.name;
     mesh.unknown = unknownMembers(json);
     bool hasTargets = false;
+    const std::vector<float> weights = defaultMorphWeights(ctx, source, index);
     for (std::size_t i = 0; i < source.primitives.size(); ++i) {
         const std::string where = "primitive " + std::to_string(i) + " of mesh " + std::to_string(index);
         hasTargets = hasTargets || !source.primitives[i].targets.empty();
@@ -120,9 +184,12 @@ Mesh readMesh(GltfReadContext& ctx, std::size_t index)
             ctx.drop("primitive-skipped", where + " " + reason);
             continue;
         }
-        mesh.primitives.push_back(readPrimitive(ctx, source.primitives[i], json["primitives"][i], where));
+        mesh.primitives.push_back(readPrimitive(ctx, source.primitives[i], json["primitives"][i], weights, where));
     }
-    if (hasTargets) ctx.drop("morph-targets-dropped", "mesh " + std::to_string(index) + " has morph targets: loaded as its static base shape");
+    if (hasTargets) {
+        const std::string shape = weights.empty() ? "its base shape" : "its shape at the default weights (" + weightList(weights) + ")";
+        ctx.drop("morph-targets-dropped", "mesh " + std::to_string(index) + " has morph targets: loaded as " + shape + ", static");
+    }
     return mesh;
 }
 

@@ -6,6 +6,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace glint {
@@ -70,6 +71,18 @@ Transform readTransform(GltfReadContext& ctx, const Json& node, const std::strin
     return t;
 }
 
+// Whether a node's `weights` equal its mesh's (absent or missing entries count as 0).
+bool sameMorphWeights(const Json& nodeWeights, const Json& mesh)
+{
+    const Json none = Json::array();
+    const Json& meshWeights = mesh.is_object() && mesh.contains("weights") ? mesh["weights"] : none;
+    if (!nodeWeights.is_array() || !meshWeights.is_array()) return false;
+    const auto at = [](const Json& list, std::size_t k) { return k < list.size() && list[k].is_number() ? list[k].get<double>() : 0.0; };
+    for (std::size_t k = 0; k < std::max(nodeWeights.size(), meshWeights.size()); ++k)
+        if (at(nodeWeights, k) != at(meshWeights, k)) return false;
+    return true;
+}
+
 struct NodeParts {
     Component primary;                  // mesh or shape, else the camera or light
     std::vector<Component> splitOff;    // a camera and/or light that moves to child nodes
@@ -92,6 +105,11 @@ NodeParts readComponents(GltfReadContext& ctx, const Json& node, const std::stri
         if (index >= 0) parts.emplace_back(readLight(ctx, index));
     }
     if (json.member(node, "skin")) ctx.drop("skin-dropped", where + " is skinned: loaded as static geometry in its bind pose");
+    if (const Json* weights = json.member(node, "weights")) {
+        const int mesh = json.index(node, "mesh", where);
+        if (mesh >= 0 && !sameMorphWeights(*weights, ctx.doc["meshes"][static_cast<std::size_t>(mesh)]))
+            ctx.warn("morph-weights-ignored", where + " sets morph weights of its own: its mesh is loaded at the mesh's default weights");
+    }
     NodeParts out;
     if (parts.empty()) return out;
     out.primary = parts.front();
