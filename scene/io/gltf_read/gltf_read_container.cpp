@@ -77,8 +77,6 @@ int jsonNestingDepth(std::string_view text, int limit)
     return depth;
 }
 
-} // namespace
-
 // The offset of the first byte that cannot begin a JSON text (a control byte other than
 // whitespace, or one outside ASCII that is not a UTF-8 byte order mark), or npos.
 std::size_t firstBinaryByte(std::span<const std::uint8_t> bytes)
@@ -92,6 +90,8 @@ std::size_t firstBinaryByte(std::span<const std::uint8_t> bytes)
     }
     return std::string::npos;
 }
+
+} // namespace
 
 GltfSource splitGltfContainer(std::span<const std::uint8_t> bytes, const std::string& file)
 {
